@@ -1,0 +1,85 @@
+/* catena solve MODEL [--json] [-o DIR] [-q] */
+#include "app.h"
+
+#include <string.h>
+
+typedef struct solve_args {
+    const char *model, *outdir;
+    int json, quiet;
+} solve_args;
+
+static int parse_args(int argc, char **argv, solve_args *a)
+{
+    memset(a, 0, sizeof *a);
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--json")) a->json = 1;
+        else if (!strcmp(argv[i], "-q") || !strcmp(argv[i], "--quiet")) a->quiet = 1;
+        else if (!strcmp(argv[i], "-o") && i + 1 < argc) a->outdir = argv[++i];
+        else if (argv[i][0] == '-' && argv[i][1]) {
+            fprintf(stderr, "catena solve: unknown or incomplete option '%s'\n", argv[i]);
+            return 1;
+        } else if (!a->model) a->model = argv[i];
+        else {
+            fprintf(stderr, "catena solve: more than one model given ('%s')\n", argv[i]);
+            return 1;
+        }
+    }
+    if (!a->model) fprintf(stderr, "usage: catena solve MODEL [--json] [-o DIR] [-q]\n");
+    return a->model ? 0 : 1;
+}
+
+static int emit(ctn_ctx *ctx, const solve_args *a, const ctn_model *m, const ctn_solution *s)
+{
+    int rc = CTN_OK;
+    if (a->outdir) rc = ctn_write_results(ctx, a->outdir, m, s);
+    if (!rc && a->json) {
+        char *json = NULL;
+        rc = ctn_result_json(ctx, m, s, 1, &json);
+        if (!rc) {
+            fputs(json, stdout);
+            fputc('\n', stdout);
+        }
+        ctn_json_free(json);
+    } else if (!rc && !a->quiet) {
+        ctn_print_summary(stdout, m, s);
+    }
+    return rc;
+}
+
+int ctn_cmd_solve(int argc, char **argv)
+{
+    solve_args a;
+    if (parse_args(argc, argv, &a)) return CTN_EXIT_USAGE;
+    ctn_ctx *ctx = NULL;
+    ctn_model *m = NULL;
+    ctn_solution *s = NULL;
+    if (ctn_ctx_create(&ctx)) {
+        fprintf(stderr, "catena: out of memory\n");
+        return CTN_EXIT_IO;
+    }
+    int rc = ctn_model_read_file(ctx, a.model, &m), code = CTN_EXIT_OK;
+    ctn_solve_options opt;
+    ctn_iter_log iters = { stdout, { 0, 0 } };
+    if (!rc) {
+        ctn_model_solve_options(m, &opt);
+        if (!a.json && !a.quiet) {
+            opt.monitor = ctn_print_iteration;
+            opt.monitor_data = &iters;
+            printf("%s: %zu nodes, %zu elements\n", a.model, ctn_model_node_count(m), ctn_model_element_count(m));
+            printf("Newton-Raphson   it  |f_ext - f_int|   |dd|        order\n");
+        }
+        rc = ctn_solve(ctx, m, &opt, &s);
+    }
+    if (!rc) rc = emit(ctx, &a, m, s);
+    if (rc) code = ctn_app_fail(ctx, rc);
+    else {
+        ctn_solve_summary sum;
+        ctn_solution_summary(s, &sum);
+        code = sum.reason == CTN_CONVERGED ? CTN_EXIT_OK : CTN_EXIT_NOCONV;
+        if (code) fprintf(stderr, "catena: %s: not converged: %s\n", a.model, ctn_reason_name(sum.reason));
+    }
+    ctn_solution_destroy(&s);
+    ctn_model_destroy(&m);
+    ctn_ctx_destroy(&ctx);
+    return code;
+}

@@ -1,0 +1,40 @@
+/* catena: command-line entry, dispatch to sub-commands. */
+#include "app.h"
+
+#include <string.h>
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+            "usage: catena COMMAND [options]\n"
+            "\n"
+            "commands:\n"
+            "  solve MODEL [--json] [-o DIR] [-q]   solve a .cable model (docs/format.md)\n"
+            "  help                                  this text\n"
+            "\n"
+            "exit codes: 0 converged, 1 usage, 2 bad model, 3 not converged, 4 I/O error\n");
+}
+
+int ctn_app_fail(ctn_ctx *ctx, int status)
+{
+    const char *msg = ctn_ctx_message(ctx);
+    fprintf(stderr, "catena: %s\n", *msg ? msg : ctn_strerror(status));
+    if (status == CTN_ERR_MODEL) return CTN_EXIT_MODEL;
+    return CTN_EXIT_IO;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) {
+        usage(stderr);
+        return CTN_EXIT_USAGE;
+    }
+    if (!strcmp(argv[1], "solve")) return ctn_cmd_solve(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
+        usage(stdout);
+        return CTN_EXIT_OK;
+    }
+    fprintf(stderr, "catena: unknown command '%s'\n", argv[1]);
+    usage(stderr);
+    return CTN_EXIT_USAGE;
+}

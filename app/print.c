@@ -1,0 +1,92 @@
+/* Human-readable output of the solve command. */
+#include "app.h"
+
+#include <math.h>
+
+void ctn_print_iteration(void *data, int it, double rnorm, double dnorm)
+{
+    ctn_iter_log *lg = data;
+    fprintf(lg->out, "               %3d  %-16.6e  %-10.3e", it, rnorm, dnorm);
+    if (lg->r[0] > 0 && lg->r[1] > 0 && rnorm > 0 && lg->r[0] != lg->r[1])
+        fprintf(lg->out, "  %.2f", log(rnorm / lg->r[0]) / log(lg->r[0] / lg->r[1]));
+    fputc('\n', lg->out);
+    lg->r[1] = lg->r[0];
+    lg->r[0] = rnorm;
+}
+
+/* Largest and smallest element force; indices in *imax, *imin. */
+static void force_range(const ctn_model *m, const ctn_solution *s, size_t *imax, size_t *imin)
+{
+    ctn_element_state st, best, worst;
+    *imax = *imin = 0;
+    ctn_solution_element(s, 0, &best);
+    worst = best;
+    for (size_t e = 1; e < ctn_model_element_count(m); e++) {
+        ctn_solution_element(s, e, &st);
+        if (st.force > best.force) { best = st; *imax = e; }
+        if (st.force < worst.force) { worst = st; *imin = e; }
+    }
+}
+
+static void print_element_line(FILE *out, const char *label, const ctn_model *m,
+                               const ctn_solution *s, size_t e)
+{
+    ctn_element_info info;
+    ctn_element_state st;
+    ctn_model_element(m, e, &info);
+    ctn_solution_element(s, e, &st);
+    double mpa = ctn_model_mpa_factor(m);
+    fprintf(out, "%s tension %12.6g %-3s stress %12.6g %s (element %d)\n", label, st.force,
+            ctn_model_force_unit(m), mpa > 0 ? st.stress * mpa : st.stress,
+            mpa > 0 ? "MPa" : "(model units)", info.id);
+}
+
+static void print_cables(FILE *out, const ctn_model *m, const ctn_solution *s)
+{
+    for (size_t i = 0; i < ctn_model_cable_count(m); i++) {
+        ctn_cable_info c;
+        ctn_node_info a, b;
+        double sag;
+        ctn_model_cable(m, i, &c);
+        ctn_model_node(m, (size_t)c.node[0], &a);
+        ctn_model_node(m, (size_t)c.node[1], &b);
+        fprintf(out, "cable %d-%d: %zu elements, unstressed length %.10g %s", a.id, b.id,
+                c.count, c.length, ctn_model_length_unit(m));
+        if (!ctn_solution_cable_sag(m, s, i, &sag))
+            fprintf(out, ", mid-span sag %.10g %s", sag, ctn_model_length_unit(m));
+        fputc('\n', out);
+    }
+}
+
+static void print_reactions(FILE *out, const ctn_model *m, const ctn_solution *s)
+{
+    const double *r = ctn_solution_reactions(s);
+    double sum[3] = { 0, 0, 0 };
+    fprintf(out, "reactions [%s]      node            fx            fy            fz\n", ctn_model_force_unit(m));
+    for (size_t i = 0; i < ctn_model_node_count(m); i++) {
+        ctn_node_info n;
+        ctn_model_node(m, i, &n);
+        if (!n.fix) continue;
+        fprintf(out, "                %8d  %12.6g  %12.6g  %12.6g\n", n.id, r[3 * i], r[3 * i + 1], r[3 * i + 2]);
+        for (int k = 0; k < 3; k++) sum[k] += r[3 * i + k];
+    }
+    fprintf(out, "                     sum  %12.6g  %12.6g  %12.6g\n", sum[0], sum[1], sum[2]);
+}
+
+void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s)
+{
+    ctn_solve_summary sum;
+    ctn_solution_summary(s, &sum);
+    fprintf(out, "%s after %d iterations: |r| = %.3e (|f_ext| = %.6g), %zu free DOFs, ordering %s\n",
+            ctn_reason_name(sum.reason), sum.iterations, sum.residual, sum.fext_norm, sum.ndof,
+            sum.ordering == CTN_ORDER_NATURAL ? "natural" : "AMD");
+    if (sum.reason == CTN_DIVERGED_INDEFINITE)
+        fprintf(out, "the tangent has a non-positive pivot at node %d, direction %c: a compressed "
+                     "or unrestrained degree of freedom\n", sum.fail_node, "xyz"[sum.fail_dir]);
+    size_t imax, imin;
+    force_range(m, s, &imax, &imin);
+    print_element_line(out, "max", m, s, imax);
+    print_element_line(out, "min", m, s, imin);
+    print_cables(out, m, s);
+    print_reactions(out, m, s);
+}

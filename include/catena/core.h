@@ -1,0 +1,57 @@
+/*
+ * catena/core.h - context, status codes and error reporting.
+ *
+ * Every catena function that can fail returns an int status (CTN_OK == 0) and hands
+ * results back through out-parameters. Details of the last error (code, message and,
+ * for model input, the file and line) are recorded in a ctn_ctx and read back with
+ * ctn_ctx_message() / ctn_ctx_code(). The library never prints and never exits.
+ */
+#ifndef CATENA_CORE_H
+#define CATENA_CORE_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Result codes (function return values). */
+typedef enum ctn_status {
+    CTN_OK = 0,          /* success */
+    CTN_ERR_NOMEM = 1,   /* an allocation failed */
+    CTN_ERR_INVALID = 2, /* invalid argument passed to the API */
+    CTN_ERR_MODEL = 3,   /* the model (file or API calls) is invalid */
+    CTN_ERR_IO = 4,      /* a file could not be read or written */
+    CTN_ERR_LINALG = 5,  /* the sparse linear algebra backend failed */
+    CTN_ERR_NOCONV = 6,  /* a root finder of the analytic module did not converge */
+    CTN_ERR_DOMAIN = 7   /* no solution exists for these inputs (e.g. cable shorter than chord) */
+} ctn_status;
+
+/* Name of a status code, e.g. "out of memory". Never NULL. */
+const char *ctn_strerror(int status);
+
+/* Opaque error and allocation context. One per thread of use. */
+typedef struct ctn_ctx ctn_ctx;
+
+/* Create a context; *out is NULL on failure (CTN_ERR_NOMEM). */
+int ctn_ctx_create(ctn_ctx **out);
+/* Destroy a context; NULL or *ctx == NULL is a harmless no-op; sets *ctx to NULL. */
+void ctn_ctx_destroy(ctn_ctx **ctx);
+/* Code of the last recorded error (CTN_OK if none). */
+int ctn_ctx_code(const ctn_ctx *ctx);
+/* Message of the last recorded error, "" if none. For model input errors it starts
+ * with "file:line: ". Owned by the context; valid until the next catena call on it. */
+const char *ctn_ctx_message(const ctn_ctx *ctx);
+/* Forget the last error. */
+void ctn_ctx_clear(ctn_ctx *ctx);
+
+/* Testing hook: make the n-th allocation from now on (1-based) fail, 0 disables.
+ * Lets tests check that every allocation failure gives CTN_ERR_NOMEM and no leak. */
+void ctn_ctx_fail_alloc_at(ctn_ctx *ctx, long n);
+/* Number of allocations made through this context so far. */
+long ctn_ctx_alloc_count(const ctn_ctx *ctx);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,47 @@
+/*
+ * catena/io.h - reading .cable model files and writing results.
+ *
+ * The .cable format is documented in docs/format.md. Errors carry "file:line: what
+ * was expected, what was found" in the context's message and CTN_ERR_MODEL (bad
+ * content) or CTN_ERR_IO (unreadable file). Number I/O is locale-independent.
+ * Every writer is atomic: it writes a temporary file beside the target and renames
+ * it, so no half-written file is left after a failure.
+ */
+#ifndef CATENA_IO_H
+#define CATENA_IO_H
+
+#include <stddef.h>
+
+#include "catena/core.h"
+#include "catena/model.h"
+#include "catena/solve.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Read a model file. On success *out owns a new model (ctn_model_destroy). */
+int ctn_model_read_file(ctn_ctx *ctx, const char *path, ctn_model **out);
+/* Parse a model from memory (len bytes, need not be NUL-terminated); name is used in
+ * messages in place of a file name. */
+int ctn_model_read_string(ctn_ctx *ctx, const char *name, const char *text, size_t len,
+                          ctn_model **out);
+
+/* The result as JSON text (see docs/format.md, "Results"). *json is allocated; free it
+ * with ctn_json_free. pretty: indent for people. */
+int ctn_result_json(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s, int pretty,
+                    char **json);
+void ctn_json_free(char *json);
+
+/* Write result.json, nodes.csv and elements.csv into directory dir (created if
+ * missing), each atomically. */
+int ctn_write_results(ctn_ctx *ctx, const char *dir, const ctn_model *m,
+                      const ctn_solution *s);
+
+/* Write len bytes atomically to path (temporary file + rename). */
+int ctn_write_file_atomic(ctn_ctx *ctx, const char *path, const char *data, size_t len);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

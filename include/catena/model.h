@@ -1,0 +1,144 @@
+/*
+ * catena/model.h - building a cable model.
+ *
+ * A model holds nodes (3 translational DOFs each), materials, sections, two-node cable
+ * elements and loads. Build it with the ctn_model_add_* calls (or read a .cable file,
+ * catena/io.h). Names (materials, sections) are case-sensitive; ids are positive ints.
+ * Every call returns a status; on failure the context holds the message and the model
+ * is left as it was before the call.
+ */
+#ifndef CATENA_MODEL_H
+#define CATENA_MODEL_H
+
+#include "catena/core.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct ctn_model ctn_model;
+
+/* Fixed-DOF flags of a node (bitwise or). */
+enum { CTN_FIX_X = 1, CTN_FIX_Y = 2, CTN_FIX_Z = 4, CTN_FIX_ALL = 7 };
+
+/* Strain measure of a material (shared/THEORY.md). */
+typedef enum ctn_strain {
+    CTN_STRAIN_GREEN_LAGRANGE = 0, /* eps = (lambda^2 - 1)/2, N = E A eps lambda (paper) */
+    CTN_STRAIN_ENGINEERING = 1     /* eps = lambda - 1, N = E A eps (Irvine) */
+} ctn_strain;
+
+/* How the `cable` generator places its interior nodes. */
+typedef enum ctn_cable_shape {
+    CTN_SHAPE_ARC = 0,     /* circular arc of the cable's length, sagging along gravity */
+    CTN_SHAPE_STRAIGHT = 1 /* on the chord between the end nodes */
+} ctn_cable_shape;
+
+/* Parameters of a generated cable (ctn_model_add_cable). */
+typedef struct ctn_cable_spec {
+    int n;               /* number of elements, >= 1 */
+    double length;       /* unstressed length S of the whole cable [length]; each element
+                            gets l0 = S/n */
+    ctn_cable_shape shape;
+    double guess_strain; /* arc shape: the Newton start is the concentric arc of larger
+                            radius on which interior elements have this strain (default
+                            1e-3, see docs/format.md); must be > 0 */
+} ctn_cable_spec;
+
+/* Create an empty model bound to ctx (errors are recorded there; ctx must outlive it). */
+int ctn_model_create(ctn_ctx *ctx, ctn_model **out);
+/* Destroy; NULL or *m == NULL is a harmless no-op; sets *m to NULL. */
+void ctn_model_destroy(ctn_model **m);
+
+/* Units (labels, and the stress conversion to MPa): force "N" | "kN" | "MN",
+ * length "mm" | "m". Without a call the model is unit-less. */
+int ctn_model_set_units(ctn_model *m, const char *force, const char *length);
+/* Gravity vector: direction and scale of self-weight (the section's w times this
+ * vector, per unit unstressed length). Default: none (zero); then every section must
+ * have w == 0. */
+int ctn_model_set_gravity(ctn_model *m, const double g[3]);
+
+int ctn_model_add_material(ctn_model *m, const char *name, double E, ctn_strain strain,
+                           int tension_only);
+/* A section: area A > 0 and weight per unit unstressed length w >= 0. */
+int ctn_model_add_section(ctn_model *m, const char *name, const char *material, double A,
+                          double w);
+/* A node with id > 0 at reference coordinates X, fixed DOFs `fix` (CTN_FIX_*). */
+int ctn_model_add_node(ctn_model *m, int id, const double X[3], unsigned fix);
+/* A two-node element between existing nodes n1 != n2 (user ids). l0 > 0 is the
+ * unstressed length; CTN_L0_DEFAULT takes the reference distance between the nodes. */
+#define CTN_L0_DEFAULT (-1.0)
+int ctn_model_add_element(ctn_model *m, int id, int n1, int n2, const char *section,
+                          double l0);
+/* Generate a cable of spec->n elements from node a to node b (see ctn_cable_spec):
+ * interior nodes and elements are numbered after the largest existing ids, in order
+ * from a to b. On success *first_elem / *last_elem (may be NULL) get the element ids.
+ * All checks come before anything is added; should a generated element still be
+ * rejected (coincident nodes from extreme geometry), the model keeps the part already
+ * made and should be discarded. */
+int ctn_model_add_cable(ctn_model *m, int a, int b, const char *section,
+                        const ctn_cable_spec *spec, int *first_elem, int *last_elem);
+/* Concentrated force F at a node (summed with earlier loads on that node). */
+int ctn_model_add_load(ctn_model *m, int node, const double F[3]);
+/* Uniform load q [force/length] per unit horizontal projection (the plane normal to
+ * gravity) on elements with ids first..last, along gravity's direction. The projection
+ * is taken in the reference geometry (a dead load, as from a deck hung at fixed
+ * stations); half of each element's share goes to each of its nodes. */
+int ctn_model_add_hload(ctn_model *m, double q, int first, int last);
+/* Reference "file:line" recorded with the next definitions, used in later validation
+ * messages (the reader sets it; API users may ignore it). file is copied. */
+int ctn_model_set_origin(ctn_model *m, const char *file, int line);
+
+/* ---- queries ---- */
+typedef struct ctn_node_info {
+    int id;          /* user id */
+    double X[3];     /* reference coordinates [length] */
+    double guess[3]; /* displacement the Newton iteration starts from [length] */
+    unsigned fix;    /* CTN_FIX_* flags */
+} ctn_node_info;
+
+typedef struct ctn_element_info {
+    int id;          /* user id */
+    int node[2];     /* node indices (0-based, into ctn_model_node) */
+    double l0;       /* unstressed length [length] */
+    double A;        /* area [length^2] */
+    double E;        /* modulus [force/length^2] */
+    double w;        /* weight per unit unstressed length [force/length] */
+    ctn_strain strain;
+    int tension_only;
+} ctn_element_info;
+
+/* A cable made by the generator: its end nodes and its element index range. */
+typedef struct ctn_cable_info {
+    int node[2];     /* end node indices */
+    size_t first;    /* index of its first element */
+    size_t count;    /* number of elements, consecutive from first, ordered end 0 -> 1 */
+    double length;   /* unstressed length */
+} ctn_cable_info;
+
+size_t ctn_model_node_count(const ctn_model *m);
+size_t ctn_model_element_count(const ctn_model *m);
+size_t ctn_model_cable_count(const ctn_model *m);
+/* Index-based access; CTN_ERR_INVALID if i is out of range. */
+int ctn_model_node(const ctn_model *m, size_t i, ctn_node_info *out);
+int ctn_model_element(const ctn_model *m, size_t i, ctn_element_info *out);
+int ctn_model_cable(const ctn_model *m, size_t i, ctn_cable_info *out);
+/* Node index of a user id; CTN_ERR_INVALID if there is none. */
+int ctn_model_node_index(const ctn_model *m, int id, size_t *index);
+/* Gravity vector (zero if none). */
+void ctn_model_gravity(const ctn_model *m, double g[3]);
+/* Unit labels ("" when unit-less) and the factor that turns a stress in model units
+ * (force/length^2) into MPa (0 when unit-less). */
+const char *ctn_model_force_unit(const ctn_model *m);
+const char *ctn_model_length_unit(const ctn_model *m);
+double ctn_model_mpa_factor(const ctn_model *m);
+/* External nodal force vector, 3 per node (concentrated + self-weight + horizontal
+ * loads, lumped), written to f (length 3 * node count). */
+int ctn_model_external_forces(const ctn_model *m, double *f);
+/* Check the whole model (called by the solver): sections with weight need gravity,
+ * at least one support, ... */
+int ctn_model_validate(const ctn_model *m);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Install the Debian packages catena needs, only those that are missing.
+set -eu
+pkgs="gcc make cmake pkg-config libsuitesparse-dev libcjson-dev gnuplot-nox"
+missing=""
+for p in $pkgs; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+done
+[ -z "$missing" ] && exit 0
+echo "deps: installing$missing" >&2
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO="sudo"
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq $missing >/dev/null

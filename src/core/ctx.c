@@ -1,0 +1,105 @@
+/* Context: error recording and checked, fault-injectable allocation. */
+#include "core/ctx.h"
+
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+int ctn_ctx_create(ctn_ctx **out)
+{
+    if (!out) return CTN_ERR_INVALID;
+    *out = calloc(1, sizeof(ctn_ctx));
+    return *out ? CTN_OK : CTN_ERR_NOMEM;
+}
+
+void ctn_ctx_destroy(ctn_ctx **ctx)
+{
+    if (!ctx) return;
+    free(*ctx);
+    *ctx = NULL;
+}
+
+int ctn_ctx_code(const ctn_ctx *ctx) { return ctx ? ctx->code : CTN_ERR_INVALID; }
+
+const char *ctn_ctx_message(const ctn_ctx *ctx) { return ctx ? ctx->msg : ""; }
+
+void ctn_ctx_clear(ctn_ctx *ctx)
+{
+    if (!ctx) return;
+    ctx->code = CTN_OK;
+    ctx->msg[0] = '\0';
+}
+
+void ctn_ctx_fail_alloc_at(ctn_ctx *ctx, long n)
+{
+    if (ctx) ctx->alloc_fail_at = n > 0 ? ctx->alloc_count + n : 0;
+}
+
+long ctn_ctx_alloc_count(const ctn_ctx *ctx) { return ctx ? ctx->alloc_count : 0; }
+
+int ctn_error(ctn_ctx *ctx, int code, const char *fmt, ...)
+{
+    if (!ctx) return code;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(ctx->msg, sizeof ctx->msg, fmt, ap);
+    va_end(ap);
+    ctx->code = code;
+    return code;
+}
+
+int ctn_error_at(ctn_ctx *ctx, int code, const char *file, int line, const char *fmt, ...)
+{
+    if (!ctx) return code;
+    int k = snprintf(ctx->msg, sizeof ctx->msg, "%s:%d: ", file ? file : "<input>", line);
+    if (k < 0 || (size_t)k >= sizeof ctx->msg) k = 0;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(ctx->msg + k, sizeof ctx->msg - (size_t)k, fmt, ap);
+    va_end(ap);
+    ctx->code = code;
+    return code;
+}
+
+/* Count the allocation; 1 if it must fail (injected or overflow). */
+static int alloc_refused(ctn_ctx *ctx, size_t n, size_t size)
+{
+    if (size && n > SIZE_MAX / size) {
+        ctn_error(ctx, CTN_ERR_NOMEM, "allocation of %zu x %zu bytes overflows", n, size);
+        return 1;
+    }
+    if (!ctx) return 0;
+    ctx->alloc_count++;
+    if (ctx->alloc_fail_at && ctx->alloc_count == ctx->alloc_fail_at) {
+        ctn_error(ctx, CTN_ERR_NOMEM, "out of memory (injected failure)");
+        return 1;
+    }
+    return 0;
+}
+
+void *ctn_malloc(ctn_ctx *ctx, size_t n, size_t size)
+{
+    if (alloc_refused(ctx, n, size)) return NULL;
+    void *p = malloc(n * size > 0 ? n * size : 1);
+    if (!p) ctn_error(ctx, CTN_ERR_NOMEM, "out of memory (%zu bytes)", n * size);
+    return p;
+}
+
+void *ctn_calloc(ctn_ctx *ctx, size_t n, size_t size)
+{
+    if (alloc_refused(ctx, n, size)) return NULL;
+    void *p = calloc(n ? n : 1, size ? size : 1);
+    if (!p) ctn_error(ctx, CTN_ERR_NOMEM, "out of memory (%zu bytes)", n * size);
+    return p;
+}
+
+void *ctn_realloc(ctn_ctx *ctx, void *p, size_t n, size_t size)
+{
+    if (alloc_refused(ctx, n, size)) return NULL;
+    void *q = realloc(p, n * size > 0 ? n * size : 1);
+    if (!q) ctn_error(ctx, CTN_ERR_NOMEM, "out of memory (%zu bytes)", n * size);
+    return q;
+}
+
+void ctn_free(void *p) { free(p); }

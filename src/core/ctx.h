@@ -1,0 +1,33 @@
+/* Internal: the context structure, error recording and checked allocation. */
+#ifndef CTN_CORE_CTX_H
+#define CTN_CORE_CTX_H
+
+#include "catena/core.h"
+
+#include <stdarg.h>
+
+#define CTN_MSG_MAX 1024
+
+struct ctn_ctx {
+    int code;                /* last error code, CTN_OK if none */
+    char msg[CTN_MSG_MAX];   /* last error message */
+    long alloc_count;        /* allocations made through ctn_malloc/ctn_calloc */
+    long alloc_fail_at;      /* fail the allocation with this count, 0 = never */
+};
+
+/* Record an error and return its code. printf-style message. */
+int ctn_error(ctn_ctx *ctx, int code, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+/* Record an error located in an input file: message "file:line: ...". */
+int ctn_error_at(ctn_ctx *ctx, int code, const char *file, int line, const char *fmt, ...)
+    __attribute__((format(printf, 5, 6)));
+
+/* Checked allocation (counted, fault-injectable). NULL on failure, error recorded.
+ * n * size overflow is detected. ctn_free(NULL) is a no-op. */
+void *ctn_malloc(ctn_ctx *ctx, size_t n, size_t size);
+void *ctn_calloc(ctn_ctx *ctx, size_t n, size_t size);
+/* Grow or shrink p to n * size bytes; on failure p is untouched and NULL returned. */
+void *ctn_realloc(ctn_ctx *ctx, void *p, size_t n, size_t size);
+void ctn_free(void *p);
+
+#endif

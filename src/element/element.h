@@ -1,0 +1,44 @@
+/* Internal: element kernels. Pure functions (no allocation, no I/O) behind one small
+ * ops table, so the assembly loop is written once for every element type. */
+#ifndef CTN_ELEMENT_ELEMENT_H
+#define CTN_ELEMENT_ELEMENT_H
+
+#include "catena/model.h"
+
+/* Properties of a two-node cable (truss) element. */
+typedef struct ctn_cable_props {
+    double EA;          /* axial rigidity [force] */
+    double l0;          /* unstressed length [length] */
+    ctn_strain strain;  /* strain measure */
+    int tension_only;   /* 1: N = max(N, 0) */
+} ctn_cable_props;
+
+/* What an evaluation reports besides forces and stiffness. */
+typedef struct ctn_elem_state {
+    double l;           /* current length */
+    double strain;      /* strain of the element's measure */
+    double N;           /* axial tension (true force) */
+    int slack;          /* tension-only element with no force */
+} ctn_elem_state;
+
+/* eval(props, X, u, f, K, st): X = reference coordinates of the nodes (3 per node),
+ * u = their displacements (the current chord is formed as (X2 - X1) + (u2 - u1), which
+ * keeps round-off at the scale of the element, not of the coordinates);
+ * f = internal nodal forces (3 per node); K = tangent stiffness, row-major
+ * (3 nnodes)^2, or NULL to skip it; st = element state (may be NULL).
+ * Returns 0, or CTN_ERR_DOMAIN if the element has collapsed to zero length. */
+typedef int (*ctn_elem_eval_fn)(const void *props, const double *X, const double *u,
+                                double *f, double *K, ctn_elem_state *st);
+
+typedef struct ctn_element_ops {
+    const char *name;
+    int nnodes;
+    ctn_elem_eval_fn eval;
+} ctn_element_ops;
+
+/* The two-node total-Lagrangian cable element of shared/THEORY.md. */
+extern const ctn_element_ops ctn_cable2_ops;
+int ctn_cable2_eval(const void *props, const double *X, const double *u, double *f,
+                    double *K, ctn_elem_state *st);
+
+#endif

@@ -1,0 +1,206 @@
+/* The directives of the .cable format (docs/format.md), one handler each. */
+#include "io/parse.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int d_units(ctn_line *l)
+{
+    int rc = ctn_parse_positional(l, 2, "units FORCE LENGTH");
+    if (!rc) rc = ctn_parse_leftovers(l, 3, "units");
+    return rc ? rc : ctn_model_set_units(l->m, l->tok[1], l->tok[2]);
+}
+
+static int d_gravity(ctn_line *l)
+{
+    double g[3];
+    int rc = ctn_parse_positional(l, 3, "gravity GX GY GZ");
+    for (int k = 0; k < 3 && !rc; k++) rc = ctn_parse_num(l, "a gravity component", l->tok[1 + k], &g[k]);
+    if (!rc) rc = ctn_parse_leftovers(l, 4, "gravity");
+    return rc ? rc : ctn_model_set_gravity(l->m, g);
+}
+
+static int d_material(ctn_line *l)
+{
+    double E = 0;
+    ctn_strain strain = CTN_STRAIN_GREEN_LAGRANGE;
+    int rc = ctn_parse_positional(l, 1, "material NAME E=VALUE [strain=green-lagrange|engineering] [tension-only]");
+    if (!rc) rc = ctn_parse_key_num(l, 2, "E", 1, &E);
+    const char *s = rc ? NULL : ctn_parse_key(l, 2, "strain");
+    if (s && !strcmp(s, "engineering")) strain = CTN_STRAIN_ENGINEERING;
+    else if (s && strcmp(s, "green-lagrange"))
+        return ctn_parse_error(l, "unknown strain measure '%.40s' (expected green-lagrange or engineering)", s);
+    int tension_only = rc ? 0 : ctn_parse_flag(l, 2, "tension-only");
+    if (!rc) rc = ctn_parse_leftovers(l, 2, "material");
+    return rc ? rc : ctn_model_add_material(l->m, l->tok[1], E, strain, tension_only);
+}
+
+static int d_section(ctn_line *l)
+{
+    double A = 0, w = 0;
+    int rc = ctn_parse_positional(l, 1, "section NAME material=MATERIAL A=AREA [w=WEIGHT]");
+    const char *mat = rc ? NULL : ctn_parse_key(l, 2, "material");
+    if (!rc && !mat) return ctn_parse_error(l, "section: missing required key 'material='");
+    if (!rc) rc = ctn_parse_key_num(l, 2, "A", 1, &A);
+    if (!rc) rc = ctn_parse_key_num(l, 2, "w", 0, &w);
+    if (!rc) rc = ctn_parse_leftovers(l, 2, "section");
+    return rc ? rc : ctn_model_add_section(l->m, l->tok[1], mat, A, w);
+}
+
+static int parse_fix(ctn_line *l, unsigned *fix)
+{
+    const char *f = ctn_parse_key(l, 5, "fix");
+    *fix = 0;
+    for (const char *p = f; p && *p; p++) {
+        unsigned bit = *p == 'x' ? CTN_FIX_X : *p == 'y' ? CTN_FIX_Y : *p == 'z' ? CTN_FIX_Z : 0;
+        if (!bit || (*fix & bit)) return ctn_parse_error(l, "fix= takes the letters x, y, z, each once (found '%.40s')", f);
+        *fix |= bit;
+    }
+    return CTN_OK;
+}
+
+static int d_node(ctn_line *l)
+{
+    int id = 0;
+    double X[3];
+    unsigned fix = 0;
+    int rc = ctn_parse_positional(l, 4, "node ID X Y Z [fix=xyz]");
+    if (!rc) rc = ctn_parse_int(l, "the node id", l->tok[1], &id);
+    for (int k = 0; k < 3 && !rc; k++) rc = ctn_parse_num(l, "a coordinate", l->tok[2 + k], &X[k]);
+    if (!rc) rc = parse_fix(l, &fix);
+    if (!rc) rc = ctn_parse_leftovers(l, 5, "node");
+    return rc ? rc : ctn_model_add_node(l->m, id, X, fix);
+}
+
+static int d_element(ctn_line *l)
+{
+    int id = 0, a = 0, b = 0;
+    double l0 = CTN_L0_DEFAULT;
+    int rc = ctn_parse_positional(l, 3, "element ID NODE1 NODE2 section=SECTION [l0=LENGTH]");
+    if (!rc) rc = ctn_parse_int(l, "the element id", l->tok[1], &id);
+    if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[2], &a);
+    if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[3], &b);
+    const char *sec = rc ? NULL : ctn_parse_key(l, 4, "section");
+    if (!rc && !sec) return ctn_parse_error(l, "element: missing required key 'section='");
+    if (!rc && ctn_parse_key(l, 4, "l0")) {
+        rc = ctn_parse_key_num(l, 4, "l0", 1, &l0);
+        if (!rc && !(l0 > 0)) return ctn_parse_error(l, "element %d: l0 must be positive (found %g)", id, l0);
+    }
+    if (!rc) rc = ctn_parse_leftovers(l, 4, "element");
+    return rc ? rc : ctn_model_add_element(l->m, id, a, b, sec, l0);
+}
+
+static int cable_shape(ctn_line *l, ctn_cable_spec *spec)
+{
+    const char *shape = ctn_parse_key(l, 3, "shape");
+    spec->shape = CTN_SHAPE_ARC;
+    if (shape && !strcmp(shape, "straight")) spec->shape = CTN_SHAPE_STRAIGHT;
+    else if (shape && strcmp(shape, "arc"))
+        return ctn_parse_error(l, "unknown cable shape '%.40s' (expected arc or straight)", shape);
+    spec->guess_strain = 1e-3;
+    return ctn_parse_key_num(l, 3, "guess", 0, &spec->guess_strain);
+}
+
+static int d_cable(ctn_line *l)
+{
+    int a = 0, b = 0, n = 0;
+    ctn_cable_spec spec = { 0, 0, CTN_SHAPE_ARC, 1e-3 };
+    int rc = ctn_parse_positional(l, 2, "cable NODE1 NODE2 section=SECTION n=COUNT length=LENGTH [shape=arc|straight] [guess=STRAIN]");
+    if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[1], &a);
+    if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[2], &b);
+    const char *sec = rc ? NULL : ctn_parse_key(l, 3, "section");
+    if (!rc && !sec) return ctn_parse_error(l, "cable: missing required key 'section='");
+    const char *ns = rc ? NULL : ctn_parse_key(l, 3, "n");
+    if (!rc && !ns) return ctn_parse_error(l, "cable: missing required key 'n='");
+    if (!rc) rc = ctn_parse_int(l, "'n' (the element count)", ns, &n);
+    if (!rc) rc = ctn_parse_key_num(l, 3, "length", 1, &spec.length);
+    if (!rc) rc = cable_shape(l, &spec);
+    if (!rc) rc = ctn_parse_leftovers(l, 3, "cable");
+    spec.n = n;
+    return rc ? rc : ctn_model_add_cable(l->m, a, b, sec, &spec, NULL, NULL);
+}
+
+static int d_load(ctn_line *l)
+{
+    int id = 0;
+    double F[3];
+    int rc = ctn_parse_positional(l, 4, "load NODE FX FY FZ");
+    if (!rc) rc = ctn_parse_int(l, "the node id", l->tok[1], &id);
+    for (int k = 0; k < 3 && !rc; k++) rc = ctn_parse_num(l, "a force component", l->tok[2 + k], &F[k]);
+    if (!rc) rc = ctn_parse_leftovers(l, 5, "load");
+    return rc ? rc : ctn_model_add_load(l->m, id, F);
+}
+
+/* "A-B" or "A" or "all" into an inclusive id range. */
+static int parse_range(ctn_line *l, const char *s, int *first, int *last)
+{
+    if (!s || !strcmp(s, "all")) {
+        *first = 1;
+        *last = 0x7fffffff;
+        return CTN_OK;
+    }
+    char buf[64];
+    snprintf(buf, sizeof buf, "%s", s);
+    char *dash = strchr(buf, '-');
+    if (dash) *dash = '\0';
+    int rc = ctn_parse_int(l, "an element id", buf, first);
+    if (!rc) rc = ctn_parse_int(l, "an element id", dash ? dash + 1 : buf, last);
+    if (!rc && *last < *first) return ctn_parse_error(l, "element range '%.40s' is empty", s);
+    return rc;
+}
+
+static int d_hload(ctn_line *l)
+{
+    double q = 0;
+    int first = 0, last = 0;
+    int rc = ctn_parse_positional(l, 0, "hload q=LOAD [elements=FIRST-LAST|ID|all]");
+    if (!rc) rc = ctn_parse_key_num(l, 1, "q", 1, &q);
+    if (!rc) rc = parse_range(l, ctn_parse_key(l, 1, "elements"), &first, &last);
+    if (!rc) rc = ctn_parse_leftovers(l, 1, "hload");
+    return rc ? rc : ctn_model_add_hload(l->m, q, first, last);
+}
+
+static int d_solve(ctn_line *l)
+{
+    ctn_solve_options opt;
+    double maxit = 0;
+    ctn_model_solve_options(l->m, &opt);
+    int rc = ctn_parse_positional(l, 0, "solve [tol=T] [dtol=T] [maxit=N] [ordering=auto|natural|amd]");
+    if (!rc) rc = ctn_parse_key_num(l, 1, "tol", 0, &opt.tol);
+    if (!rc) rc = ctn_parse_key_num(l, 1, "dtol", 0, &opt.dtol);
+    const char *mi = rc ? NULL : ctn_parse_key(l, 1, "maxit");
+    if (mi && !(rc = ctn_parse_num(l, "'maxit'", mi, &maxit))) {
+        if (maxit != (int)maxit) return ctn_parse_error(l, "maxit must be an integer (found %.40s)", mi);
+        opt.maxit = (int)maxit;
+    }
+    const char *ord = rc ? NULL : ctn_parse_key(l, 1, "ordering");
+    if (ord) {
+        if (!strcmp(ord, "auto")) opt.ordering = CTN_ORDER_AUTO;
+        else if (!strcmp(ord, "natural")) opt.ordering = CTN_ORDER_NATURAL;
+        else if (!strcmp(ord, "amd")) opt.ordering = CTN_ORDER_AMD;
+        else return ctn_parse_error(l, "unknown ordering '%.40s' (expected auto, natural or amd)", ord);
+    }
+    if (!rc) rc = ctn_parse_leftovers(l, 1, "solve");
+    return rc ? rc : ctn_model_set_solve_options(l->m, &opt);
+}
+
+typedef struct directive {
+    const char *name;
+    int (*fn)(ctn_line *l);
+} directive;
+
+static const directive directives[] = {
+    { "units", d_units },     { "gravity", d_gravity }, { "material", d_material },
+    { "section", d_section }, { "node", d_node },       { "element", d_element },
+    { "cable", d_cable },     { "load", d_load },       { "hload", d_hload },
+    { "solve", d_solve },
+};
+
+int ctn_parse_directive(ctn_line *l)
+{
+    for (size_t i = 0; i < sizeof directives / sizeof *directives; i++)
+        if (!strcmp(l->tok[0], directives[i].name)) return directives[i].fn(l);
+    char b[64];
+    return ctn_parse_error(l, "unknown directive '%s'", ctn_parse_show(l->tok[0], b, sizeof b));
+}

@@ -1,0 +1,124 @@
+/* Token helpers of the .cable reader: numbers, ids, key=value options, messages. */
+#include "io/parse.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+int ctn_parse_error(const ctn_line *l, const char *fmt, ...)
+{
+    char msg[CTN_MSG_MAX];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    return ctn_error_at(l->m->ctx, CTN_ERR_MODEL, l->file, l->line, "%s", msg);
+}
+
+const char *ctn_parse_show(const char *tok, char *buf, size_t size)
+{
+    size_t k = 0;
+    for (const unsigned char *p = (const unsigned char *)tok; *p && k + 5 < size; p++) {
+        if (k > 40) {
+            memcpy(buf + k, "...", 3);
+            k += 3;
+            break;
+        }
+        if (isprint(*p)) buf[k++] = (char)*p;
+        else k += (size_t)snprintf(buf + k, size - k, "\\x%02x", *p);
+    }
+    buf[k] = '\0';
+    return buf;
+}
+
+int ctn_parse_positional(ctn_line *l, int n, const char *usage)
+{
+    int have = 0;
+    while (1 + have < l->ntok && !strchr(l->tok[1 + have], '=')) have++;
+    if (have < n) return ctn_parse_error(l, "expected '%s': missing argument (%d of %d given)", usage, have, n);
+    for (int i = 1 + n; i < l->ntok; i++) {
+        char b[64];
+        char *eq = strchr(l->tok[i], '=');
+        if (!eq) continue;                                 /* a flag, or a stray word */
+        if (eq == l->tok[i]) return ctn_parse_error(l, "missing key before '=' in '%s'", ctn_parse_show(l->tok[i], b, sizeof b));
+        if (!eq[1]) return ctn_parse_error(l, "missing value for key '%.*s'", (int)(eq - l->tok[i]) > 40 ? 40 : (int)(eq - l->tok[i]), l->tok[i]);
+        for (int j = 1 + n; j < i; j++) {
+            size_t kl = (size_t)(eq - l->tok[i]);
+            if (!strncmp(l->tok[j], l->tok[i], kl) && l->tok[j][kl] == '=')
+                return ctn_parse_error(l, "key '%.*s' given twice", (int)kl > 40 ? 40 : (int)kl, l->tok[i]);
+        }
+    }
+    return CTN_OK;
+}
+
+int ctn_parse_int(const ctn_line *l, const char *what, const char *tok, int *out)
+{
+    char b[64], *end;
+    errno = 0;
+    long v = strtol(tok, &end, 10);
+    if (end == tok || *end) return ctn_parse_error(l, "expected an integer for %s, found '%s'", what, ctn_parse_show(tok, b, sizeof b));
+    if (errno == ERANGE || v < 1 || v > INT_MAX)
+        return ctn_parse_error(l, "%s must be an integer from 1 to %d, found '%s'", what, INT_MAX, ctn_parse_show(tok, b, sizeof b));
+    *out = (int)v;
+    return CTN_OK;
+}
+
+int ctn_parse_num(const ctn_line *l, const char *what, const char *tok, double *out)
+{
+    char b[64], *end;
+    errno = 0;
+    double v = strtod(tok, &end);
+    if (end == tok || *end) return ctn_parse_error(l, "expected a number for %s, found '%s'", what, ctn_parse_show(tok, b, sizeof b));
+    if (!isfinite(v) || (errno == ERANGE && fabs(v) > 1.0))
+        return ctn_parse_error(l, "non-finite number for %s: '%s'", what, ctn_parse_show(tok, b, sizeof b));
+    *out = v;
+    return CTN_OK;
+}
+
+const char *ctn_parse_key(ctn_line *l, int from, const char *key)
+{
+    size_t kl = strlen(key);
+    for (int i = from; i < l->ntok && i < 64; i++)
+        if (!strncmp(l->tok[i], key, kl) && l->tok[i][kl] == '=') {
+            l->used |= 1ull << i;
+            return l->tok[i] + kl + 1;
+        }
+    return NULL;
+}
+
+int ctn_parse_flag(ctn_line *l, int from, const char *flag)
+{
+    for (int i = from; i < l->ntok && i < 64; i++)
+        if (!strcmp(l->tok[i], flag)) {
+            l->used |= 1ull << i;
+            return 1;
+        }
+    return 0;
+}
+
+int ctn_parse_key_num(ctn_line *l, int from, const char *key, int required, double *out)
+{
+    const char *v = ctn_parse_key(l, from, key);
+    if (!v) return required ? ctn_parse_error(l, "%s: missing required key '%s='", l->tok[0], key) : CTN_OK;
+    char what[80];
+    snprintf(what, sizeof what, "'%s'", key);
+    return ctn_parse_num(l, what, v, out);
+}
+
+int ctn_parse_leftovers(const ctn_line *l, int from, const char *directive)
+{
+    for (int i = from; i < l->ntok; i++) {
+        if (l->used >> i & 1) continue;
+        char b[64];
+        const char *eq = strchr(l->tok[i], '=');
+        if (eq) return ctn_parse_error(l, "unknown key '%.*s' for directive '%s'",
+                                       (int)(eq - l->tok[i]) > 40 ? 40 : (int)(eq - l->tok[i]), l->tok[i], directive);
+        return ctn_parse_error(l, "unexpected '%s' for directive '%s'", ctn_parse_show(l->tok[i], b, sizeof b), directive);
+    }
+    return CTN_OK;
+}

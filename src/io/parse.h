@@ -1,0 +1,40 @@
+/* Internal: the .cable reader's line state and token helpers shared by the directive
+ * handlers. */
+#ifndef CTN_IO_PARSE_H
+#define CTN_IO_PARSE_H
+
+#include "model/model.h"
+
+#define CTN_MAX_TOKENS 64
+
+typedef struct ctn_line {
+    ctn_model *m;
+    const char *file;
+    int line;
+    char *tok[CTN_MAX_TOKENS];
+    int ntok;
+    unsigned long long used;      /* bit k: key/value token k was consumed */
+} ctn_line;
+
+/* Error at this line: "file:line: ..." */
+int ctn_parse_error(const ctn_line *l, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* A token made printable and short for messages (static per-line buffer in *buf). */
+const char *ctn_parse_show(const char *tok, char *buf, size_t size);
+
+/* Positional arguments: exactly n (after the directive) before any key=value. */
+int ctn_parse_positional(ctn_line *l, int n, const char *usage);
+int ctn_parse_int(const ctn_line *l, const char *what, const char *tok, int *out);
+int ctn_parse_num(const ctn_line *l, const char *what, const char *tok, double *out);
+/* key=value lookup among tokens from index `from`; NULL if absent (marks it used). */
+const char *ctn_parse_key(ctn_line *l, int from, const char *key);
+/* A flag token (no '='), e.g. "tension-only"; 1 if present (marks it used). */
+int ctn_parse_flag(ctn_line *l, int from, const char *flag);
+/* Required / optional numeric key. */
+int ctn_parse_key_num(ctn_line *l, int from, const char *key, int required, double *out);
+/* After a handler took what it knows: any token left is an unknown key. */
+int ctn_parse_leftovers(const ctn_line *l, int from, const char *directive);
+
+/* The directive handlers (directives.c). */
+int ctn_parse_directive(ctn_line *l);
+
+#endif

@@ -1,0 +1,120 @@
+/* The .cable reader: file to memory, lines to tokens, tokens to directives. Numbers are
+ * parsed in the C locale whatever the caller's locale is. */
+#include "io/parse.h"
+#include "catena/io.h"
+
+#include <errno.h>
+#include <locale.h>
+#include <stdio.h>
+#include <string.h>
+
+#define CTN_MAX_FILE ((size_t)1 << 31)
+
+/* Split one line (modified in place) into tokens; comments start with '#'. */
+static int tokenize(ctn_line *l, char *s)
+{
+    char *hash = strchr(s, '#');
+    if (hash) *hash = '\0';
+    l->ntok = 0;
+    l->used = 0;
+    char *save = NULL;
+    for (char *p = strtok_r(s, " \t\r\v\f", &save); p; p = strtok_r(NULL, " \t\r\v\f", &save)) {
+        if (l->ntok == CTN_MAX_TOKENS)
+            return ctn_parse_error(l, "too many fields on one line (more than %d)", CTN_MAX_TOKENS);
+        l->tok[l->ntok++] = p;
+    }
+    return CTN_OK;
+}
+
+static int parse_text(ctn_model *m, const char *name, char *text, size_t len)
+{
+    ctn_line l;
+    memset(&l, 0, sizeof l);
+    l.m = m;
+    l.file = name;
+    size_t start = 0;
+    for (l.line = 1; start < len || (start == len && l.line == 1); l.line++) {
+        char *nl = memchr(text + start, '\n', len - start);
+        size_t end = nl ? (size_t)(nl - text) : len;
+        if (memchr(text + start, '\0', end - start))
+            return ctn_parse_error(&l, "binary data (a NUL byte) in the model file");
+        text[end] = '\0';
+        int rc = tokenize(&l, text + start);
+        if (!rc && l.ntok) {
+            ctn_model_set_origin(m, name, l.line);
+            rc = ctn_parse_directive(&l);
+        }
+        if (rc) return rc;
+        start = end + 1;
+        if (!nl) break;
+    }
+    ctn_model_set_origin(m, name, 0);
+    return CTN_OK;
+}
+
+int ctn_model_read_string(ctn_ctx *ctx, const char *name, const char *text, size_t len,
+                          ctn_model **out)
+{
+    if (!out || (!text && len)) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_model_read_string: bad arguments");
+    *out = NULL;
+    ctn_model *m = NULL;
+    char *buf = ctn_malloc(ctx, len + 1, 1);
+    if (!buf) return CTN_ERR_NOMEM;
+    if (len) memcpy(buf, text, len);
+    buf[len] = '\0';
+    int rc = ctn_model_create(ctx, &m);
+    if (!rc) {
+        locale_t c = newlocale(LC_ALL_MASK, "C", (locale_t)0);
+        locale_t old = c ? uselocale(c) : (locale_t)0;
+        rc = parse_text(m, name ? name : "<string>", buf, len);
+        if (c) {
+            uselocale(old);
+            freelocale(c);
+        }
+    }
+    ctn_free(buf);
+    if (rc) ctn_model_destroy(&m);
+    *out = m;
+    return rc;
+}
+
+static int read_all(ctn_ctx *ctx, const char *path, char **data, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return ctn_error(ctx, CTN_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
+    size_t cap = 1 << 16, n = 0;
+    char *buf = ctn_malloc(ctx, cap, 1);
+    int rc = buf ? CTN_OK : CTN_ERR_NOMEM;
+    while (!rc) {
+        if (n == cap) {
+            char *p = cap >= CTN_MAX_FILE ? NULL : ctn_realloc(ctx, buf, cap * 2, 1);
+            if (!p) { rc = cap >= CTN_MAX_FILE ? ctn_error(ctx, CTN_ERR_IO, "%s: file larger than 2 GiB", path) : CTN_ERR_NOMEM; break; }
+            buf = p;
+            cap *= 2;
+        }
+        size_t k = fread(buf + n, 1, cap - n, f);
+        n += k;
+        if (k == 0) {
+            if (ferror(f)) rc = ctn_error(ctx, CTN_ERR_IO, "%s: read error (is it a directory?)", path);
+            break;
+        }
+    }
+    fclose(f);
+    if (rc) { ctn_free(buf); return rc; }
+    *data = buf;
+    *len = n;
+    return CTN_OK;
+}
+
+int ctn_model_read_file(ctn_ctx *ctx, const char *path, ctn_model **out)
+{
+    if (!path || !out) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_model_read_file: bad arguments");
+    *out = NULL;
+    char *data = NULL;
+    size_t len = 0;
+    int rc = read_all(ctx, path, &data, &len);
+    if (rc) return rc;
+    rc = ctn_model_read_string(ctx, path, data, len, out);
+    ctn_free(data);
+    return rc;
+}

@@ -1,0 +1,90 @@
+/* Result files: nodes.csv, elements.csv and result.json in a directory, each written
+ * atomically, numbers as %.17g in the C locale. */
+#include "io/strbuf.h"
+#include "model/model.h"
+#include "solve/solution.h"
+#include "catena/io.h"
+
+#include <errno.h>
+#include <locale.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+
+static int all_finite(const ctn_solution *s)
+{
+    for (size_t i = 0; i < 3 * s->nn; i++)
+        if (!isfinite(s->d[i]) || !isfinite(s->react[i])) return 0;
+    for (size_t e = 0; e < s->ne; e++)
+        if (!isfinite(s->elem[e].force) || !isfinite(s->elem[e].length)) return 0;
+    return 1;
+}
+
+static void nodes_csv(ctn_strbuf *b, const ctn_model *m, const ctn_solution *s)
+{
+    ctn_sb_printf(b, "id,x,y,z,ux,uy,uz,fix,rx,ry,rz\n");
+    for (size_t i = 0; i < m->nodes.n; i++) {
+        const ctn_node *p = &m->nodes.v[i];
+        const double *d = s->d + 3 * i, *r = s->react + 3 * i;
+        ctn_sb_printf(b, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s%s%s,%.17g,%.17g,%.17g\n",
+                      p->id, p->X[0], p->X[1], p->X[2], d[0], d[1], d[2],
+                      p->fix & CTN_FIX_X ? "x" : "", p->fix & CTN_FIX_Y ? "y" : "",
+                      p->fix & CTN_FIX_Z ? "z" : "", r[0], r[1], r[2]);
+    }
+}
+
+static void elements_csv(ctn_strbuf *b, const ctn_model *m, const ctn_solution *s)
+{
+    ctn_sb_printf(b, "id,node1,node2,l0,length,strain,force,stress,slack\n");
+    for (size_t i = 0; i < m->elements.n; i++) {
+        const ctn_element *e = &m->elements.v[i];
+        const ctn_element_state *st = &s->elem[i];
+        ctn_sb_printf(b, "%d,%d,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%d\n", e->id,
+                      m->nodes.v[e->node[0]].id, m->nodes.v[e->node[1]].id, e->l0,
+                      st->length, st->strain, st->force, st->stress, st->slack);
+    }
+}
+
+static int write_one(ctn_ctx *ctx, const char *dir, const char *name, const char *text, size_t n)
+{
+    char path[4096];
+    if ((size_t)snprintf(path, sizeof path, "%s/%s", dir, name) >= sizeof path)
+        return ctn_error(ctx, CTN_ERR_IO, "%s: path too long", dir);
+    return ctn_write_file_atomic(ctx, path, text, n);
+}
+
+static int write_csvs(ctn_ctx *ctx, const char *dir, const ctn_model *m, const ctn_solution *s)
+{
+    ctn_strbuf nb = { ctx, NULL, 0, 0, 0 }, eb = { ctx, NULL, 0, 0, 0 };
+    locale_t c = newlocale(LC_ALL_MASK, "C", (locale_t)0);
+    locale_t old = c ? uselocale(c) : (locale_t)0;
+    nodes_csv(&nb, m, s);
+    elements_csv(&eb, m, s);
+    if (c) {
+        uselocale(old);
+        freelocale(c);
+    }
+    int rc = nb.err ? nb.err : eb.err;
+    if (rc) rc = ctn_error(ctx, rc, "out of memory writing CSV");
+    if (!rc) rc = write_one(ctx, dir, "nodes.csv", nb.s, nb.n);
+    if (!rc) rc = write_one(ctx, dir, "elements.csv", eb.s, eb.n);
+    ctn_sb_free(&nb);
+    ctn_sb_free(&eb);
+    return rc;
+}
+
+int ctn_write_results(ctn_ctx *ctx, const char *dir, const ctn_model *m,
+                      const ctn_solution *s)
+{
+    if (!dir || !m || !s) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_write_results: bad arguments");
+    if (!all_finite(s)) return ctn_error(ctx, CTN_ERR_INVALID, "result holds a NaN or Inf; not written");
+    if (mkdir(dir, 0755) && errno != EEXIST)
+        return ctn_error(ctx, CTN_ERR_IO, "%s: cannot create directory: %s", dir, strerror(errno));
+    char *json = NULL;
+    int rc = ctn_result_json(ctx, m, s, 1, &json);
+    if (!rc) rc = write_csvs(ctx, dir, m, s);
+    if (!rc) rc = write_one(ctx, dir, "result.json", json, strlen(json));
+    ctn_json_free(json);
+    return rc;
+}

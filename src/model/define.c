@@ -1,0 +1,91 @@
+/* Model definitions: units, gravity, materials, sections. */
+#include "model/model.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static int finite3(const double v[3]) { return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]); }
+
+int ctn_model_set_units(ctn_model *m, const char *force, const char *length)
+{
+    static const char *fnames[] = { "N", "kN", "MN" };
+    static const double fval[] = { 1.0, 1e3, 1e6 };
+    if (!m || !force || !length) return CTN_ERR_INVALID;
+    int fi = -1;
+    for (int i = 0; i < 3; i++)
+        if (!strcmp(force, fnames[i])) fi = i;
+    if (fi < 0) return ctn_model_error(m, CTN_ERR_MODEL, "unknown force unit '%s' (expected N, kN or MN)", force);
+    double lval;
+    if (!strcmp(length, "m")) lval = 1.0;
+    else if (!strcmp(length, "mm")) lval = 1e-3;
+    else return ctn_model_error(m, CTN_ERR_MODEL, "unknown length unit '%s' (expected m or mm)", length);
+    snprintf(m->force_unit, sizeof m->force_unit, "%s", force);
+    snprintf(m->length_unit, sizeof m->length_unit, "%s", length);
+    m->mpa = fval[fi] / (lval * lval) * 1e-6;            /* force/length^2 -> N/m^2 -> MPa */
+    return CTN_OK;
+}
+
+int ctn_model_set_gravity(ctn_model *m, const double g[3])
+{
+    if (!m || !g) return CTN_ERR_INVALID;
+    if (!finite3(g)) return ctn_model_error(m, CTN_ERR_MODEL, "gravity must be finite");
+    memcpy(m->gravity, g, sizeof m->gravity);
+    m->gravity_line = m->line;
+    return CTN_OK;
+}
+
+static int check_name(const ctn_model *m, const char *what, const char *name)
+{
+    if (!name || !*name) return ctn_model_error(m, CTN_ERR_MODEL, "%s name is empty", what);
+    if (strlen(name) >= CTN_NAME_MAX)
+        return ctn_model_error(m, CTN_ERR_MODEL, "%s name longer than %d characters", what, CTN_NAME_MAX - 1);
+    return CTN_OK;
+}
+
+int ctn_model_add_material(ctn_model *m, const char *name, double E, ctn_strain strain,
+                           int tension_only)
+{
+    if (!m) return CTN_ERR_INVALID;
+    int rc = check_name(m, "material", name);
+    if (rc) return rc;
+    if (ctn_model_find_material(m, name) >= 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "duplicate material '%s'", name);
+    if (!isfinite(E) || E <= 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "material '%s': E must be positive and finite (got %g)", name, E);
+    if (strain != CTN_STRAIN_GREEN_LAGRANGE && strain != CTN_STRAIN_ENGINEERING)
+        return ctn_model_error(m, CTN_ERR_MODEL, "material '%s': unknown strain measure", name);
+    if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->materials, 1))) return rc;
+    ctn_material *p = &m->materials.v[m->materials.n++];
+    snprintf(p->name, sizeof p->name, "%s", name);
+    p->E = E;
+    p->strain = strain;
+    p->tension_only = tension_only != 0;
+    return CTN_OK;
+}
+
+int ctn_model_add_section(ctn_model *m, const char *name, const char *material, double A,
+                          double w)
+{
+    if (!m) return CTN_ERR_INVALID;
+    int rc = check_name(m, "section", name);
+    if (rc) return rc;
+    if (ctn_model_find_section(m, name) >= 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "duplicate section '%s'", name);
+    int mat = material ? ctn_model_find_material(m, material) : -1;
+    if (mat < 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': undefined material '%s'", name,
+                               material ? material : "");
+    if (!isfinite(A) || A <= 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': A must be positive and finite (got %g)", name, A);
+    if (!isfinite(w) || w < 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': w must be >= 0 and finite (got %g)", name, w);
+    if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->sections, 1))) return rc;
+    ctn_section *p = &m->sections.v[m->sections.n++];
+    snprintf(p->name, sizeof p->name, "%s", name);
+    p->material = mat;
+    p->A = A;
+    p->w = w;
+    p->line = m->line;
+    return CTN_OK;
+}

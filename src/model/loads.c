@@ -1,0 +1,94 @@
+/* External nodal forces and whole-model validation. */
+#include "model/model.h"
+
+#include <math.h>
+#include <string.h>
+
+/* Self-weight: w l0 g per element, half to each node (a dead load). */
+static void add_self_weight(const ctn_model *m, double *f)
+{
+    for (size_t i = 0; i < m->elements.n; i++) {
+        const ctn_element *e = &m->elements.v[i];
+        double W = 0.5 * m->sections.v[e->section].w * e->l0;
+        for (int k = 0; k < 3; k++) {
+            f[3 * e->node[0] + k] += W * m->gravity[k];
+            f[3 * e->node[1] + k] += W * m->gravity[k];
+        }
+    }
+}
+
+/* Horizontal loads: q times the element's reference projection on the plane normal to
+ * gravity, half to each node, along gravity's direction. */
+static void add_hloads(const ctn_model *m, double *f)
+{
+    double g = sqrt(m->gravity[0] * m->gravity[0] + m->gravity[1] * m->gravity[1] +
+                    m->gravity[2] * m->gravity[2]);
+    if (!(g > 0)) return;
+    double u[3] = { m->gravity[0] / g, m->gravity[1] / g, m->gravity[2] / g };
+    for (size_t h = 0; h < m->hloads.n; h++) {
+        const ctn_hload *hl = &m->hloads.v[h];
+        for (size_t i = 0; i < m->elements.n; i++) {
+            const ctn_element *e = &m->elements.v[i];
+            if (e->id < hl->first || e->id > hl->last) continue;
+            const double *a = m->nodes.v[e->node[0]].X, *b = m->nodes.v[e->node[1]].X;
+            double d[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+            double along = d[0] * u[0] + d[1] * u[1] + d[2] * u[2];
+            double p2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - along * along;
+            double P = 0.5 * hl->q * sqrt(p2 > 0 ? p2 : 0);
+            for (int k = 0; k < 3; k++) {
+                f[3 * e->node[0] + k] += P * u[k];
+                f[3 * e->node[1] + k] += P * u[k];
+            }
+        }
+    }
+}
+
+int ctn_model_external_forces(const ctn_model *m, double *f)
+{
+    if (!m || !f) return CTN_ERR_INVALID;
+    memcpy(f, m->loads.v, m->nodes.n * 3 * sizeof(double));
+    add_self_weight(m, f);
+    add_hloads(m, f);
+    return CTN_OK;
+}
+
+static int has_weight(const ctn_model *m, int *line)
+{
+    for (size_t i = 0; i < m->sections.n; i++)
+        if (m->sections.v[i].w > 0) {
+            *line = m->sections.v[i].line;
+            return 1;
+        }
+    return 0;
+}
+
+static int check_hload_targets(const ctn_model *m)
+{
+    for (size_t h = 0; h < m->hloads.n; h++) {
+        const ctn_hload *hl = &m->hloads.v[h];
+        int hit = 0;
+        for (size_t i = 0; i < m->elements.n && !hit; i++)
+            hit = m->elements.v[i].id >= hl->first && m->elements.v[i].id <= hl->last;
+        if (!hit)
+            return ctn_error_at(m->ctx, CTN_ERR_MODEL, m->file, hl->line,
+                                "hload: no element with id in %d-%d", hl->first, hl->last);
+    }
+    return CTN_OK;
+}
+
+int ctn_model_validate(const ctn_model *m)
+{
+    if (!m) return CTN_ERR_INVALID;
+    int line = 0, g0 = m->gravity[0] == 0 && m->gravity[1] == 0 && m->gravity[2] == 0;
+    if (m->elements.n == 0) return ctn_error(m->ctx, CTN_ERR_MODEL, "%s%sthe model has no elements", m->file, *m->file ? ": " : "");
+    if (g0 && has_weight(m, &line))
+        return ctn_error_at(m->ctx, CTN_ERR_MODEL, m->file, line,
+                            "section has weight w > 0 but the model has no gravity directive");
+    if (g0 && m->hloads.n)
+        return ctn_error_at(m->ctx, CTN_ERR_MODEL, m->file, m->hloads.v[0].line,
+                            "hload needs a gravity direction (no gravity directive)");
+    int fixed = 0;
+    for (size_t i = 0; i < m->nodes.n && !fixed; i++) fixed = m->nodes.v[i].fix != 0;
+    if (!fixed) return ctn_error(m->ctx, CTN_ERR_MODEL, "%s%sthe model has no supports (no node has fix=)", m->file, *m->file ? ": " : "");
+    return check_hload_targets(m);
+}

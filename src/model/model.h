@@ -1,0 +1,88 @@
+/* Internal: the model structure shared by model/, assemble/, solve/ and io/. */
+#ifndef CTN_MODEL_MODEL_H
+#define CTN_MODEL_MODEL_H
+
+#include "catena/model.h"
+#include "catena/solve.h"
+#include "core/ctx.h"
+#include "model/idmap.h"
+
+#define CTN_NAME_MAX 64
+
+typedef struct ctn_node {
+    int id;
+    double X[3];     /* reference coordinates */
+    double guess[3]; /* starting displacement */
+    unsigned fix;
+    int line;        /* defining line in the source, 0 if from the API */
+} ctn_node;
+
+typedef struct ctn_material {
+    char name[CTN_NAME_MAX];
+    double E;
+    ctn_strain strain;
+    int tension_only;
+} ctn_material;
+
+typedef struct ctn_section {
+    char name[CTN_NAME_MAX];
+    int material;    /* index */
+    double A, w;
+    int line;
+} ctn_section;
+
+typedef struct ctn_element {
+    int id;
+    int node[2];     /* node indices */
+    int section;     /* section index */
+    double l0;
+} ctn_element;
+
+typedef struct ctn_hload {
+    double q;
+    int first, last; /* element ids, inclusive */
+    int line;
+} ctn_hload;
+
+typedef struct ctn_cable {
+    int node[2];
+    size_t first, count;
+    double length;
+} ctn_cable;
+
+/* A growable array: data, count and capacity. */
+#define CTN_ARRAY(T) struct { T *v; size_t n, cap; }
+
+struct ctn_model {
+    ctn_ctx *ctx;
+    char file[256];  /* origin of the definitions being added */
+    int line;
+    char force_unit[4], length_unit[4];
+    double mpa;      /* stress unit -> MPa, 0 if unit-less */
+    double gravity[3];
+    int gravity_line;
+    CTN_ARRAY(ctn_node) nodes;
+    CTN_ARRAY(ctn_material) materials;
+    CTN_ARRAY(ctn_section) sections;
+    CTN_ARRAY(ctn_element) elements;
+    CTN_ARRAY(double) loads;        /* 3 per node, kept in step with nodes */
+    CTN_ARRAY(ctn_hload) hloads;
+    CTN_ARRAY(ctn_cable) cables;
+    ctn_idmap node_ids, element_ids;
+    int max_node_id, max_element_id;
+    ctn_solve_options options;      /* from the `solve` directive */
+};
+
+/* Make room for one more item in a CTN_ARRAY; 0 or CTN_ERR_NOMEM. */
+#define CTN_ARRAY_RESERVE(ctx, a, extra)                                                 \
+    ctn_array_reserve((ctx), (void **)&(a).v, &(a).cap, (a).n + (extra), sizeof *(a).v)
+int ctn_array_reserve(ctn_ctx *ctx, void **v, size_t *cap, size_t need, size_t size);
+
+/* Report an error located at the model's current origin (file:line if known). */
+int ctn_model_error(const ctn_model *m, int code, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+int ctn_model_find_section(const ctn_model *m, const char *name);
+int ctn_model_find_material(const ctn_model *m, const char *name);
+
+#endif

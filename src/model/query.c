@@ -1,0 +1,67 @@
+/* Read-only queries of a model. */
+#include "model/model.h"
+
+#include <string.h>
+
+size_t ctn_model_node_count(const ctn_model *m) { return m ? m->nodes.n : 0; }
+size_t ctn_model_element_count(const ctn_model *m) { return m ? m->elements.n : 0; }
+size_t ctn_model_cable_count(const ctn_model *m) { return m ? m->cables.n : 0; }
+
+int ctn_model_node(const ctn_model *m, size_t i, ctn_node_info *out)
+{
+    if (!m || !out || i >= m->nodes.n) return CTN_ERR_INVALID;
+    const ctn_node *p = &m->nodes.v[i];
+    out->id = p->id;
+    memcpy(out->X, p->X, sizeof out->X);
+    memcpy(out->guess, p->guess, sizeof out->guess);
+    out->fix = p->fix;
+    return CTN_OK;
+}
+
+int ctn_model_element(const ctn_model *m, size_t i, ctn_element_info *out)
+{
+    if (!m || !out || i >= m->elements.n) return CTN_ERR_INVALID;
+    const ctn_element *e = &m->elements.v[i];
+    const ctn_section *s = &m->sections.v[e->section];
+    const ctn_material *mat = &m->materials.v[s->material];
+    out->id = e->id;
+    out->node[0] = e->node[0];
+    out->node[1] = e->node[1];
+    out->l0 = e->l0;
+    out->A = s->A;
+    out->E = mat->E;
+    out->w = s->w;
+    out->strain = mat->strain;
+    out->tension_only = mat->tension_only;
+    return CTN_OK;
+}
+
+int ctn_model_cable(const ctn_model *m, size_t i, ctn_cable_info *out)
+{
+    if (!m || !out || i >= m->cables.n) return CTN_ERR_INVALID;
+    const ctn_cable *c = &m->cables.v[i];
+    out->node[0] = c->node[0];
+    out->node[1] = c->node[1];
+    out->first = c->first;
+    out->count = c->count;
+    out->length = c->length;
+    return CTN_OK;
+}
+
+int ctn_model_node_index(const ctn_model *m, int id, size_t *index)
+{
+    if (!m || !index) return CTN_ERR_INVALID;
+    int i = ctn_idmap_get(&m->node_ids, id);
+    if (i < 0) return CTN_ERR_INVALID;
+    *index = (size_t)i;
+    return CTN_OK;
+}
+
+void ctn_model_gravity(const ctn_model *m, double g[3])
+{
+    for (int k = 0; k < 3; k++) g[k] = m ? m->gravity[k] : 0.0;
+}
+
+const char *ctn_model_force_unit(const ctn_model *m) { return m ? m->force_unit : ""; }
+const char *ctn_model_length_unit(const ctn_model *m) { return m ? m->length_unit : ""; }
+double ctn_model_mpa_factor(const ctn_model *m) { return m ? m->mpa : 0.0; }

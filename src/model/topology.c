@@ -1,0 +1,104 @@
+/* Model topology and loads: nodes, elements, concentrated and horizontal loads. */
+#include "model/model.h"
+
+#include <math.h>
+#include <string.h>
+
+static int finite3(const double v[3]) { return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]); }
+
+int ctn_model_add_node(ctn_model *m, int id, const double X[3], unsigned fix)
+{
+    if (!m || !X) return CTN_ERR_INVALID;
+    if (id <= 0) return ctn_model_error(m, CTN_ERR_MODEL, "node id must be a positive integer (got %d)", id);
+    if (ctn_idmap_get(&m->node_ids, id) >= 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "duplicate node id %d", id);
+    if (!finite3(X)) return ctn_model_error(m, CTN_ERR_MODEL, "node %d: coordinates must be finite", id);
+    if (fix & ~(unsigned)CTN_FIX_ALL) return ctn_model_error(m, CTN_ERR_MODEL, "node %d: bad fix flags", id);
+    if (m->nodes.n >= (size_t)0x7fffffff / 3)
+        return ctn_model_error(m, CTN_ERR_MODEL, "too many nodes");
+    int rc = CTN_ARRAY_RESERVE(m->ctx, m->nodes, 1);
+    if (!rc) rc = CTN_ARRAY_RESERVE(m->ctx, m->loads, 3);
+    if (!rc) rc = ctn_idmap_put(m->ctx, &m->node_ids, id, (int)m->nodes.n);
+    if (rc) return rc;
+    ctn_node *p = &m->nodes.v[m->nodes.n++];
+    p->id = id;
+    memcpy(p->X, X, sizeof p->X);
+    memset(p->guess, 0, sizeof p->guess);
+    p->fix = fix;
+    p->line = m->line;
+    memset(m->loads.v + m->loads.n, 0, 3 * sizeof(double));
+    m->loads.n += 3;
+    if (id > m->max_node_id) m->max_node_id = id;
+    return CTN_OK;
+}
+
+/* Node index of id or an "undefined node" error. */
+static int node_index(const ctn_model *m, int id, int *index)
+{
+    *index = ctn_idmap_get(&m->node_ids, id);
+    if (*index < 0) return ctn_model_error(m, CTN_ERR_MODEL, "undefined node %d", id);
+    return CTN_OK;
+}
+
+static double distance(const double a[3], const double b[3])
+{
+    return sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
+                (b[2] - a[2]) * (b[2] - a[2]));
+}
+
+int ctn_model_add_element(ctn_model *m, int id, int n1, int n2, const char *section,
+                          double l0)
+{
+    if (!m) return CTN_ERR_INVALID;
+    if (id <= 0) return ctn_model_error(m, CTN_ERR_MODEL, "element id must be a positive integer (got %d)", id);
+    if (ctn_idmap_get(&m->element_ids, id) >= 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "duplicate element id %d", id);
+    int a, b, rc;
+    if ((rc = node_index(m, n1, &a)) || (rc = node_index(m, n2, &b))) return rc;
+    if (a == b) return ctn_model_error(m, CTN_ERR_MODEL, "element %d connects node %d to itself", id, n1);
+    int sec = section ? ctn_model_find_section(m, section) : -1;
+    if (sec < 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "element %d: undefined section '%s'", id, section ? section : "");
+    double d = distance(m->nodes.v[a].X, m->nodes.v[b].X);
+    if (!(d > 0)) return ctn_model_error(m, CTN_ERR_MODEL, "element %d has zero length (nodes %d and %d coincide)", id, n1, n2);
+    if (l0 == CTN_L0_DEFAULT) l0 = d;
+    if (!isfinite(l0) || l0 <= 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "element %d: l0 must be positive and finite (got %g)", id, l0);
+    if (m->elements.n >= (size_t)0x7fffffff)
+        return ctn_model_error(m, CTN_ERR_MODEL, "too many elements");
+    if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->elements, 1))) return rc;
+    if ((rc = ctn_idmap_put(m->ctx, &m->element_ids, id, (int)m->elements.n))) return rc;
+    ctn_element *e = &m->elements.v[m->elements.n++];
+    e->id = id;
+    e->node[0] = a;
+    e->node[1] = b;
+    e->section = sec;
+    e->l0 = l0;
+    if (id > m->max_element_id) m->max_element_id = id;
+    return CTN_OK;
+}
+
+int ctn_model_add_load(ctn_model *m, int node, const double F[3])
+{
+    if (!m || !F) return CTN_ERR_INVALID;
+    int a, rc;
+    if ((rc = node_index(m, node, &a))) return rc;
+    if (!finite3(F)) return ctn_model_error(m, CTN_ERR_MODEL, "load on node %d must be finite", node);
+    for (int k = 0; k < 3; k++) m->loads.v[3 * a + k] += F[k];
+    return CTN_OK;
+}
+
+int ctn_model_add_hload(ctn_model *m, double q, int first, int last)
+{
+    if (!m) return CTN_ERR_INVALID;
+    if (!isfinite(q)) return ctn_model_error(m, CTN_ERR_MODEL, "horizontal load q must be finite");
+    if (first > last) return ctn_model_error(m, CTN_ERR_MODEL, "element range %d-%d is empty", first, last);
+    int rc = CTN_ARRAY_RESERVE(m->ctx, m->hloads, 1);
+    if (rc) return rc;
+    ctn_hload *h = &m->hloads.v[m->hloads.n++];
+    h->q = q;
+    h->first = first;
+    h->last = last;
+    h->line = m->line;
+    return CTN_OK;
+}
