@@ -75,6 +75,12 @@ typedef struct ctn_solve_summary {
     ctn_ordering ordering;/* the ordering used (never AUTO) */
     size_t ndof;          /* free DOFs */
     size_t nnz_factor;    /* non-zeros of the Cholesky factor */
+    double t_setup;       /* wall seconds: DOF map, pattern, scatter map, ordering and
+                             symbolic analysis (once per model) */
+    double t_assemble;    /* wall seconds in all iterations: internal forces, tangent
+                             values and residual */
+    double t_factor;      /* wall seconds in all numeric factorizations */
+    double t_solve;       /* wall seconds in all triangular solves */
 } ctn_solve_summary;
 
 /* Element state at the solution. */

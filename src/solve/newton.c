@@ -7,6 +7,7 @@
 
 #include <math.h>
 #include <string.h>
+#include <time.h>
 
 typedef struct newton {
     ctn_ctx *ctx;
@@ -18,6 +19,13 @@ typedef struct newton {
     double *r, *dd;            /* per equation */
     double fref, lref;         /* |f_ext| on free DOFs; model size */
 } newton;
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
 
 static double norm2(const double *v, size_t n)
 {
@@ -75,9 +83,10 @@ static void teardown(newton *nw)
 
 /* f_int and K at d, residual r = f_ext - f_int on free DOFs; its norm in *rnorm.
  * CTN_ERR_DOMAIN if an element collapsed. */
-static int residual(newton *nw, const double *d, int with_K, double *rnorm)
+static int residual(newton *nw, const double *d, int with_K, double *rnorm, double *t)
 {
     size_t bad;
+    double t0 = now();
     int rc = ctn_asm_eval(nw->a, d, nw->fint, with_K ? ctn_chol_values(nw->ch) : NULL, &bad);
     if (rc) return rc;
     for (size_t i = 0; i < 3 * nw->a->nn; i++) {
@@ -85,6 +94,7 @@ static int residual(newton *nw, const double *d, int with_K, double *rnorm)
         if (q >= 0) nw->r[q] = nw->fext[i] - nw->fint[i];
     }
     *rnorm = norm2(nw->r, nw->a->ndof);
+    *t += now() - t0;
     return isfinite(*rnorm) ? CTN_OK : CTN_ERR_DOMAIN;
 }
 
@@ -110,7 +120,10 @@ static int step(newton *nw, ctn_solution *s, double *d, double *rnorm, ctn_reaso
 {
     long col;
     *why = 0;
-    if (ctn_chol_factorize(nw->ch, &col)) {
+    double t0 = now();
+    int bad = ctn_chol_factorize(nw->ch, &col);
+    s->sum.t_factor += now() - t0;
+    if (bad) {
         if (col < 0) return ctn_ctx_code(nw->ctx);
         ctn_ctx_clear(nw->ctx);
         s->sum.fail_node = nw->m->nodes.v[nw->a->dof_node[col]].id;
@@ -118,14 +131,16 @@ static int step(newton *nw, ctn_solution *s, double *d, double *rnorm, ctn_reaso
         *why = CTN_DIVERGED_INDEFINITE;
         return CTN_OK;
     }
+    t0 = now();
     int rc = ctn_chol_solve(nw->ch, nw->r, nw->dd);
+    s->sum.t_solve += now() - t0;
     if (rc) return rc;
     if (!all_finite(nw->dd, nw->a->ndof)) {
         *why = CTN_DIVERGED_NANORINF;
         return CTN_OK;
     }
     update(nw, d, 1.0);
-    if (residual(nw, d, 1, rnorm)) {
+    if (residual(nw, d, 1, rnorm, &s->sum.t_assemble)) {
         update(nw, d, -1.0);                  /* keep the last finite state */
         *why = CTN_DIVERGED_NANORINF;
     }
@@ -138,7 +153,7 @@ static int iterate(newton *nw, ctn_solution *s)
     for (size_t i = 0; i < 3 * nw->a->nn; i++)
         d[i] = nw->a->eq[i] >= 0 ? nw->m->nodes.v[i / 3].guess[i % 3] : 0.0;
     s->sum.reason = CTN_DIVERGED_MAXIT;
-    if (residual(nw, d, 1, &rnorm)) {
+    if (residual(nw, d, 1, &rnorm, &s->sum.t_assemble)) {
         s->sum.reason = CTN_DIVERGED_NANORINF;
         return CTN_OK;
     }
@@ -204,9 +219,10 @@ int ctn_solve(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options *opt,
     if (opt) nw.opt = *opt;
     else ctn_model_solve_options(m, &nw.opt);
     ctn_solution *s = NULL;
+    double t0 = now();
     if (!(rc = setup(&nw)) &&
         !(rc = ctn_solution_alloc(ctx, m->nodes.n, m->elements.n, nw.opt.maxit, &s)) &&
-        !(rc = iterate(&nw, s))) {
+        (s->sum.t_setup = now() - t0, !(rc = iterate(&nw, s)))) {
         finish(&nw, s);
         *out = s;
         s = NULL;
