@@ -137,8 +137,33 @@ static void test_tension_only(void)
     CHECK(ctn_cable2_eval(&p, X0, u0, f, K, &s) == CTN_ERR_DOMAIN);
 }
 
+/* dU/du = f: the energy is the potential of the internal forces (central differences). */
+static void test_energy_gradient(void)
+{
+    unsigned seed = 4242;
+    for (int strain = 0; strain < 2; strain++)
+        for (int trial = 0; trial < 50; trial++) {
+            double X[6], u[6], f[6];
+            for (int k = 0; k < 6; k++) X[k] = urand(&seed, -10, 10);
+            for (int k = 0; k < 6; k++) u[k] = urand(&seed, -0.5, 0.5);
+            ctn_cable_props p = { 3e4, 12.0, (ctn_strain)strain, trial % 2 };
+            ctn_elem_state s, sp, sm;
+            ctn_cable2_eval(&p, X, u, f, NULL, &s);
+            for (int j = 0; j < 6; j++) {
+                double up[6], um[6], fd[6], h = 1e-6;
+                for (int k = 0; k < 6; k++) up[k] = um[k] = u[k];
+                up[j] += h;
+                um[j] -= h;
+                ctn_cable2_eval(&p, X, up, fd, NULL, &sp);
+                ctn_cable2_eval(&p, X, um, fd, NULL, &sm);
+                CHECK_CLOSE((sp.energy - sm.energy) / (2 * h), f[j], 1e-6, 1e-6 * fabs(s.N) + 1e-9);
+            }
+        }
+}
+
 int main(void)
 {
+    test_energy_gradient();
     test_tangent_fd();
     test_objectivity();
     test_axial_laws();

@@ -51,8 +51,11 @@ static void test_paper_cases(void)
         ctn_ctx_create(&ctx);
         ctn_model *m = paper_model(ctx, paper_lengths[c], 20);
         ctn_solution *s = NULL;
+        ctn_solve_options opt;
+        ctn_solve_options_default(&opt);
+        opt.method = CTN_METHOD_NEWTON;             /* the paper's pure Newton */
         CHECK(m != NULL);
-        CHECK(ctn_solve(ctx, m, NULL, &s) == CTN_OK);
+        CHECK(ctn_solve(ctx, m, &opt, &s) == CTN_OK);
         ctn_solve_summary sum;
         ctn_solution_summary(s, &sum);
         CHECK_MSG(sum.reason == CTN_CONVERGED, "S=%g: %s", paper_lengths[c], ctn_reason_name(sum.reason));
@@ -220,7 +223,10 @@ static void test_indefinite(void)
     ctn_model_add_node(m, 2, B, CTN_FIX_ALL);
     CHECK(ctn_model_add_cable(m, 1, 2, "strand", &spec, NULL, NULL) == CTN_OK);
     ctn_solution *s = NULL;
-    CHECK(ctn_solve(ctx, m, NULL, &s) == CTN_OK);
+    ctn_solve_options opt;
+    ctn_solve_options_default(&opt);
+    opt.method = CTN_METHOD_NEWTON;                 /* the paper's pure Newton */
+    CHECK(ctn_solve(ctx, m, &opt, &s) == CTN_OK);
     ctn_solve_summary sum;
     ctn_solution_summary(s, &sum);
     CHECK(sum.reason == CTN_DIVERGED_INDEFINITE);

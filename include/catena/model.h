@@ -41,7 +41,7 @@ typedef struct ctn_cable_spec {
     ctn_cable_shape shape;
     double guess_strain; /* arc shape: the Newton start is the concentric arc of larger
                             radius on which interior elements have this strain (default
-                            1e-3, see docs/format.md); must be > 0 */
+                            1e-3, see docs/format.md); 0 starts from the arc itself */
 } ctn_cable_spec;
 
 /* Create an empty model bound to ctx (errors are recorded there; ctx must outlive it). */
@@ -77,8 +77,24 @@ int ctn_model_add_element(ctn_model *m, int id, int n1, int n2, const char *sect
  * made and should be discarded. */
 int ctn_model_add_cable(ctn_model *m, int a, int b, const char *section,
                         const ctn_cable_spec *spec, int *first_elem, int *last_elem);
-/* Concentrated force F at a node (summed with earlier loads on that node). */
+/* Concentrated force F at a node (summed with earlier loads on that node). Belongs
+ * to the current step (see ctn_model_add_step). */
 int ctn_model_add_load(ctn_model *m, int node, const double F[3]);
+/* Prescribed displacement u of a node's fixed DOFs named in `dofs` (CTN_FIX_*; each
+ * must be fixed). Like loads, increments add up over the steps. */
+int ctn_model_add_displacement(ctn_model *m, int node, unsigned dofs, const double u[3]);
+/* Start a new load step named `name`: the loads, horizontal loads and displacements
+ * added after it are its increments; step k is solved from the state of step k-1, in
+ * `substeps` equal increments (0: the solve options' `steps`). Without any step the
+ * model has one implicit step holding everything. Nodes, elements and cables must be
+ * defined before the first step. */
+int ctn_model_add_step(ctn_model *m, const char *name, int substeps);
+size_t ctn_model_step_count(const ctn_model *m);          /* >= 1 */
+const char *ctn_model_step_name(const ctn_model *m, size_t k); /* "" for the implicit step */
+int ctn_model_step_substeps(const ctn_model *m, size_t k);
+/* Totals at the end of step k (0-based): external nodal forces f and prescribed
+ * displacements u, 3 per node each (either may be NULL). Self-weight is in every step. */
+int ctn_model_step_loads(const ctn_model *m, size_t k, double *f, double *u);
 /* Uniform load q [force/length] per unit horizontal projection (the plane normal to
  * gravity) on elements with ids first..last, along gravity's direction. The projection
  * is taken in the reference geometry (a dead load, as from a deck hung at fixed
@@ -131,8 +147,8 @@ void ctn_model_gravity(const ctn_model *m, double g[3]);
 const char *ctn_model_force_unit(const ctn_model *m);
 const char *ctn_model_length_unit(const ctn_model *m);
 double ctn_model_mpa_factor(const ctn_model *m);
-/* External nodal force vector, 3 per node (concentrated + self-weight + horizontal
- * loads, lumped), written to f (length 3 * node count). */
+/* External nodal force vector at the end of the last step, 3 per node (concentrated
+ * + self-weight + horizontal loads, lumped), written to f (length 3 * node count). */
 int ctn_model_external_forces(const ctn_model *m, double *f);
 /* Check the whole model (called by the solver): sections with weight need gravity,
  * at least one support, ... */

@@ -27,6 +27,17 @@ typedef enum ctn_ordering {
     CTN_ORDER_AMD = 2      /* approximate minimum degree */
 } ctn_ordering;
 
+/* Solution strategy. */
+typedef enum ctn_method {
+    CTN_METHOD_AUTO = 0,      /* globalized Newton: full Newton steps while they lower the
+                                 total potential, else a diagonal shift of the tangent
+                                 (Levenberg-Marquardt) and a backtracking line search on the
+                                 potential; load increments cut back on failure. Solves from
+                                 straight or zero-tension starts and with slack members */
+    CTN_METHOD_NEWTON = 1,    /* pure Newton-Raphson (the paper's): d <- d + dd */
+    CTN_METHOD_ARCLENGTH = 2  /* Crisfield's cylindrical arc-length: traces limit points */
+} ctn_method;
+
 /* Called after every Newton iteration (the iteration log). it = 1, 2, ...;
  * rnorm = |f_ext - f_int| after the step; dnorm = |dd| of the step. */
 typedef void (*ctn_monitor_fn)(void *data, int it, double rnorm, double dnorm);
@@ -35,9 +46,22 @@ typedef void (*ctn_monitor_fn)(void *data, int it, double rnorm, double dnorm);
 typedef struct ctn_solve_options {
     double tol;           /* residual test |r| <= tol * |f_ext| (default 1e-10) */
     double dtol;          /* increment test |dd| <= dtol * (|d| + L_ref), L_ref the
-                             diagonal of the model's bounding box (default 1e-8) */
+                             diagonal of the model's bounding box (default 1e-8).
+                             Both tests must hold, except that the residual test is
+                             waived once |dd| <= 1e3 eps (|d| + L_ref): the Newton
+                             correction is then at the resolution of the coordinates and
+                             the residual at its round-off floor (reported: `floor`) */
     int maxit;            /* most Newton iterations (default 50) */
     ctn_ordering ordering;
+    ctn_method method;    /* default CTN_METHOD_AUTO */
+    int linesearch;       /* CTN_METHOD_NEWTON: backtracking on |r| (default 0) */
+    int steps;            /* load increments per load step (default 1) */
+    int maxcuts;          /* halvings of a failed increment (default -1: 10 for AUTO,
+                             0 for NEWTON) */
+    double arclength;     /* ARCLENGTH: arc radius (displacement norm) per step; 0: that
+                             of the first increment 1/steps of the load (default 0) */
+    int arcsteps;         /* ARCLENGTH: most arc-length steps (default 200) */
+    double lambda_max;    /* ARCLENGTH: stop once the load factor reaches this (default 1) */
     ctn_monitor_fn monitor;  /* NULL: no log */
     void *monitor_data;
 } ctn_solve_options;
@@ -53,8 +77,11 @@ typedef enum ctn_reason {
     CTN_CONVERGED = 1,              /* both residual and increment tests met */
     CTN_DIVERGED_MAXIT = -1,        /* maxit iterations without convergence */
     CTN_DIVERGED_NANORINF = -2,     /* a NaN or Inf appeared; the last finite state is kept */
-    CTN_DIVERGED_INDEFINITE = -3    /* tangent not positive definite (compressed or
+    CTN_DIVERGED_INDEFINITE = -3,   /* tangent not positive definite (compressed or
                                        unrestrained DOF); see fail_node, fail_dir */
+    CTN_DIVERGED_LINESEARCH = -4,   /* no step lowered the potential or the residual */
+    CTN_DIVERGED_ARCLENGTH = -5     /* arc-length: no real root for the load factor after
+                                       cutting the arc */
 } ctn_reason;
 
 /* Name of a reason, e.g. "converged", "tangent not positive definite". */
@@ -73,6 +100,16 @@ typedef struct ctn_solve_summary {
                              a non-positive pivot, else 0 */
     int fail_dir;         /* its direction 0 = x, 1 = y, 2 = z, -1 if none */
     ctn_ordering ordering;/* the ordering used (never AUTO) */
+    size_t step;          /* index of the last load step attempted (0-based) */
+    double load_factor;   /* t reached in that step: 1 when it converged, else the last
+                             converged fraction (arc-length: the load factor) */
+    int cuts;             /* increment halvings over the run */
+    int floor;            /* 1 if convergence was declared with the residual at its
+                             round-off floor, above tol |f_ext| (see dtol) */
+    int preshaped;        /* slack chains placed on the arc of their unstressed length
+                             before the first step (CTN_METHOD_AUTO) */
+    int relaxed;          /* increments that began with a compression-free relaxation
+                             (CTN_METHOD_AUTO from a start with compressed members) */
     size_t ndof;          /* free DOFs */
     size_t nnz_factor;    /* non-zeros of the Cholesky factor */
     double t_setup;       /* wall seconds: DOF map, pattern, scatter map, ordering and
@@ -99,10 +136,11 @@ int ctn_solve(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options *opt,
 void ctn_solution_destroy(ctn_solution **s);
 
 void ctn_solution_summary(const ctn_solution *s, ctn_solve_summary *out);
-/* Residual norm history: [0] before the first step, [k] after step k. *n gets
- * iterations + 1. Owned by the solution. */
+/* Residual norm history over all iterations of all increments: the norm after each
+ * Newton iteration, preceded, for each increment, by its starting residual. *n gets
+ * the count. Owned by the solution. */
 const double *ctn_solution_residual_history(const ctn_solution *s, size_t *n);
-/* Increment norm history: [k-1] = |dd| of step k; *n gets iterations. */
+/* Increment norm history: |alpha dd| of each Newton iteration; *n gets iterations. */
 const double *ctn_solution_increment_history(const ctn_solution *s, size_t *n);
 /* Displacements, 3 per node in model node order. Owned by the solution. */
 const double *ctn_solution_displacements(const ctn_solution *s);
@@ -110,6 +148,21 @@ const double *ctn_solution_displacements(const ctn_solution *s);
 const double *ctn_solution_reactions(const ctn_solution *s);
 /* State of element i (model element order). */
 int ctn_solution_element(const ctn_solution *s, size_t i, ctn_element_state *out);
+
+/* Results per load step (ctn_model_step_count, or the arc-length steps): the same
+ * quantities as above, at the end of step k. A step that did not converge holds its
+ * last converged state. */
+typedef struct ctn_step_result {
+    const char *name;     /* step name ("" for the implicit step; "arc N" for arc-length) */
+    ctn_reason reason;
+    double load_factor;   /* t reached (1 = the whole step) or arc-length load factor */
+    int iterations;       /* Newton iterations spent in the step */
+    const double *d;      /* displacements, 3 per node */
+    const double *react;  /* reactions, 3 per node */
+} ctn_step_result;
+size_t ctn_solution_step_count(const ctn_solution *s);
+int ctn_solution_step(const ctn_solution *s, size_t k, ctn_step_result *out);
+int ctn_solution_step_element(const ctn_solution *s, size_t k, size_t i, ctn_element_state *out);
 
 /* Mid-span sag of generated cable i (ctn_model_cable): the distance, along gravity,
  * from the chord's midpoint to the deformed cable at the point whose horizontal

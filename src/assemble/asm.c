@@ -34,6 +34,7 @@ void ctn_asm_destroy(ctn_asm **a)
     ctn_free(p->rowind);
     ctn_free(p->slot);
     ctn_free(p->props);
+    ctn_free(p->tension_only);
     ctn_free(p);
     *a = NULL;
 }
@@ -73,4 +74,38 @@ int ctn_asm_eval(const ctn_asm *a, const double *d, double *f, double *Kx, size_
         if (Kx) scatter_K(a->slot + e * CTN_ESLOTS, Ke, Kx);
     }
     return CTN_OK;
+}
+
+int ctn_asm_energy(const ctn_asm *a, const double *d, double *U)
+{
+    double sum = 0;
+    for (size_t e = 0; e < a->ne; e++) {
+        double X[CTN_EDOF], u[CTN_EDOF], fe[CTN_EDOF];
+        ctn_elem_state st;
+        ctn_asm_gather(a, e, d, X, u);
+        if (a->ops->eval(&a->props[e], X, u, fe, NULL, &st)) return CTN_ERR_DOMAIN;
+        sum += st.energy;
+    }
+    *U = sum;
+    return CTN_OK;
+}
+
+size_t ctn_asm_count_compressed(const ctn_asm *a, const double *d)
+{
+    size_t n = 0;
+    for (size_t e = 0; e < a->ne; e++) {
+        double X[CTN_EDOF], u[CTN_EDOF], fe[CTN_EDOF];
+        ctn_elem_state st;
+        ctn_cable_props p = a->props[e];
+        p.tension_only = 0;
+        ctn_asm_gather(a, e, d, X, u);
+        if (a->ops->eval(&p, X, u, fe, NULL, &st)) return 0;
+        n += st.N < 0 && !a->tension_only[e];
+    }
+    return n;
+}
+
+void ctn_asm_cut_compression(ctn_asm *a, int on)
+{
+    for (size_t e = 0; e < a->ne; e++) a->props[e].tension_only = on ? 1 : a->tension_only[e];
 }

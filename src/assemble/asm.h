@@ -20,6 +20,7 @@ typedef struct ctn_asm {
     size_t nnz;
     int *slot;                         /* CTN_ESLOTS per element: index into the values, -1 */
     ctn_cable_props *props;            /* per element */
+    unsigned char *tension_only;       /* per element: the material's own flag */
     const ctn_element_ops *ops;
 } ctn_asm;
 
@@ -30,6 +31,15 @@ void ctn_asm_destroy(ctn_asm **a);
  * pattern's order) at displacements d (3 per node). On CTN_ERR_DOMAIN *bad is the index
  * of an element that collapsed to zero length. */
 int ctn_asm_eval(const ctn_asm *a, const double *d, double *f, double *Kx, size_t *bad);
+
+/* Elements of two-way material in compression at d (0 if one collapsed). */
+size_t ctn_asm_count_compressed(const ctn_asm *a, const double *d);
+/* on = 1: every element behaves as tension-only (compression cut off); 0: back to the
+ * materials' own behaviour. */
+void ctn_asm_cut_compression(ctn_asm *a, int on);
+
+/* Total strain energy at displacements d. CTN_ERR_DOMAIN if an element collapsed. */
+int ctn_asm_energy(const ctn_asm *a, const double *d, double *U);
 
 /* Reference coordinates X and displacements u of element e's nodes, from d. */
 void ctn_asm_gather(const ctn_asm *a, size_t e, const double *d, double *X, double *u);

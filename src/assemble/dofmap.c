@@ -26,7 +26,8 @@ int ctn_asm_element_props(ctn_ctx *ctx, ctn_asm *a)
 {
     const ctn_model *m = a->m;
     a->props = ctn_malloc(ctx, a->ne, sizeof(ctn_cable_props));
-    if (!a->props) return CTN_ERR_NOMEM;
+    a->tension_only = ctn_malloc(ctx, a->ne, 1);
+    if (!a->props || !a->tension_only) return CTN_ERR_NOMEM;
     for (size_t e = 0; e < a->ne; e++) {
         const ctn_section *s = &m->sections.v[m->elements.v[e].section];
         const ctn_material *mat = &m->materials.v[s->material];
@@ -34,6 +35,7 @@ int ctn_asm_element_props(ctn_ctx *ctx, ctn_asm *a)
         a->props[e].l0 = m->elements.v[e].l0;
         a->props[e].strain = mat->strain;
         a->props[e].tension_only = mat->tension_only;
+        a->tension_only[e] = (unsigned char)mat->tension_only;
     }
     a->ops = &ctn_cable2_ops;
     return CTN_OK;

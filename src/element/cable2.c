@@ -2,6 +2,7 @@
  *   a = x2 - x1, l = |a|, e = a / l, lambda = l / l0
  *   Green-Lagrange: eps = (lambda^2 - 1)/2, N = EA eps lambda, dN/dl = EA (3 lambda^2 - 1)/(2 l0)
  *   engineering:    eps = lambda - 1,       N = EA eps,        dN/dl = EA / l0
+ *   strain energy U = EA l0 eps^2 / 2 (dU/dl = N for both measures)
  *   f2 = N e = -f1;  K = [[k, -k], [-k, k]],  k = dN/dl e e^T + N/l (I - e e^T)         */
 #include "element/element.h"
 
@@ -22,9 +23,11 @@ static void axial_law(const ctn_cable_props *p, double l, ctn_elem_state *st, do
         st->N = p->EA * st->strain * lam;                     /* A S lambda */
         *dNdl = p->EA * (3.0 * lam * lam - 1.0) / (2.0 * p->l0);
     }
+    st->energy = 0.5 * p->EA * p->l0 * st->strain * st->strain;   /* U = EA l0 eps^2 / 2 */
     st->slack = 0;
     if (p->tension_only && st->N <= 0) {
         st->N = 0;
+        st->energy = 0;
         *dNdl = 0;
         st->slack = 1;
     }

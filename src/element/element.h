@@ -18,6 +18,7 @@ typedef struct ctn_elem_state {
     double l;           /* current length */
     double strain;      /* strain of the element's measure */
     double N;           /* axial tension (true force) */
+    double energy;      /* strain energy EA l0 eps^2 / 2 (0 when slack); dU/dl = N */
     int slack;          /* tension-only element with no force */
 } ctn_elem_state;
 

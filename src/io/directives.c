@@ -161,28 +161,91 @@ static int d_hload(ctn_line *l)
     return rc ? rc : ctn_model_add_hload(l->m, q, first, last);
 }
 
+/* An integer-valued key in [lo, hi]; *out unchanged when absent. */
+static int key_int(ctn_line *l, const char *key, int lo, int hi, int *out)
+{
+    const char *v = ctn_parse_key(l, 1, key);
+    double x;
+    char what[64];
+    snprintf(what, sizeof what, "'%s'", key);
+    if (!v) return CTN_OK;
+    int rc = ctn_parse_num(l, what, v, &x);
+    if (rc) return rc;
+    if (x != (double)(long long)x || x < lo || x > hi)
+        return ctn_parse_error(l, "%s must be an integer from %d to %d (found %.40s)", key, lo, hi, v);
+    *out = (int)x;
+    return CTN_OK;
+}
+
+/* A keyword-valued key: index into words[], *out unchanged when absent. */
+static int key_word(ctn_line *l, const char *key, const char *const *words, int n, int *out)
+{
+    const char *v = ctn_parse_key(l, 1, key);
+    if (!v) return CTN_OK;
+    for (int i = 0; i < n; i++)
+        if (!strcmp(v, words[i])) { *out = i; return CTN_OK; }
+    char b[64];
+    return ctn_parse_error(l, "unknown %s '%s'", key, ctn_parse_show(v, b, sizeof b));
+}
+
 static int d_solve(ctn_line *l)
 {
+    static const char *const orderings[] = { "auto", "natural", "amd" };
+    static const char *const methods[] = { "auto", "newton", "arclength" };
+    static const char *const onoff[] = { "off", "on" };
     ctn_solve_options opt;
-    double maxit = 0;
+    int ord, method, ls;
     ctn_model_solve_options(l->m, &opt);
-    int rc = ctn_parse_positional(l, 0, "solve [tol=T] [dtol=T] [maxit=N] [ordering=auto|natural|amd]");
+    ord = (int)opt.ordering;
+    method = (int)opt.method;
+    ls = opt.linesearch;
+    int rc = ctn_parse_positional(l, 0, "solve [tol=T] [dtol=T] [maxit=N] [method=auto|newton|arclength] ...");
     if (!rc) rc = ctn_parse_key_num(l, 1, "tol", 0, &opt.tol);
     if (!rc) rc = ctn_parse_key_num(l, 1, "dtol", 0, &opt.dtol);
-    const char *mi = rc ? NULL : ctn_parse_key(l, 1, "maxit");
-    if (mi && !(rc = ctn_parse_num(l, "'maxit'", mi, &maxit))) {
-        if (maxit != (int)maxit) return ctn_parse_error(l, "maxit must be an integer (found %.40s)", mi);
-        opt.maxit = (int)maxit;
-    }
-    const char *ord = rc ? NULL : ctn_parse_key(l, 1, "ordering");
-    if (ord) {
-        if (!strcmp(ord, "auto")) opt.ordering = CTN_ORDER_AUTO;
-        else if (!strcmp(ord, "natural")) opt.ordering = CTN_ORDER_NATURAL;
-        else if (!strcmp(ord, "amd")) opt.ordering = CTN_ORDER_AMD;
-        else return ctn_parse_error(l, "unknown ordering '%.40s' (expected auto, natural or amd)", ord);
-    }
+    if (!rc) rc = key_int(l, "maxit", 1, 100000, &opt.maxit);
+    if (!rc) rc = key_word(l, "ordering", orderings, 3, &ord);
+    if (!rc) rc = key_word(l, "method", methods, 3, &method);
+    if (!rc) rc = key_word(l, "linesearch", onoff, 2, &ls);
+    if (!rc) rc = key_int(l, "steps", 1, 100000, &opt.steps);
+    if (!rc) rc = key_int(l, "cutbacks", 0, 60, &opt.maxcuts);
+    if (!rc) rc = ctn_parse_key_num(l, 1, "arclength", 0, &opt.arclength);
+    if (!rc) rc = key_int(l, "arcsteps", 1, 1000000, &opt.arcsteps);
+    if (!rc) rc = ctn_parse_key_num(l, 1, "lambda", 0, &opt.lambda_max);
     if (!rc) rc = ctn_parse_leftovers(l, 1, "solve");
+    opt.ordering = (ctn_ordering)ord;
+    opt.method = (ctn_method)method;
+    opt.linesearch = ls;
     return rc ? rc : ctn_model_set_solve_options(l->m, &opt);
+}
+
+static int d_step(ctn_line *l)
+{
+    int sub = 0;
+    int rc = ctn_parse_positional(l, 1, "step NAME [substeps=N]");
+    if (!rc) {
+        const char *v = ctn_parse_key(l, 2, "substeps");
+        if (v) rc = ctn_parse_int(l, "'substeps'", v, &sub);
+    }
+    if (!rc) rc = ctn_parse_leftovers(l, 2, "step");
+    return rc ? rc : ctn_model_add_step(l->m, l->tok[1], sub);
+}
+
+static int d_displace(ctn_line *l)
+{
+    static const char *const axes[] = { "x", "y", "z" };
+    int id = 0;
+    unsigned dofs = 0;
+    double u[3] = { 0, 0, 0 };
+    int rc = ctn_parse_positional(l, 1, "displace NODE [x=DX] [y=DY] [z=DZ]");
+    if (!rc) rc = ctn_parse_int(l, "the node id", l->tok[1], &id);
+    for (int k = 0; k < 3 && !rc; k++) {
+        if (!ctn_parse_key(l, 2, axes[k])) continue;
+        dofs |= 1u << k;
+        rc = ctn_parse_key_num(l, 2, axes[k], 1, &u[k]);
+    }
+    if (!rc && !dofs) return ctn_parse_error(l, "displace: give at least one of x=, y=, z=");
+    if (!rc) rc = ctn_parse_leftovers(l, 2, "displace");
+    return rc ? rc : ctn_model_add_displacement(l->m, id, dofs, u);
 }
 
 typedef struct directive {
@@ -194,7 +257,7 @@ static const directive directives[] = {
     { "units", d_units },     { "gravity", d_gravity }, { "material", d_material },
     { "section", d_section }, { "node", d_node },       { "element", d_element },
     { "cable", d_cable },     { "load", d_load },       { "hload", d_hload },
-    { "solve", d_solve },
+    { "solve", d_solve },     { "step", d_step },       { "displace", d_displace },
 };
 
 int ctn_parse_directive(ctn_line *l)

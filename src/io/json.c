@@ -60,6 +60,8 @@ static void add_summary(jb *b, cJSON *root, const ctn_model *m, const ctn_soluti
     h = ctn_solution_increment_history(s, &n);
     numbers(b, root, "increment_history", h, n);
     num(b, root, "external_force_norm", s->sum.fext_norm);
+    num(b, root, "load_factor", s->sum.load_factor);
+    num(b, root, "cutbacks", s->sum.cuts);
     cJSON *u = cJSON_AddObjectToObject(root, "units");
     if (!u) { b->ok = 0; return; }
     b->ok &= cJSON_AddStringToObject(u, "force", m->force_unit) != NULL;
@@ -70,7 +72,7 @@ static void add_summary(jb *b, cJSON *root, const ctn_model *m, const ctn_soluti
     }
 }
 
-static void add_nodes(jb *b, cJSON *root, const ctn_model *m, const ctn_solution *s)
+static void add_nodes(jb *b, cJSON *root, const ctn_model *m, const ctn_step_state *s)
 {
     cJSON *a = arr(b, root, "nodes"), *r = arr(b, root, "reactions");
     static const char *xk[] = { "x", "y", "z" }, *uk[] = { "ux", "uy", "uz" }, *fk[] = { "fx", "fy", "fz" };
@@ -88,7 +90,7 @@ static void add_nodes(jb *b, cJSON *root, const ctn_model *m, const ctn_solution
     }
 }
 
-static void add_elements(jb *b, cJSON *root, const ctn_model *m, const ctn_solution *s)
+static void add_elements(jb *b, cJSON *root, const ctn_model *m, const ctn_step_state *s)
 {
     cJSON *a = arr(b, root, "elements");
     for (size_t i = 0; a && b->ok && i < m->elements.n; i++) {
@@ -128,6 +130,24 @@ static void add_cables(jb *b, cJSON *root, const ctn_model *m, const ctn_solutio
     }
 }
 
+/* Every step's state (load steps, or arc-length path points). */
+static void add_steps(jb *b, cJSON *root, const ctn_model *m, const ctn_solution *s)
+{
+    cJSON *a = arr(b, root, "steps");
+    for (size_t k = 0; a && b->ok && k < s->nsteps; k++) {
+        const ctn_step_state *st = &s->steps[k];
+        cJSON *o = item(b, a);
+        if (!o) return;
+        b->ok &= cJSON_AddStringToObject(o, "name", st->name) != NULL;
+        b->ok &= cJSON_AddBoolToObject(o, "converged", st->reason == CTN_CONVERGED) != NULL;
+        b->ok &= cJSON_AddStringToObject(o, "reason", ctn_reason_name(st->reason)) != NULL;
+        num(b, o, "load_factor", st->t);
+        num(b, o, "iterations", st->iterations);
+        add_nodes(b, o, m, st);
+        add_elements(b, o, m, st);
+    }
+}
+
 int ctn_result_json(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s, int pretty,
                     char **json)
 {
@@ -137,9 +157,11 @@ int ctn_result_json(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s, int
     cJSON *root = cJSON_CreateObject();
     if (!root) return ctn_error(ctx, CTN_ERR_NOMEM, "out of memory building JSON");
     add_summary(&b, root, m, s);
-    if (b.ok) add_nodes(&b, root, m, s);
-    if (b.ok) add_elements(&b, root, m, s);
+    const ctn_step_state *last = &s->steps[s->nsteps - 1];
+    if (b.ok) add_nodes(&b, root, m, last);
+    if (b.ok) add_elements(&b, root, m, last);
     if (b.ok) add_cables(&b, root, m, s);
+    if (b.ok && s->nsteps > 1) add_steps(&b, root, m, s);
     if (b.ok && b.finite) *json = pretty ? cJSON_Print(root) : cJSON_PrintUnformatted(root);
     cJSON_Delete(root);
     if (!b.finite) return ctn_error(ctx, CTN_ERR_INVALID, "result holds a NaN or Inf; not written");

@@ -14,10 +14,13 @@
 
 static int all_finite(const ctn_solution *s)
 {
-    for (size_t i = 0; i < 3 * s->nn; i++)
-        if (!isfinite(s->d[i]) || !isfinite(s->react[i])) return 0;
-    for (size_t e = 0; e < s->ne; e++)
-        if (!isfinite(s->elem[e].force) || !isfinite(s->elem[e].length)) return 0;
+    for (size_t k = 0; k < s->nsteps; k++) {
+        const ctn_step_state *st = &s->steps[k];
+        for (size_t i = 0; i < 3 * s->nn; i++)
+            if (!isfinite(st->d[i]) || !isfinite(st->react[i])) return 0;
+        for (size_t e = 0; e < s->ne; e++)
+            if (!isfinite(st->elem[e].force) || !isfinite(st->elem[e].length)) return 0;
+    }
     return 1;
 }
 
@@ -26,7 +29,7 @@ static void nodes_csv(ctn_strbuf *b, const ctn_model *m, const ctn_solution *s)
     ctn_sb_printf(b, "id,x,y,z,ux,uy,uz,fix,rx,ry,rz\n");
     for (size_t i = 0; i < m->nodes.n; i++) {
         const ctn_node *p = &m->nodes.v[i];
-        const double *d = s->d + 3 * i, *r = s->react + 3 * i;
+        const double *d = ctn_solution_displacements(s) + 3 * i, *r = ctn_solution_reactions(s) + 3 * i;
         ctn_sb_printf(b, "%d,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%s%s%s,%.17g,%.17g,%.17g\n",
                       p->id, p->X[0], p->X[1], p->X[2], d[0], d[1], d[2],
                       p->fix & CTN_FIX_X ? "x" : "", p->fix & CTN_FIX_Y ? "y" : "",
@@ -39,7 +42,7 @@ static void elements_csv(ctn_strbuf *b, const ctn_model *m, const ctn_solution *
     ctn_sb_printf(b, "id,node1,node2,l0,length,strain,force,stress,slack\n");
     for (size_t i = 0; i < m->elements.n; i++) {
         const ctn_element *e = &m->elements.v[i];
-        const ctn_element_state *st = &s->elem[i];
+        const ctn_element_state *st = &s->steps[s->nsteps - 1].elem[i];
         ctn_sb_printf(b, "%d,%d,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%d\n", e->id,
                       m->nodes.v[e->node[0]].id, m->nodes.v[e->node[1]].id, e->l0,
                       st->length, st->strain, st->force, st->stress, st->slack);

@@ -13,6 +13,7 @@ struct ctn_chol {
     cholmod_dense *B, *X, *Y, *E;       /* right-hand side and solve2 workspace */
     ctn_ordering ordering;
     double lnz;                         /* non-zeros of L from the analysis */
+    int indefinite;                     /* simplicial LDL' instead of LL' */
 };
 
 static int backend_error(ctn_chol *c, const char *what)
@@ -54,12 +55,20 @@ static int choose_ordering(ctn_chol *c, ctn_ordering ord)
 int ctn_chol_create(ctn_ctx *ctx, size_t n, const int *colptr, const int *rowind,
                     ctn_ordering ord, ctn_chol **out)
 {
+    return ctn_chol_create_ex(ctx, n, colptr, rowind, ord, 0, out);
+}
+
+int ctn_chol_create_ex(ctn_ctx *ctx, size_t n, const int *colptr, const int *rowind,
+                       ctn_ordering ord, int indefinite, ctn_chol **out)
+{
     *out = NULL;
     ctn_chol *c = ctn_calloc(ctx, 1, sizeof(ctn_chol));
     if (!c) return CTN_ERR_NOMEM;
     c->ctx = ctx;
     cholmod_start(&c->cm);
-    c->cm.final_ll = 1;
+    c->indefinite = indefinite != 0;
+    c->cm.final_ll = !c->indefinite;
+    if (c->indefinite) c->cm.supernodal = CHOLMOD_SIMPLICIAL;
     c->cm.quick_return_if_not_posdef = 1;
     c->cm.print = 0;
     c->cm.error_handler = NULL;
@@ -98,8 +107,24 @@ double *ctn_chol_values(ctn_chol *c) { return c->A->x; }
 
 int ctn_chol_factorize(ctn_chol *c, long *fail_col)
 {
+    return ctn_chol_factorize_shifted(c, 0.0, fail_col);
+}
+
+size_t ctn_chol_negative_pivots(const ctn_chol *c)
+{
+    if (!c->L || c->L->is_ll || c->L->is_super || c->L->xtype == CHOLMOD_PATTERN) return 0;
+    const int *Lp = c->L->p;
+    const double *Lx = c->L->x;
+    size_t neg = 0;
+    for (size_t j = 0; j < c->L->n; j++) neg += Lx[Lp[j]] < 0;   /* D(j,j) heads column j */
+    return neg;
+}
+
+int ctn_chol_factorize_shifted(ctn_chol *c, double shift, long *fail_col)
+{
+    double beta[2] = { shift, 0 };
     *fail_col = -1;
-    if (!cholmod_factorize(c->A, c->L, &c->cm) || c->cm.status < CHOLMOD_OK)
+    if (!cholmod_factorize_p(c->A, beta, NULL, 0, c->L, &c->cm) || c->cm.status < CHOLMOD_OK)
         return backend_error(c, "factorization");
     if (c->cm.status == CHOLMOD_NOT_POSDEF) {
         size_t k = c->L->minor;

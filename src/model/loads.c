@@ -2,6 +2,7 @@
 #include "model/model.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 /* Self-weight: w l0 g per element, half to each node (a dead load). */
@@ -19,7 +20,7 @@ static void add_self_weight(const ctn_model *m, double *f)
 
 /* Horizontal loads: q times the element's reference projection on the plane normal to
  * gravity, half to each node, along gravity's direction. */
-static void add_hloads(const ctn_model *m, double *f)
+static void add_hloads(const ctn_model *m, int step, double *f)
 {
     double g = sqrt(m->gravity[0] * m->gravity[0] + m->gravity[1] * m->gravity[1] +
                     m->gravity[2] * m->gravity[2]);
@@ -27,6 +28,7 @@ static void add_hloads(const ctn_model *m, double *f)
     double u[3] = { m->gravity[0] / g, m->gravity[1] / g, m->gravity[2] / g };
     for (size_t h = 0; h < m->hloads.n; h++) {
         const ctn_hload *hl = &m->hloads.v[h];
+        if (hl->step > step) continue;
         for (size_t i = 0; i < m->elements.n; i++) {
             const ctn_element *e = &m->elements.v[i];
             if (e->id < hl->first || e->id > hl->last) continue;
@@ -43,13 +45,62 @@ static void add_hloads(const ctn_model *m, double *f)
     }
 }
 
+size_t ctn_model_step_count(const ctn_model *m) { return !m ? 0 : m->steps.n ? m->steps.n : 1; }
+
+const char *ctn_model_step_name(const ctn_model *m, size_t k)
+{
+    if (!m || k >= m->steps.n) return "";
+    return m->steps.v[k].name;
+}
+
+int ctn_model_step_loads(const ctn_model *m, size_t k, double *f, double *u)
+{
+    if (!m || k >= ctn_model_step_count(m)) return CTN_ERR_INVALID;
+    int step = (int)k + 1;                        /* records of steps <= k + 1 (0: base) */
+    size_t n3 = 3 * m->nodes.n;
+    if (f) {
+        memset(f, 0, n3 * sizeof(double));
+        for (size_t i = 0; i < m->ploads.n; i++)
+            for (int j = 0; j < 3 && m->ploads.v[i].step <= step; j++)
+                f[3 * (size_t)m->ploads.v[i].node + (size_t)j] += m->ploads.v[i].F[j];
+        add_self_weight(m, f);
+        add_hloads(m, step, f);
+    }
+    if (u) {
+        memset(u, 0, n3 * sizeof(double));
+        for (size_t i = 0; i < m->pdisps.n; i++)
+            for (int j = 0; j < 3 && m->pdisps.v[i].step <= step; j++)
+                u[3 * (size_t)m->pdisps.v[i].node + (size_t)j] += m->pdisps.v[i].u[j];
+    }
+    return CTN_OK;
+}
+
 int ctn_model_external_forces(const ctn_model *m, double *f)
 {
     if (!m || !f) return CTN_ERR_INVALID;
-    memcpy(f, m->loads.v, m->nodes.n * 3 * sizeof(double));
-    add_self_weight(m, f);
-    add_hloads(m, f);
+    return ctn_model_step_loads(m, ctn_model_step_count(m) - 1, f, NULL);
+}
+
+int ctn_model_add_step(ctn_model *m, const char *name, int substeps)
+{
+    if (!m) return CTN_ERR_INVALID;
+    if (!name || !*name || strlen(name) >= CTN_NAME_MAX)
+        return ctn_model_error(m, CTN_ERR_MODEL, "step name must have 1 to %d characters", CTN_NAME_MAX - 1);
+    for (size_t i = 0; i < m->steps.n; i++)
+        if (!strcmp(m->steps.v[i].name, name)) return ctn_model_error(m, CTN_ERR_MODEL, "duplicate step '%s'", name);
+    if (substeps < 0 || substeps > 100000)
+        return ctn_model_error(m, CTN_ERR_MODEL, "step '%s': substeps must be between 1 and 100000", name);
+    int rc = CTN_ARRAY_RESERVE(m->ctx, m->steps, 1);
+    if (rc) return rc;
+    ctn_step *st = &m->steps.v[m->steps.n++];
+    snprintf(st->name, sizeof st->name, "%s", name);
+    st->substeps = substeps;
     return CTN_OK;
+}
+
+int ctn_model_step_substeps(const ctn_model *m, size_t k)
+{
+    return m && k < m->steps.n ? m->steps.v[k].substeps : 0;
 }
 
 static int has_weight(const ctn_model *m, int *line)

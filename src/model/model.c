@@ -35,7 +35,9 @@ void ctn_model_destroy(ctn_model **m)
     ctn_free(p->materials.v);
     ctn_free(p->sections.v);
     ctn_free(p->elements.v);
-    ctn_free(p->loads.v);
+    ctn_free(p->ploads.v);
+    ctn_free(p->pdisps.v);
+    ctn_free(p->steps.v);
     ctn_free(p->hloads.v);
     ctn_free(p->cables.v);
     ctn_idmap_free(&p->node_ids);

@@ -42,7 +42,25 @@ typedef struct ctn_hload {
     double q;
     int first, last; /* element ids, inclusive */
     int line;
+    int step;        /* 0: before any step directive, else the step number */
 } ctn_hload;
+
+typedef struct ctn_pload {
+    int node;        /* node index */
+    double F[3];
+    int step;
+} ctn_pload;
+
+typedef struct ctn_pdisp {
+    int node;        /* node index */
+    double u[3];     /* increments of prescribed displacement on fixed DOFs */
+    int step;
+} ctn_pdisp;
+
+typedef struct ctn_step {
+    char name[CTN_NAME_MAX];
+    int substeps;    /* 0: the solve options' steps */
+} ctn_step;
 
 typedef struct ctn_cable {
     int node[2];
@@ -65,8 +83,10 @@ struct ctn_model {
     CTN_ARRAY(ctn_material) materials;
     CTN_ARRAY(ctn_section) sections;
     CTN_ARRAY(ctn_element) elements;
-    CTN_ARRAY(double) loads;        /* 3 per node, kept in step with nodes */
+    CTN_ARRAY(ctn_pload) ploads;
+    CTN_ARRAY(ctn_pdisp) pdisps;
     CTN_ARRAY(ctn_hload) hloads;
+    CTN_ARRAY(ctn_step) steps;      /* empty: one implicit step */
     CTN_ARRAY(ctn_cable) cables;
     ctn_idmap node_ids, element_ids;
     int max_node_id, max_element_id;

@@ -16,8 +16,8 @@ int ctn_model_add_node(ctn_model *m, int id, const double X[3], unsigned fix)
     if (fix & ~(unsigned)CTN_FIX_ALL) return ctn_model_error(m, CTN_ERR_MODEL, "node %d: bad fix flags", id);
     if (m->nodes.n >= (size_t)0x7fffffff / 3)
         return ctn_model_error(m, CTN_ERR_MODEL, "too many nodes");
+    if (m->steps.n) return ctn_model_error(m, CTN_ERR_MODEL, "nodes must be defined before the first step");
     int rc = CTN_ARRAY_RESERVE(m->ctx, m->nodes, 1);
-    if (!rc) rc = CTN_ARRAY_RESERVE(m->ctx, m->loads, 3);
     if (!rc) rc = ctn_idmap_put(m->ctx, &m->node_ids, id, (int)m->nodes.n);
     if (rc) return rc;
     ctn_node *p = &m->nodes.v[m->nodes.n++];
@@ -26,8 +26,6 @@ int ctn_model_add_node(ctn_model *m, int id, const double X[3], unsigned fix)
     memset(p->guess, 0, sizeof p->guess);
     p->fix = fix;
     p->line = m->line;
-    memset(m->loads.v + m->loads.n, 0, 3 * sizeof(double));
-    m->loads.n += 3;
     if (id > m->max_node_id) m->max_node_id = id;
     return CTN_OK;
 }
@@ -56,6 +54,7 @@ int ctn_model_add_element(ctn_model *m, int id, int n1, int n2, const char *sect
     int a, b, rc;
     if ((rc = node_index(m, n1, &a)) || (rc = node_index(m, n2, &b))) return rc;
     if (a == b) return ctn_model_error(m, CTN_ERR_MODEL, "element %d connects node %d to itself", id, n1);
+    if (m->steps.n) return ctn_model_error(m, CTN_ERR_MODEL, "elements must be defined before the first step");
     int sec = section ? ctn_model_find_section(m, section) : -1;
     if (sec < 0)
         return ctn_model_error(m, CTN_ERR_MODEL, "element %d: undefined section '%s'", id, section ? section : "");
@@ -84,7 +83,28 @@ int ctn_model_add_load(ctn_model *m, int node, const double F[3])
     int a, rc;
     if ((rc = node_index(m, node, &a))) return rc;
     if (!finite3(F)) return ctn_model_error(m, CTN_ERR_MODEL, "load on node %d must be finite", node);
-    for (int k = 0; k < 3; k++) m->loads.v[3 * a + k] += F[k];
+    if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->ploads, 1))) return rc;
+    ctn_pload *p = &m->ploads.v[m->ploads.n++];
+    p->node = a;
+    memcpy(p->F, F, sizeof p->F);
+    p->step = (int)m->steps.n;
+    return CTN_OK;
+}
+
+int ctn_model_add_displacement(ctn_model *m, int node, unsigned dofs, const double u[3])
+{
+    if (!m || !u) return CTN_ERR_INVALID;
+    int a, rc;
+    if ((rc = node_index(m, node, &a))) return rc;
+    if (!finite3(u)) return ctn_model_error(m, CTN_ERR_MODEL, "displacement of node %d must be finite", node);
+    for (int k = 0; k < 3; k++)
+        if ((dofs >> k & 1u) && !(m->nodes.v[a].fix >> k & 1u))
+            return ctn_model_error(m, CTN_ERR_MODEL, "node %d: %c is not fixed; only fixed DOFs take a prescribed displacement", node, "xyz"[k]);
+    if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->pdisps, 1))) return rc;
+    ctn_pdisp *p = &m->pdisps.v[m->pdisps.n++];
+    p->node = a;
+    for (int k = 0; k < 3; k++) p->u[k] = dofs >> k & 1u ? u[k] : 0.0;
+    p->step = (int)m->steps.n;
     return CTN_OK;
 }
 
@@ -100,5 +120,6 @@ int ctn_model_add_hload(ctn_model *m, double q, int first, int last)
     h->first = first;
     h->last = last;
     h->line = m->line;
+    h->step = (int)m->steps.n;
     return CTN_OK;
 }

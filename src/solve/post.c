@@ -9,7 +9,7 @@ static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + 
 /* Current position of node index i. */
 static void current(const ctn_model *m, const ctn_solution *s, int i, double x[3])
 {
-    for (int k = 0; k < 3; k++) x[k] = m->nodes.v[i].X[k] + s->d[3 * (size_t)i + (size_t)k];
+    for (int k = 0; k < 3; k++) x[k] = m->nodes.v[i].X[k] + ctn_solution_displacements(s)[3 * (size_t)i + (size_t)k];
 }
 
 /* Unit vectors: g (along gravity, or 0) and h (the direction along which "mid-span"

@@ -1,33 +1,62 @@
-/* The solution object: allocation and accessors. */
+/* The solution object: per-step states, histories and accessors. The accessors without
+ * a step refer to the last step. */
+#include "model/model.h"
 #include "solve/solution.h"
 
-int ctn_solution_alloc(ctn_ctx *ctx, size_t nn, size_t ne, int maxit, ctn_solution **out)
+#include <stdio.h>
+
+int ctn_solution_create(ctn_ctx *ctx, size_t nn, size_t ne, ctn_solution **out)
 {
-    ctn_solution *s = ctn_calloc(ctx, 1, sizeof(ctn_solution));
-    *out = NULL;
-    if (!s) return CTN_ERR_NOMEM;
-    s->nn = nn;
-    s->ne = ne;
-    s->d = ctn_calloc(ctx, 3 * nn, sizeof(double));
-    s->react = ctn_calloc(ctx, 3 * nn, sizeof(double));
-    s->elem = ctn_calloc(ctx, ne, sizeof(ctn_element_state));
-    s->rhist = ctn_calloc(ctx, (size_t)maxit + 1, sizeof(double));
-    s->dhist = ctn_calloc(ctx, (size_t)maxit + 1, sizeof(double));
-    if (!s->d || !s->react || !s->elem || !s->rhist || !s->dhist) {
-        ctn_solution_destroy(&s);
-        return CTN_ERR_NOMEM;
-    }
-    s->sum.fail_dir = -1;
-    *out = s;
+    *out = ctn_calloc(ctx, 1, sizeof(ctn_solution));
+    if (!*out) return CTN_ERR_NOMEM;
+    (*out)->ctx = ctx;
+    (*out)->nn = nn;
+    (*out)->ne = ne;
+    (*out)->sum.fail_dir = -1;
     return CTN_OK;
+}
+
+int ctn_solution_add_step(ctn_solution *s, const char *name, size_t *k)
+{
+    int rc = ctn_array_reserve(s->ctx, (void **)&s->steps, &s->capsteps, s->nsteps + 1, sizeof *s->steps);
+    if (rc) return rc;
+    ctn_step_state *st = &s->steps[s->nsteps];
+    snprintf(st->name, sizeof st->name, "%s", name ? name : "");
+    st->reason = CTN_DIVERGED_MAXIT;
+    st->t = 0;
+    st->iterations = 0;
+    st->d = ctn_calloc(s->ctx, 3 * s->nn, sizeof(double));
+    st->react = ctn_calloc(s->ctx, 3 * s->nn, sizeof(double));
+    st->elem = ctn_calloc(s->ctx, s->ne, sizeof(ctn_element_state));
+    s->nsteps++;                               /* counted even if partial: freed by destroy */
+    if (!st->d || !st->react || !st->elem) return CTN_ERR_NOMEM;
+    *k = s->nsteps - 1;
+    return CTN_OK;
+}
+
+int ctn_solution_push_residual(ctn_solution *s, double r)
+{
+    int rc = ctn_array_reserve(s->ctx, (void **)&s->rhist, &s->capr, s->nr + 1, sizeof(double));
+    if (!rc) s->rhist[s->nr++] = r;
+    return rc;
+}
+
+int ctn_solution_push_increment(ctn_solution *s, double d)
+{
+    int rc = ctn_array_reserve(s->ctx, (void **)&s->dhist, &s->capd, s->nd + 1, sizeof(double));
+    if (!rc) s->dhist[s->nd++] = d;
+    return rc;
 }
 
 void ctn_solution_destroy(ctn_solution **s)
 {
     if (!s || !*s) return;
-    ctn_free((*s)->d);
-    ctn_free((*s)->react);
-    ctn_free((*s)->elem);
+    for (size_t k = 0; k < (*s)->nsteps; k++) {
+        ctn_free((*s)->steps[k].d);
+        ctn_free((*s)->steps[k].react);
+        ctn_free((*s)->steps[k].elem);
+    }
+    ctn_free((*s)->steps);
     ctn_free((*s)->rhist);
     ctn_free((*s)->dhist);
     ctn_free(*s);
@@ -41,22 +70,47 @@ void ctn_solution_summary(const ctn_solution *s, ctn_solve_summary *out)
 
 const double *ctn_solution_residual_history(const ctn_solution *s, size_t *n)
 {
-    if (n) *n = s ? s->nhist + 1 : 0;
+    if (n) *n = s ? s->nr : 0;
     return s ? s->rhist : NULL;
 }
 
 const double *ctn_solution_increment_history(const ctn_solution *s, size_t *n)
 {
-    if (n) *n = s ? s->nhist : 0;
+    if (n) *n = s ? s->nd : 0;
     return s ? s->dhist : NULL;
 }
 
-const double *ctn_solution_displacements(const ctn_solution *s) { return s ? s->d : NULL; }
-const double *ctn_solution_reactions(const ctn_solution *s) { return s ? s->react : NULL; }
+static const ctn_step_state *last(const ctn_solution *s)
+{
+    return s && s->nsteps ? &s->steps[s->nsteps - 1] : NULL;
+}
+
+const double *ctn_solution_displacements(const ctn_solution *s) { return last(s) ? last(s)->d : NULL; }
+const double *ctn_solution_reactions(const ctn_solution *s) { return last(s) ? last(s)->react : NULL; }
 
 int ctn_solution_element(const ctn_solution *s, size_t i, ctn_element_state *out)
 {
-    if (!s || !out || i >= s->ne) return CTN_ERR_INVALID;
-    *out = s->elem[i];
+    return s ? ctn_solution_step_element(s, s->nsteps - 1, i, out) : CTN_ERR_INVALID;
+}
+
+size_t ctn_solution_step_count(const ctn_solution *s) { return s ? s->nsteps : 0; }
+
+int ctn_solution_step(const ctn_solution *s, size_t k, ctn_step_result *out)
+{
+    if (!s || !out || k >= s->nsteps) return CTN_ERR_INVALID;
+    const ctn_step_state *st = &s->steps[k];
+    out->name = st->name;
+    out->reason = st->reason;
+    out->load_factor = st->t;
+    out->iterations = st->iterations;
+    out->d = st->d;
+    out->react = st->react;
+    return CTN_OK;
+}
+
+int ctn_solution_step_element(const ctn_solution *s, size_t k, size_t i, ctn_element_state *out)
+{
+    if (!s || !out || k >= s->nsteps || i >= s->ne) return CTN_ERR_INVALID;
+    *out = s->steps[k].elem[i];
     return CTN_OK;
 }

@@ -1,20 +1,34 @@
-/* Internal: the solution object. */
+/* Internal: the solution object: per-step states and the iteration history. */
 #ifndef CTN_SOLVE_SOLUTION_H
 #define CTN_SOLVE_SOLUTION_H
 
 #include "catena/solve.h"
 #include "core/ctx.h"
 
-struct ctn_solution {
-    ctn_solve_summary sum;
-    size_t nn, ne;
+typedef struct ctn_step_state {
+    char name[64];
+    ctn_reason reason;
+    double t;                  /* load fraction reached, or arc-length load factor */
+    int iterations;
     double *d;                 /* 3 nn displacements */
     double *react;             /* 3 nn reactions */
     ctn_element_state *elem;   /* ne */
-    double *rhist, *dhist;     /* maxit + 1 and maxit entries */
-    size_t nhist;              /* iterations recorded */
+} ctn_step_state;
+
+struct ctn_solution {
+    ctn_ctx *ctx;
+    ctn_solve_summary sum;
+    size_t nn, ne;
+    ctn_step_state *steps;
+    size_t nsteps, capsteps;
+    double *rhist, *dhist;     /* residual and increment norms */
+    size_t nr, nd, capr, capd;
 };
 
-int ctn_solution_alloc(ctn_ctx *ctx, size_t nn, size_t ne, int maxit, ctn_solution **out);
+int ctn_solution_create(ctn_ctx *ctx, size_t nn, size_t ne, ctn_solution **out);
+/* Append a step state (arrays zeroed); *k gets its index. */
+int ctn_solution_add_step(ctn_solution *s, const char *name, size_t *k);
+int ctn_solution_push_residual(ctn_solution *s, double r);
+int ctn_solution_push_increment(ctn_solution *s, double d);
 
 #endif

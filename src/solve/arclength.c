@@ -1,0 +1,200 @@
+/* Crisfield's cylindrical arc-length method for one load pattern F (the loads of the
+ * first step): find (d, lambda) with f_int(d) = lambda F on the path, steps of constant
+ * displacement length |Delta u| = ds. The tangent may be indefinite past a limit point,
+ * so the engine factorizes LDL' here.
+ *   predictor:  K du_t = F,  Delta lambda = +-ds/|du_t| (sign: along the previous step)
+ *   corrector:  K du_r = r,  K du_t = F,  Delta u' = Delta u + du_r + dl du_t with
+ *               |Delta u'| = ds: a dl^2 + b dl + c = 0, the root closer to Delta u. */
+#include "solve/engine.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+typedef struct arc {
+    ctn_engine *e;
+    ctn_solution *s;
+    double *d, *d0;            /* current state, state at the step start (3 nn) */
+    double *du, *ut, *ur, *F;  /* ndof: Delta u, du_t, du_r, load pattern */
+    double *du_prev;           /* ndof: Delta u of the previous converged step */
+    double lambda, ds, fref;
+} arc;
+
+static int solve_rhs(arc *a, const double *rhs, double *x, int *ok)
+{
+    long col;
+    int rc = ctn_engine_factor(a->e, 0.0, ok, &col);
+    if (rc || !*ok) return rc;
+    return ctn_engine_solve(a->e, rhs, x);
+}
+
+/* d = d0 + du on free DOFs; residual at lambda. */
+static int place(arc *a, double lambda, double *rn)
+{
+    ctn_engine *e = a->e;
+    memcpy(a->d, a->d0, e->n3 * sizeof(double));
+    ctn_engine_axpy(e, a->d, 1.0, a->du);
+    for (size_t i = 0; i < e->n3; i++) e->fext[i] = lambda * e->f1[i];
+    return ctn_engine_residual(e, a->d, 1, rn);
+}
+
+/* Root of the constraint closest in direction to the current Delta u. */
+static int constraint_root(arc *a, double *dl)
+{
+    size_t n = a->e->ndof;
+    double A = ctn_dot(a->ut, a->ut, n), B = 0, C = -a->ds * a->ds, best = -INFINITY;
+    for (size_t i = 0; i < n; i++) {
+        double v = a->du[i] + a->ur[i];
+        B += 2 * a->ut[i] * v;
+        C += v * v;
+    }
+    double disc = B * B - 4 * A * C;
+    if (!(disc >= 0) || !(A > 0)) return 0;
+    double q = -0.5 * (B + copysign(sqrt(disc), B)), roots[2] = { q / A, q != 0 ? C / q : 0 };
+    for (int k = 0; k < 2; k++) {                 /* maximize Delta u . Delta u' */
+        double dot = 0;
+        for (size_t i = 0; i < n; i++) dot += a->du[i] * (a->du[i] + a->ur[i] + roots[k] * a->ut[i]);
+        if (dot > best) { best = dot; *dl = roots[k]; }
+    }
+    return 1;
+}
+
+/* One arc step from d0; *ok = 1 when converged (d, lambda updated). */
+static int arc_step(arc *a, int first, int *ok)
+{
+    ctn_engine *e = a->e;
+    size_t n = e->ndof;
+    double rn, lam;
+    memset(a->du, 0, n * sizeof(double));
+    int rc = place(a, a->lambda, &rn);            /* K at d0 */
+    if (rc || (rc = solve_rhs(a, a->F, a->ut, ok)) || !*ok) return rc == CTN_ERR_DOMAIN ? CTN_OK : rc;
+    double sign = first ? 1.0 : (ctn_dot(a->du_prev, a->ut, n) >= 0 ? 1.0 : -1.0);
+    double dl = sign * a->ds / ctn_norm(a->ut, n);
+    for (size_t i = 0; i < n; i++) a->du[i] = dl * a->ut[i];
+    lam = a->lambda + dl;
+    *ok = 0;
+    for (int it = 1; it <= e->opt.maxit; it++) {
+        if ((rc = place(a, lam, &rn))) return rc == CTN_ERR_DOMAIN ? CTN_OK : rc;
+        if ((rc = ctn_engine_record(e, a->s, rn, it == 1 ? a->ds : fabs(dl)))) return rc;
+        if (rn <= e->opt.tol * a->fref && it > 1) { *ok = 1; break; }
+        int def;
+        if ((rc = solve_rhs(a, e->r, a->ur, &def)) || !def) return rc;
+        if ((rc = ctn_engine_solve(e, a->F, a->ut))) return rc;
+        if (!constraint_root(a, &dl)) return CTN_OK;
+        for (size_t i = 0; i < n; i++) a->du[i] += a->ur[i] + dl * a->ut[i];
+        lam += dl;
+    }
+    if (*ok) {
+        a->lambda = lam;
+        memcpy(a->du_prev, a->du, n * sizeof(double));
+    }
+    return CTN_OK;
+}
+
+static int record_state(arc *a, size_t count)
+{
+    char name[32];
+    size_t k;
+    snprintf(name, sizeof name, "arc %zu", count);
+    int rc = ctn_solution_add_step(a->s, name, &k);
+    if (rc) return rc;
+    ctn_step_state *st = &a->s->steps[k];
+    st->reason = CTN_CONVERGED;
+    st->t = a->lambda;
+    memcpy(st->d, a->d, a->e->n3 * sizeof(double));
+    for (size_t i = 0; i < a->e->n3; i++) a->e->fext[i] = a->lambda * a->e->f1[i];
+    ctn_engine_fill_step(a->e, a->s, k, a->d);
+    return CTN_OK;
+}
+
+static int check_model(const ctn_engine *e)
+{
+    if (ctn_model_step_count(e->m) > 1)
+        return ctn_error(e->ctx, CTN_ERR_MODEL, "arc-length traces one load pattern; the model has %zu steps", ctn_model_step_count(e->m));
+    for (size_t i = 0; i < e->n3; i++)
+        if (e->p1[i] != 0)
+            return ctn_error(e->ctx, CTN_ERR_MODEL, "arc-length does not take prescribed displacements (node %d)", e->m->nodes.v[i / 3].id);
+    return CTN_OK;
+}
+
+static int alloc_arc(arc *a)
+{
+    size_t n = a->e->ndof;
+    double **v[] = { &a->du, &a->ut, &a->ur, &a->F, &a->du_prev };
+    for (size_t i = 0; i < sizeof v / sizeof *v; i++)
+        if (!(*v[i] = ctn_calloc(a->e->ctx, n, sizeof(double)))) return CTN_ERR_NOMEM;
+    a->d0 = ctn_calloc(a->e->ctx, a->e->n3, sizeof(double));
+    return a->d0 ? CTN_OK : CTN_ERR_NOMEM;
+}
+
+static void free_arc(arc *a)
+{
+    double *v[] = { a->du, a->ut, a->ur, a->F, a->du_prev, a->d0 };
+    for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
+}
+
+/* Arc radius: given, or lambda_max/steps of the first linear step. */
+static int initial_radius(arc *a)
+{
+    if (a->e->opt.arclength > 0) {
+        a->ds = a->e->opt.arclength;
+        return CTN_OK;
+    }
+    double rn;
+    int ok, rc = place(a, 0.0, &rn);
+    if (!rc) rc = solve_rhs(a, a->F, a->ut, &ok);
+    if (rc) return rc;
+    if (!ok) return ctn_error(a->e->ctx, CTN_ERR_MODEL, "arc-length: the initial tangent is singular");
+    a->ds = fabs(a->e->opt.lambda_max) * ctn_norm(a->ut, a->e->ndof) / a->e->opt.steps;
+    return CTN_OK;
+}
+
+static int trace(arc *a)
+{
+    ctn_engine *e = a->e;
+    ctn_solve_summary *sum = &a->s->sum;
+    size_t count = 0;
+    int cuts = 0, rc = CTN_OK;
+    sum->reason = CTN_DIVERGED_MAXIT;
+    while (count < (size_t)e->opt.arcsteps) {
+        int ok;
+        memcpy(a->d0, a->d, e->n3 * sizeof(double));
+        if ((rc = arc_step(a, count == 0, &ok))) break;
+        if (!ok) {
+            memcpy(a->d, a->d0, e->n3 * sizeof(double));
+            if (cuts++ >= e->opt.maxcuts) { sum->reason = CTN_DIVERGED_ARCLENGTH; break; }
+            sum->cuts++;
+            a->ds *= 0.5;
+            continue;
+        }
+        if ((rc = record_state(a, ++count))) break;
+        if (a->lambda / e->opt.lambda_max >= 1) { sum->reason = CTN_CONVERGED; break; }
+    }
+    sum->load_factor = a->lambda;
+    if (!rc && count == 0) rc = record_state(a, 0);   /* keep the starting state */
+    if (!rc) sum->step = a->s->nsteps - 1;
+    return rc;
+}
+
+int ctn_arclength_run(ctn_engine *e, ctn_solution *s, double *d)
+{
+    arc a;
+    memset(&a, 0, sizeof a);
+    a.e = e;
+    a.s = s;
+    a.d = d;
+    ctn_model_step_loads(e->m, 0, e->f1, e->p1);
+    memset(e->f0, 0, e->n3 * sizeof(double));
+    int rc = check_model(e);
+    if (!rc) rc = alloc_arc(&a);
+    if (!rc) {
+        for (size_t i = 0; i < e->n3; i++)
+            if (e->a->eq[i] >= 0) a.F[e->a->eq[i]] = e->f1[i];
+        a.fref = ctn_norm(a.F, e->ndof);
+        if (!(a.fref > 0)) rc = ctn_error(e->ctx, CTN_ERR_MODEL, "arc-length needs a load on free DOFs");
+    }
+    if (!rc) rc = initial_radius(&a);
+    if (!rc) rc = trace(&a);
+    free_arc(&a);
+    return rc;
+}

@@ -1,0 +1,227 @@
+/* Newton corrector at a fixed load parameter.
+ *   pure (CTN_METHOD_NEWTON):  K dd = r, d <- d + dd (the paper's), optionally with a
+ *                              backtracking line search on |r|;
+ *   globalized (CTN_METHOD_AUTO): (K + mu I) dd = r with mu = 0 while K is positive
+ *                              definite and full steps lower the total potential;
+ *                              otherwise mu grows (Levenberg-Marquardt) and a
+ *                              backtracking (Armijo) line search on the potential picks
+ *                              the step. The residual is never modified, so the converged
+ *                              equilibrium does not depend on mu or the path. */
+#include "solve/engine.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#define LS_HALVINGS 30
+#define ARMIJO 1e-4
+#define CTN_NONMONOTONE 8   /* memory of the non-monotone acceptance test */
+#define CTN_FLOOR (1e3 * DBL_EPSILON)  /* |dd| / (|d| + L_ref) below which the
+                                         residual cannot fall further: round-off */
+
+int ctn_engine_record(ctn_engine *e, ctn_solution *s, double rnorm, double dnorm)
+{
+    int rc = ctn_solution_push_residual(s, rnorm);
+    if (!rc) rc = ctn_solution_push_increment(s, dnorm);
+    if (rc) return rc;
+    s->sum.iterations++;
+    s->sum.residual = rnorm;
+    s->sum.increment = dnorm;
+    if (e->opt.monitor) e->opt.monitor(e->opt.monitor_data, s->sum.iterations, rnorm, dnorm);
+    return CTN_OK;
+}
+
+typedef struct corrector {
+    ctn_engine *e;
+    ctn_solution *s;
+    double *d;
+    double rn;          /* |r| at d */
+    double pi;          /* potential at d (globalized only) */
+    double mu, nu;      /* Levenberg-Marquardt shift and its growth factor */
+    double past[CTN_NONMONOTONE]; /* potentials of the last accepted iterates */
+    int npast;
+    int globalized;
+    int accepted;       /* the last iteration moved d */
+} corrector;
+
+/* Largest diagonal entry of the assembled tangent (the last row of each column). */
+static double max_diag(const ctn_engine *e)
+{
+    const double *Kx = ctn_chol_values(e->ch);
+    double m = 0;
+    for (size_t c = 0; c < e->ndof; c++) m = fmax(m, Kx[e->a->colptr[c + 1] - 1]);
+    return m > 0 ? m : e->kscale;
+}
+
+/* Raise the shift after a failure (Nielsen: mu *= nu, nu *= 2). */
+static void raise_mu(corrector *c)
+{
+    if (c->mu == 0) {
+        c->mu = 1e-6 * max_diag(c->e);
+        c->nu = 2;
+    } else {
+        c->mu *= c->nu;
+        c->nu *= 2;
+    }
+}
+
+/* Factorize K + mu I; the globalized corrector raises mu until it is definite. */
+static int factor(corrector *c, int *ok)
+{
+    for (;;) {
+        long col;
+        int rc = ctn_engine_factor(c->e, c->mu, ok, &col);
+        if (rc || *ok) return rc;
+        if (!c->globalized || c->mu > 1e12 * c->e->kscale) {
+            c->s->sum.fail_node = c->e->m->nodes.v[c->e->a->dof_node[col]].id;
+            c->s->sum.fail_dir = c->e->a->dof_dir[col];
+            return CTN_OK;
+        }
+        raise_mu(c);
+    }
+}
+
+/* d = dsave + alpha dd and its residual (with K); *ok = 0 if an element collapsed. */
+static int trial(corrector *c, double alpha, double *rn, int *ok)
+{
+    ctn_engine *e = c->e;
+    memcpy(c->d, e->dsave, e->n3 * sizeof(double));
+    ctn_engine_axpy(e, c->d, alpha, e->dd);
+    int rc = ctn_engine_residual(e, c->d, 1, rn);
+    *ok = rc != CTN_ERR_DOMAIN;
+    return rc == CTN_ERR_DOMAIN ? CTN_OK : rc;
+}
+
+/* Pure Newton, optionally with backtracking on |r|: the accepted alpha, or 0. */
+static int newton_search(corrector *c, double *alpha, double *rn)
+{
+    int ok, rc, halvings = c->e->opt.linesearch ? LS_HALVINGS : 0;
+    *alpha = 1;
+    for (int h = 0; h <= halvings; h++, *alpha *= 0.5) {
+        if ((rc = trial(c, *alpha, rn, &ok))) return rc;
+        if (ok && (!c->e->opt.linesearch || *rn <= (1 - ARMIJO * *alpha) * c->rn)) return CTN_OK;
+    }
+    *alpha = 0;
+    return CTN_OK;
+}
+
+/* Remember an accepted potential (ring buffer) and return the reference: the largest
+ * of the last CTN_NONMONOTONE (Grippo-Lampariello-Lucidi), so that Newton's natural
+ * non-monotone first steps are not rejected. */
+static void remember(corrector *c, double pi)
+{
+    c->past[c->npast++ % CTN_NONMONOTONE] = pi;
+}
+
+static double reference(const corrector *c)
+{
+    double r = c->pi;
+    int n = c->npast < CTN_NONMONOTONE ? c->npast : CTN_NONMONOTONE;
+    for (int i = 0; i < n; i++) r = fmax(r, c->past[i]);
+    return r;
+}
+
+/* Levenberg-Marquardt step with the gain ratio rho = actual / predicted decrease of the
+ * potential, predicted = (dd.r + mu |dd|^2) / 2. Accept if the potential falls below the
+ * non-monotone reference (or, at round-off, if |r| falls while the potential does not
+ * rise); mu follows Nielsen's rule on the monotone ratio. */
+static int lm_step(corrector *c, double *alpha, double *rn, double *pi)
+{
+    ctn_engine *e = c->e;
+    double dd2 = ctn_dot(e->dd, e->dd, e->ndof);
+    double pred = 0.5 * (ctn_dot(e->r, e->dd, e->ndof) + c->mu * dd2);
+    int ok, rc = trial(c, 1.0, rn, &ok);
+    *alpha = 0;
+    if (rc || !ok) return rc;
+    if ((rc = ctn_engine_potential(e, c->d, pi)) == CTN_ERR_DOMAIN) return CTN_OK;
+    if (rc) return rc;
+    double noise = 1e-12 * fabs(c->pi), rho = pred > 0 ? (c->pi - *pi) / pred : -1;
+    if (*pi < reference(c) || (*rn < c->rn && *pi <= c->pi + noise)) {
+        if (rho > 0) {
+            double f = 1 - pow(2 * fmin(rho, 1) - 1, 3);
+            c->mu *= f > 1.0 / 3 ? f : 1.0 / 3;
+            if (c->mu < 1e-14 * e->kscale) c->mu = 0; /* plain Newton from here */
+            c->nu = 2;
+        }
+        remember(c, *pi);
+        *alpha = 1;
+    }
+    return CTN_OK;
+}
+
+/* One Newton iteration: factor, solve, accept or reject. *why: 0 or a stop reason. */
+static int iteration(corrector *c, ctn_reason *why)
+{
+    ctn_engine *e = c->e;
+    int ok, rc = factor(c, &ok);
+    double alpha, rn = 0, pi = 0;
+    *why = 0;
+    c->accepted = 0;
+    if (rc) return rc;
+    if (!ok) { *why = CTN_DIVERGED_INDEFINITE; return CTN_OK; }
+    if ((rc = ctn_engine_solve(e, e->r, e->dd))) return rc;
+    if (!isfinite(ctn_norm(e->dd, e->ndof))) { *why = CTN_DIVERGED_NANORINF; return CTN_OK; }
+    memcpy(e->dsave, c->d, e->n3 * sizeof(double));
+    rc = c->globalized ? lm_step(c, &alpha, &rn, &pi) : newton_search(c, &alpha, &rn);
+    if (rc) return rc;
+    if (alpha == 0) {                            /* back to the start of the iteration */
+        memcpy(c->d, e->dsave, e->n3 * sizeof(double));
+        if ((rc = ctn_engine_residual(e, c->d, 1, &c->rn))) return rc == CTN_ERR_DOMAIN ? CTN_OK : rc;
+        if (!c->globalized) { *why = e->opt.linesearch ? CTN_DIVERGED_LINESEARCH : CTN_DIVERGED_NANORINF; return CTN_OK; }
+        raise_mu(c);
+        return ctn_engine_record(e, c->s, c->rn, 0.0);
+    }
+    c->rn = rn;
+    c->pi = pi;
+    c->accepted = 1;
+    return ctn_engine_record(e, c->s, rn, alpha * ctn_norm(e->dd, e->ndof));
+}
+
+static int correct(ctn_engine *e, ctn_solution *s, double *d, ctn_reason *reason)
+{
+    corrector c;
+    memset(&c, 0, sizeof c);
+    c.e = e;
+    c.s = s;
+    c.d = d;
+    c.nu = 2;
+    c.globalized = e->opt.method == CTN_METHOD_AUTO;
+    *reason = CTN_DIVERGED_NANORINF;
+    int rc = ctn_engine_residual(e, d, 1, &c.rn);
+    if (!rc && c.globalized) rc = ctn_engine_potential(e, d, &c.pi);
+    if (!rc && c.globalized) remember(&c, c.pi);
+    if (rc) return rc == CTN_ERR_DOMAIN ? CTN_OK : rc;
+    if ((rc = ctn_solution_push_residual(s, c.rn))) return rc;
+    for (int it = 1; it <= e->opt.maxit; it++) {
+        ctn_reason why;
+        if ((rc = iteration(&c, &why))) return rc;
+        if (why) { *reason = why; return CTN_OK; }
+        double dnorm = s->dhist[s->nd - 1], size = ctn_norm(d, e->n3) + e->lref;
+        int at_floor = dnorm <= CTN_FLOOR * size;        /* dd at coordinate resolution */
+        if (c.accepted && (c.rn <= e->opt.tol * ctn_engine_fref(e) || at_floor) &&
+            dnorm <= e->opt.dtol * size) {
+            *reason = CTN_CONVERGED;
+            if (c.rn > e->opt.tol * ctn_engine_fref(e)) s->sum.floor = 1;
+            return CTN_OK;
+        }
+    }
+    *reason = CTN_DIVERGED_MAXIT;
+    return CTN_OK;
+}
+
+/* Globalized: a start with compressed two-way members (a straight or unstressed start
+ * of a cable longer than its chord) is first relaxed with compression cut off, so no
+ * compression energy barrier holds it on the chord; then the real materials take over
+ * from that state. The final iterations use the true residual, so the equilibrium is
+ * not biased by the first phase. */
+int ctn_newton_correct(ctn_engine *e, ctn_solution *s, double *d, ctn_reason *reason)
+{
+    if (e->opt.method != CTN_METHOD_AUTO || !ctn_asm_count_compressed(e->a, d))
+        return correct(e, s, d, reason);
+    ctn_asm_cut_compression(e->a, 1);
+    int rc = correct(e, s, d, reason);
+    ctn_asm_cut_compression(e->a, 0);
+    if (rc) return rc;
+    s->sum.relaxed++;
+    return correct(e, s, d, reason);
+}

@@ -1,0 +1,124 @@
+/* Pre-shaping of slack chains (CTN_METHOD_AUTO, once before the first step).
+ * A chain is a run of free nodes with exactly two elements each, between two anchor
+ * nodes (supported, or joining more than two elements). A chain whose start polyline is
+ * shorter than its unstressed length (a cable given straight, or as its unstressed
+ * arc) has compressed or unstressed members, and Newton from there either meets an
+ * indefinite tangent or wanders. Such a chain is placed as the paper places a cable:
+ * on the circular arc of its unstressed length through its anchors, sagging along
+ * gravity, then moved onto the concentric arc of larger radius on which every member is
+ * stretched by CTN_PRESHAPE_STRAIN. This changes only the start, not the equations. */
+#include "model/arc.h"
+#include "solve/engine.h"
+
+#include <math.h>
+#include <string.h>
+
+#define CTN_PRESHAPE_STRAIN 1e-3
+
+typedef struct chains {
+    int *deg, *inc;      /* per node: element count, first two incident elements */
+    int *nodes, *elems;  /* one chain: anchor, interior..., anchor; its elements */
+    unsigned char *seen; /* per element */
+} chains;
+
+static int interior(const ctn_engine *e, const chains *c, int node)
+{
+    return c->deg[node] == 2 && e->m->nodes.v[node].fix == 0;
+}
+
+static void current(const ctn_engine *e, const double *d, int node, double x[3])
+{
+    for (int k = 0; k < 3; k++) x[k] = e->m->nodes.v[node].X[k] + d[3 * (size_t)node + (size_t)k];
+}
+
+/* Collect the chain through element e0 into c->nodes / c->elems; node count. */
+static size_t walk(const ctn_engine *e, chains *c, int e0)
+{
+    const ctn_element *el = e->m->elements.v;
+    int head = el[e0].node[0], tail = el[e0].node[1], eh = e0;
+    while (interior(e, c, head)) {                    /* back up to the first anchor */
+        int nxt = c->inc[2 * head] == eh ? c->inc[2 * head + 1] : c->inc[2 * head];
+        if (nxt == e0) return 0;                      /* a closed loop: no anchors */
+        eh = nxt;
+        head = el[eh].node[0] == head ? el[eh].node[1] : el[eh].node[0];
+    }
+    size_t n = 0;
+    int cur = head, ce = eh;
+    c->nodes[n] = cur;
+    for (;;) {
+        c->seen[ce] = 1;
+        c->elems[n] = ce;
+        cur = el[ce].node[0] == cur ? el[ce].node[1] : el[ce].node[0];
+        c->nodes[++n] = cur;
+        if (!interior(e, c, cur)) break;
+        ce = c->inc[2 * cur] == ce ? c->inc[2 * cur + 1] : c->inc[2 * cur];
+    }
+    (void)tail;
+    return n + 1;
+}
+
+/* Place one chain of n nodes on its arc if it is slack; 1 if placed. */
+static int place_chain(const ctn_engine *e, const chains *c, size_t n, double *d)
+{
+    double S = 0, poly = 0, lmax = 0, a[3], b[3], x0[3], x1[3];
+    for (size_t i = 0; i + 1 < n; i++) {
+        double l0 = e->a->props[c->elems[i]].l0;
+        S += l0;
+        lmax = fmax(lmax, l0);
+        current(e, d, c->nodes[i], x0);
+        current(e, d, c->nodes[i + 1], x1);
+        poly += sqrt((x1[0] - x0[0]) * (x1[0] - x0[0]) + (x1[1] - x0[1]) * (x1[1] - x0[1]) +
+                     (x1[2] - x0[2]) * (x1[2] - x0[2]));
+    }
+    current(e, d, c->nodes[0], a);
+    current(e, d, c->nodes[n - 1], b);
+    ctn_arc arc;
+    if (n < 3 || poly > S || ctn_arc_make(a, b, e->m->gravity, S, &arc) || arc.alpha == 0) return 0;
+    double delta = ctn_arc_delta(&arc, lmax / S, CTN_PRESHAPE_STRAIN), s = 0;
+    for (size_t i = 1; i + 1 < n; i++) {
+        double X[3], g[3];
+        s += e->a->props[c->elems[i - 1]].l0;
+        ctn_arc_point(&arc, s / S, delta, X, g);
+        for (int k = 0; k < 3; k++)
+            d[3 * (size_t)c->nodes[i] + (size_t)k] = X[k] + g[k] - e->m->nodes.v[c->nodes[i]].X[k];
+    }
+    return 1;
+}
+
+static int incidence(const ctn_engine *e, chains *c)
+{
+    size_t nn = e->a->nn, ne = e->a->ne;
+    ctn_ctx *ctx = e->ctx;
+    c->deg = ctn_calloc(ctx, nn, sizeof(int));
+    c->inc = ctn_malloc(ctx, 2 * nn, sizeof(int));
+    c->nodes = ctn_malloc(ctx, nn, sizeof(int));
+    c->elems = ctn_malloc(ctx, nn, sizeof(int));
+    c->seen = ctn_calloc(ctx, ne, 1);
+    if (!c->deg || !c->inc || !c->nodes || !c->elems || !c->seen) return CTN_ERR_NOMEM;
+    for (size_t i = 0; i < ne; i++)
+        for (int k = 0; k < 2; k++) {
+            int p = e->m->elements.v[i].node[k];
+            if (c->deg[p] < 2) c->inc[2 * p + c->deg[p]] = (int)i;
+            c->deg[p]++;
+        }
+    return CTN_OK;
+}
+
+int ctn_preshape(ctn_engine *e, double *d, int *count)
+{
+    chains c = { NULL, NULL, NULL, NULL, NULL };
+    int rc = incidence(e, &c);
+    *count = 0;
+    for (size_t i = 0; !rc && i < e->a->ne; i++) {
+        if (c.seen[i]) continue;
+        size_t n = walk(e, &c, (int)i);
+        c.seen[i] = 1;
+        if (n) *count += place_chain(e, &c, n, d);
+    }
+    ctn_free(c.deg);
+    ctn_free(c.inc);
+    ctn_free(c.nodes);
+    ctn_free(c.elems);
+    ctn_free(c.seen);
+    return rc;
+}
