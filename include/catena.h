@@ -14,5 +14,6 @@
 #include "catena/model.h"
 #include "catena/io.h"
 #include "catena/solve.h"
+#include "catena/analytic.h"
 
 #endif

@@ -136,7 +136,7 @@ static int lm_step(corrector *c, double *alpha, double *rn, double *pi)
     if ((rc = ctn_engine_potential(e, c->d, pi)) == CTN_ERR_DOMAIN) return CTN_OK;
     if (rc) return rc;
     double noise = 1e-12 * fabs(c->pi), rho = pred > 0 ? (c->pi - *pi) / pred : -1;
-    if (*pi < reference(c) || (*rn < c->rn && *pi <= c->pi + noise)) {
+    if (*pi < reference(c) || (*rn <= c->rn && *pi <= c->pi + noise)) {
         if (rho > 0) {
             double f = 1 - pow(2 * fmin(rho, 1) - 1, 3);
             c->mu *= f > 1.0 / 3 ? f : 1.0 / 3;
