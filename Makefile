@@ -2,11 +2,12 @@
 #   make        build build/catena and libcatena
 #   make run    install missing packages, build, run the paper's study
 #   make test   install missing packages, build and run every test (plain and ASan+UBSan)
+#               and a 30 s smoke of the libFuzzer harness
 BUILD ?= build
 ASAN_BUILD ?= build-asan
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: all deps run test test-plain test-asan valgrind bench clean
+.PHONY: all deps run test test-plain test-asan test-fuzz fuzz valgrind bench clean
 
 all: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -18,7 +19,7 @@ deps:
 run: all
 	@bash scripts/paper.sh $(BUILD)/catena
 
-test: test-plain test-asan
+test: test-plain test-asan test-fuzz
 
 test-plain: all
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
@@ -28,6 +29,14 @@ test-asan: deps
 	@cmake --build $(ASAN_BUILD) -j $(JOBS)
 	@cd $(ASAN_BUILD) && ASAN_OPTIONS=detect_leaks=1 ctest --output-on-failure -j $(JOBS)
 
+# A short smoke of the libFuzzer harness (the full run: make fuzz FUZZ_SECONDS=1800).
+FUZZ_SECONDS ?= 60
+test-fuzz: deps
+	@bash scripts/fuzz.sh 30 build-fuzz
+
+fuzz: deps
+	@bash scripts/fuzz.sh $(FUZZ_SECONDS) build-fuzz
+
 valgrind: all
 	@cd $(BUILD) && ctest -T memcheck -E cli_ --output-on-failure
 
@@ -35,4 +44,4 @@ bench: all
 	@bash bench/run.sh $(BUILD)
 
 clean:
-	rm -rf $(BUILD) $(ASAN_BUILD)
+	rm -rf $(BUILD) $(ASAN_BUILD) build-fuzz

@@ -58,6 +58,7 @@ int ctn_cmd_solve(int argc, char **argv)
         return CTN_EXIT_IO;
     }
     int rc = ctn_model_read_file(ctx, a.model, &m), code = CTN_EXIT_OK;
+    if (!rc) rc = ctn_model_validate(m);
     ctn_solve_options opt;
     ctn_iter_log iters = { stdout, { 0, 0 } };
     if (!rc) {

@@ -45,6 +45,13 @@ const char *ctn_ctx_message(const ctn_ctx *ctx);
 /* Forget the last error. */
 void ctn_ctx_clear(ctn_ctx *ctx);
 
+/* Largest model the readers and builders accept: at most `max_items` nodes and at most
+ * as many elements (0: no limit, the default). Beyond it, definitions fail with
+ * CTN_ERR_MODEL ("model too large"). For services and fuzzing that read untrusted
+ * models. */
+void ctn_ctx_set_model_limit(ctn_ctx *ctx, long max_items);
+long ctn_ctx_model_limit(const ctn_ctx *ctx);
+
 /* Testing hook: make the n-th allocation from now on (1-based) fail, 0 disables.
  * Lets tests check that every allocation failure gives CTN_ERR_NOMEM and no leak. */
 void ctn_ctx_fail_alloc_at(ctn_ctx *ctx, long n);

@@ -38,6 +38,13 @@ void ctn_ctx_fail_alloc_at(ctn_ctx *ctx, long n)
 
 long ctn_ctx_alloc_count(const ctn_ctx *ctx) { return ctx ? ctx->alloc_count : 0; }
 
+void ctn_ctx_set_model_limit(ctn_ctx *ctx, long max_items)
+{
+    if (ctx) ctx->model_limit = max_items > 0 ? max_items : 0;
+}
+
+long ctn_ctx_model_limit(const ctn_ctx *ctx) { return ctx ? ctx->model_limit : 0; }
+
 int ctn_error(ctn_ctx *ctx, int code, const char *fmt, ...)
 {
     if (!ctx) return code;

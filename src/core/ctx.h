@@ -13,6 +13,7 @@ struct ctn_ctx {
     char msg[CTN_MSG_MAX];   /* last error message */
     long alloc_count;        /* allocations made through ctn_malloc/ctn_calloc */
     long alloc_fail_at;      /* fail the allocation with this count, 0 = never */
+    long model_limit;        /* most nodes / elements in a model, 0 = no limit */
 };
 
 /* Record an error and return its code. printf-style message. */

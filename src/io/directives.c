@@ -1,6 +1,7 @@
 /* The directives of the .cable format (docs/format.md), one handler each. */
 #include "io/parse.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -171,7 +172,7 @@ static int key_int(ctn_line *l, const char *key, int lo, int hi, int *out)
     if (!v) return CTN_OK;
     int rc = ctn_parse_num(l, what, v, &x);
     if (rc) return rc;
-    if (x != (double)(long long)x || x < lo || x > hi)
+    if (!(x >= lo && x <= hi) || x != floor(x))
         return ctn_parse_error(l, "%s must be an integer from %d to %d (found %.40s)", key, lo, hi, v);
     *out = (int)x;
     return CTN_OK;

@@ -56,6 +56,9 @@ int ctn_model_add_cable(ctn_model *m, int a, int b, const char *section,
         return ctn_model_error(m, CTN_ERR_MODEL, "cable: shape=arc needs a gravity direction not parallel to the chord (set gravity before the cable, or use shape=straight)");
     if (m->max_node_id > 0x7fffffff - spec->n || m->max_element_id > 0x7fffffff - spec->n)
         return ctn_model_error(m, CTN_ERR_MODEL, "cable: generated ids would overflow");
+    long lim = ctn_ctx_model_limit(m->ctx);
+    if (lim && (m->nodes.n + (size_t)spec->n > (size_t)lim || m->elements.n + (size_t)spec->n > (size_t)lim))
+        return ctn_model_error(m, CTN_ERR_MODEL, "model too large: cable of %d elements exceeds the caller's limit of %ld", spec->n, lim);
     if ((rc = reserve_all(m, (size_t)spec->n))) return rc;
     double delta = ctn_arc_delta(&f, 1.0 / spec->n, spec->guess_strain);
     if (spec->guess_strain == 0) delta = 0;

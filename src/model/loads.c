@@ -127,6 +127,24 @@ static int check_hload_targets(const ctn_model *m)
     return CTN_OK;
 }
 
+/* A node no element reaches, with a free DOF, is a mechanism: say which. */
+static int check_unconnected(const ctn_model *m)
+{
+    unsigned char *used = ctn_calloc(m->ctx, m->nodes.n, 1);
+    if (!used) return CTN_ERR_NOMEM;
+    for (size_t e = 0; e < m->elements.n; e++) used[m->elements.v[e].node[0]] = used[m->elements.v[e].node[1]] = 1;
+    int rc = CTN_OK;
+    for (size_t i = 0; i < m->nodes.n && !rc; i++) {
+        const ctn_node *p = &m->nodes.v[i];
+        if (used[i] || p->fix == CTN_FIX_ALL) continue;
+        rc = ctn_error_at(m->ctx, CTN_ERR_MODEL, m->file, p->line,
+                          "node %d is connected to no element and is free in %s%s%s: a mechanism (fix it with fix=xyz or remove it)",
+                          p->id, p->fix & CTN_FIX_X ? "" : "x", p->fix & CTN_FIX_Y ? "" : "y", p->fix & CTN_FIX_Z ? "" : "z");
+    }
+    ctn_free(used);
+    return rc;
+}
+
 int ctn_model_validate(const ctn_model *m)
 {
     if (!m) return CTN_ERR_INVALID;
@@ -141,5 +159,6 @@ int ctn_model_validate(const ctn_model *m)
     int fixed = 0;
     for (size_t i = 0; i < m->nodes.n && !fixed; i++) fixed = m->nodes.v[i].fix != 0;
     if (!fixed) return ctn_error(m->ctx, CTN_ERR_MODEL, "%s%sthe model has no supports (no node has fix=)", m->file, *m->file ? ": " : "");
-    return check_hload_targets(m);
+    int rc = check_hload_targets(m);
+    return rc ? rc : check_unconnected(m);
 }

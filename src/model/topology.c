@@ -16,6 +16,9 @@ int ctn_model_add_node(ctn_model *m, int id, const double X[3], unsigned fix)
     if (fix & ~(unsigned)CTN_FIX_ALL) return ctn_model_error(m, CTN_ERR_MODEL, "node %d: bad fix flags", id);
     if (m->nodes.n >= (size_t)0x7fffffff / 3)
         return ctn_model_error(m, CTN_ERR_MODEL, "too many nodes");
+    long lim = ctn_ctx_model_limit(m->ctx);
+    if (lim && m->nodes.n >= (size_t)lim)
+        return ctn_model_error(m, CTN_ERR_MODEL, "model too large: more than %ld nodes (the caller's limit)", lim);
     if (m->steps.n) return ctn_model_error(m, CTN_ERR_MODEL, "nodes must be defined before the first step");
     int rc = CTN_ARRAY_RESERVE(m->ctx, m->nodes, 1);
     if (!rc) rc = ctn_idmap_put(m->ctx, &m->node_ids, id, (int)m->nodes.n);
@@ -65,6 +68,9 @@ int ctn_model_add_element(ctn_model *m, int id, int n1, int n2, const char *sect
         return ctn_model_error(m, CTN_ERR_MODEL, "element %d: l0 must be positive and finite (got %g)", id, l0);
     if (m->elements.n >= (size_t)0x7fffffff)
         return ctn_model_error(m, CTN_ERR_MODEL, "too many elements");
+    long lim = ctn_ctx_model_limit(m->ctx);
+    if (lim && m->elements.n >= (size_t)lim)
+        return ctn_model_error(m, CTN_ERR_MODEL, "model too large: more than %ld elements (the caller's limit)", lim);
     if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->elements, 1))) return rc;
     if ((rc = ctn_idmap_put(m->ctx, &m->element_ids, id, (int)m->elements.n))) return rc;
     ctn_element *e = &m->elements.v[m->elements.n++];

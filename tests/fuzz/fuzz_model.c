@@ -1,0 +1,61 @@
+/* libFuzzer harness: the whole load-and-solve path on arbitrary bytes. The model is
+ * parsed from memory; valid models (within a size limit) are solved with small
+ * iteration budgets by every method, and their results turned into JSON; errors must
+ * come back as status codes with messages. Any crash, hang, leak or sanitizer report
+ * is a bug. Build: make fuzz (clang). */
+#include "catena.h"
+
+#include <cjson/cJSON.h>
+#include <stdint.h>
+#include <string.h>
+
+/* 1 if the JSON text parses and holds no null (cJSON's rendering of NaN/Inf). */
+static int valid_json(const cJSON *j)
+{
+    if (!j || cJSON_IsNull(j)) return 0;
+    for (const cJSON *c = j->child; c; c = c->next)
+        if (!valid_json(c)) return 0;
+    return 1;
+}
+
+static void solve_all(ctn_ctx *ctx, const ctn_model *m)
+{
+    for (int method = 0; method < 3; method++) {
+        ctn_solve_options opt;
+        ctn_solution *s = NULL;
+        ctn_model_solve_options(m, &opt);
+        opt.method = (ctn_method)method;
+        if (opt.maxit > 25) opt.maxit = 25;
+        if (opt.steps > 8) opt.steps = 8;
+        if (opt.arcsteps > 25) opt.arcsteps = 25;
+        if (opt.maxcuts > 4 || opt.maxcuts < 0) opt.maxcuts = 4;
+        if (ctn_solve(ctx, m, &opt, &s) == CTN_OK) {
+            char *json = NULL;
+            if (ctn_result_json(ctx, m, s, 0, &json) == CTN_OK) {
+                cJSON *j = cJSON_Parse(json);
+                if (!valid_json(j)) __builtin_trap(); /* invalid JSON or a NaN in it */
+                cJSON_Delete(j);
+            }
+            ctn_json_free(json);
+        } else if (!*ctn_ctx_message(ctx)) {
+            __builtin_trap();                         /* an error without a message */
+        }
+        ctn_solution_destroy(&s);
+    }
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    ctn_ctx *ctx = NULL;
+    ctn_model *m = NULL;
+    if (ctn_ctx_create(&ctx)) return 0;
+    ctn_ctx_set_model_limit(ctx, 2000);
+    int rc = ctn_model_read_string(ctx, "fuzz.cable", (const char *)data, size, &m);
+    if (rc == CTN_OK) solve_all(ctx, m);
+    else if (!*ctn_ctx_message(ctx)) __builtin_trap();
+    ctn_model_destroy(&m);
+    ctn_ctx_destroy(&ctx);
+    return 0;
+}
