@@ -149,6 +149,34 @@ static int initial_radius(arc *a)
     return CTN_OK;
 }
 
+/* Past the target: a load-controlled Newton correction at exactly lambda_max from the
+ * last arc point (LDL' tangent); if it converges it replaces that point. */
+static int land(arc *a, size_t count)
+{
+    ctn_engine *e = a->e;
+    double target = e->opt.lambda_max, rn;
+    memcpy(a->d0, a->d, e->n3 * sizeof(double));
+    memset(a->du, 0, e->ndof * sizeof(double));
+    int rc = place(a, target, &rn);
+    for (int it = 1; !rc && it <= e->opt.maxit; it++) {
+        int ok;
+        if ((rc = solve_rhs(a, e->r, a->ur, &ok)) || !ok) break;
+        for (size_t i = 0; i < e->ndof; i++) a->du[i] += a->ur[i];
+        if ((rc = place(a, target, &rn))) break;
+        if ((rc = ctn_engine_record(e, a->s, rn, ctn_norm(a->ur, e->ndof)))) return rc;
+        if (rn <= e->opt.tol * a->fref) {
+            ctn_step_state *last = &a->s->steps[--a->s->nsteps];
+            ctn_free(last->d);
+            ctn_free(last->react);
+            ctn_free(last->elem);
+            a->lambda = target;
+            return record_state(a, count);
+        }
+    }
+    memcpy(a->d, a->d0, e->n3 * sizeof(double));     /* keep the last arc point */
+    return rc == CTN_ERR_DOMAIN ? CTN_OK : rc;
+}
+
 static int trace(arc *a)
 {
     ctn_engine *e = a->e;
@@ -168,7 +196,11 @@ static int trace(arc *a)
             continue;
         }
         if ((rc = record_state(a, ++count))) break;
-        if (a->lambda / e->opt.lambda_max >= 1) { sum->reason = CTN_CONVERGED; break; }
+        if (a->lambda / e->opt.lambda_max >= 1) {
+            sum->reason = CTN_CONVERGED;
+            if (a->lambda != e->opt.lambda_max) rc = land(a, count);
+            break;
+        }
     }
     sum->load_factor = a->lambda;
     if (!rc && count == 0) rc = record_state(a, 0);   /* keep the starting state */

@@ -1,0 +1,138 @@
+/* Examples double as regression tests: every examples/<dir>/<name>.cable is solved with
+ * its own options and checked against its "#@ key values..." lines:
+ *   converged 0|1            max_iterations N        steps N        slack N
+ *   max_force V rtol         min_force V rtol        sag V rtol     (first cable)
+ *   step_force K E V atol    (element index E at step K)
+ *   load_factor_min V rtol   load_factor_max V rtol  (over the steps)
+ *   load_factor V rtol       (where the run ended)
+ * and, when converged and not arc-length, the reactions must balance the loads. */
+#include "catena.h"
+#include "check.h"
+
+#include <dirent.h>
+#include <stdlib.h>
+
+static double force_extreme(const ctn_model *m, const ctn_solution *s, int want_max)
+{
+    double v = want_max ? -INFINITY : INFINITY;
+    for (size_t e = 0; e < ctn_model_element_count(m); e++) {
+        ctn_element_state st;
+        ctn_solution_element(s, e, &st);
+        v = want_max ? fmax(v, st.force) : fmin(v, st.force);
+    }
+    return v;
+}
+
+static double load_factor_extreme(const ctn_solution *s, int want_max)
+{
+    double v = want_max ? -INFINITY : INFINITY;
+    for (size_t k = 0; k < ctn_solution_step_count(s); k++) {
+        ctn_step_result st;
+        ctn_solution_step(s, k, &st);
+        v = want_max ? fmax(v, st.load_factor) : fmin(v, st.load_factor);
+    }
+    return v;
+}
+
+static void check_balance(const char *path, const ctn_model *m, const ctn_solution *s)
+{
+    size_t n3 = 3 * ctn_model_node_count(m);
+    double *f = calloc(n3, sizeof(double)), sum[3] = { 0, 0, 0 }, scale = 0;
+    const double *r = ctn_solution_reactions(s);
+    ctn_model_external_forces(m, f);
+    for (size_t i = 0; i < n3; i++) {
+        sum[i % 3] += f[i] + r[i];
+        scale = fmax(scale, fabs(f[i]) + fabs(r[i]));
+    }
+    for (int k = 0; k < 3; k++) CHECK_MSG(fabs(sum[k]) <= 1e-9 * scale, "%s: reactions off balance by %g", path, sum[k]);
+    free(f);
+}
+
+/* One "#@" line. */
+static void check_line(const char *path, const char *line, const ctn_model *m, const ctn_solution *s)
+{
+    char key[32];
+    double a = 0, b = 0, c = 0, d = 0;
+    int n = sscanf(line, "#@ %31s %lf %lf %lf %lf", key, &a, &b, &c, &d);
+    ctn_solve_summary sum;
+    ctn_solution_summary(s, &sum);
+    CHECK_MSG(n >= 2, "%s: bad expectation line '%s'", path, line);
+    if (n < 2) return;
+    if (!strcmp(key, "converged")) CHECK_MSG((sum.reason == CTN_CONVERGED) == (a != 0), "%s: %s", path, ctn_reason_name(sum.reason));
+    else if (!strcmp(key, "max_iterations")) CHECK_MSG(sum.iterations <= a, "%s: %d iterations", path, sum.iterations);
+    else if (!strcmp(key, "steps")) CHECK_MSG(ctn_solution_step_count(s) == (size_t)a, "%s: %zu steps", path, ctn_solution_step_count(s));
+    else if (!strcmp(key, "max_force")) CHECK_CLOSE(force_extreme(m, s, 1), a, b, 0);
+    else if (!strcmp(key, "min_force")) CHECK_CLOSE(force_extreme(m, s, 0), a, b, 0);
+    else if (!strcmp(key, "load_factor_min")) CHECK_CLOSE(load_factor_extreme(s, 0), a, b, 0);
+    else if (!strcmp(key, "load_factor_max")) CHECK_CLOSE(load_factor_extreme(s, 1), a, b, 0);
+    else if (!strcmp(key, "load_factor")) CHECK_CLOSE(sum.load_factor, a, b, 0);
+    else if (!strcmp(key, "sag")) {
+        double sag = NAN;
+        ctn_solution_cable_sag(m, s, 0, &sag);
+        CHECK_CLOSE(sag, a, b, 0);
+    } else if (!strcmp(key, "slack")) {
+        size_t count = 0;
+        for (size_t e = 0; e < ctn_model_element_count(m); e++) {
+            ctn_element_state st;
+            ctn_solution_element(s, e, &st);
+            count += (size_t)st.slack;
+        }
+        CHECK_MSG(count == (size_t)a, "%s: %zu slack elements", path, count);
+    } else if (!strcmp(key, "step_force") && n == 5) {
+        ctn_element_state st;
+        CHECK(ctn_solution_step_element(s, (size_t)a, (size_t)b, &st) == CTN_OK);
+        CHECK_CLOSE(st.force, c, 0, d);
+    } else CHECK_MSG(0, "%s: unknown expectation '%s'", path, key);
+}
+
+static int run_example(const char *path)
+{
+    ctn_ctx *ctx = NULL;
+    ctn_model *m = NULL;
+    ctn_solution *s = NULL;
+    ctn_ctx_create(&ctx);
+    int rc = ctn_model_read_file(ctx, path, &m);
+    CHECK_MSG(rc == CTN_OK, "%s", ctn_ctx_message(ctx));
+    if (!rc) rc = ctn_solve(ctx, m, NULL, &s);
+    CHECK_MSG(rc == CTN_OK, "%s: %s", path, ctn_ctx_message(ctx));
+    int lines = 0;
+    FILE *f = fopen(path, "r");
+    char line[512];
+    while (!rc && f && fgets(line, sizeof line, f))
+        if (!strncmp(line, "#@", 2)) {
+            line[strcspn(line, "\n")] = '\0';
+            check_line(path, line, m, s);
+            lines++;
+        }
+    if (f) fclose(f);
+    ctn_solve_options opt;
+    ctn_solve_summary sum;
+    ctn_model_solve_options(m, &opt);
+    ctn_solution_summary(s, &sum);
+    if (!rc && sum.reason == CTN_CONVERGED && opt.method != CTN_METHOD_ARCLENGTH) check_balance(path, m, s);
+    ctn_solution_destroy(&s);
+    ctn_model_destroy(&m);
+    ctn_ctx_destroy(&ctx);
+    return lines;
+}
+
+int main(void)
+{
+    const char *dirs[] = { "examples/paper", "examples/robust" };
+    int files = 0;
+    for (size_t i = 0; i < sizeof dirs / sizeof *dirs; i++) {
+        DIR *dir = opendir(dirs[i]);
+        CHECK_MSG(dir != NULL, "cannot open %s (run from the project root)", dirs[i]);
+        for (struct dirent *de; dir && (de = readdir(dir));) {
+            size_t len = strlen(de->d_name);
+            if (len < 7 || strcmp(de->d_name + len - 6, ".cable")) continue;
+            char path[1024];
+            snprintf(path, sizeof path, "%s/%s", dirs[i], de->d_name);
+            CHECK_MSG(run_example(path) > 0, "%s has no #@ expectation", path);
+            files++;
+        }
+        if (dir) closedir(dir);
+    }
+    CHECK(files >= 8);
+    CHECK_DONE();
+}
