@@ -30,8 +30,11 @@ static ctn_model *paper_model(ctn_ctx *ctx, double S, int n)
     return m;
 }
 
-/* Steps k with r_k/f < 1e-2 and r_k+1/f above the round-off floor must satisfy
- * r_k+1/f <= 10 (r_k/f)^2; at least one such step must exist. */
+/* Quadratic convergence in the last iterations: over the steps k with r_k/f < 1e-2 and
+ * r_k+1/f above the round-off floor (1e-10), r_k+1/f <= C (r_k/f)^2 with a bounded
+ * C = 100. A linearly converging iteration, r_k+1 = q r_k with q >= 0.1, breaks this as
+ * soon as r_k/f < 1e-3. (The paper's cases show C between 0.04 and 28.) At least one
+ * such step must exist. */
 static void check_quadratic(const double *r, size_t n, double f, double S)
 {
     int steps = 0;
@@ -39,7 +42,7 @@ static void check_quadratic(const double *r, size_t n, double f, double S)
         double a = r[k] / f, b = r[k + 1] / f;
         if (a >= 1e-2 || b <= 1e-10) continue;
         steps++;
-        CHECK_MSG(b <= 10 * a * a, "S=%g: step %zu: %.3g -> %.3g is not quadratic", S, k, a, b);
+        CHECK_MSG(b <= 100 * a * a, "S=%g: step %zu: %.3g -> %.3g is not quadratic", S, k, a, b);
     }
     CHECK_MSG(steps >= 1, "S=%g: no step in the asymptotic range", S);
 }

@@ -39,9 +39,9 @@ typedef struct ctn_cable_spec {
     double length;       /* unstressed length S of the whole cable [length]; each element
                             gets l0 = S/n */
     ctn_cable_shape shape;
-    double guess_strain; /* arc shape: the Newton start is the concentric arc of larger
-                            radius on which interior elements have this strain (default
-                            1e-3, see docs/format.md); 0 starts from the arc itself */
+    double guess_strain; /* arc shape: the Newton start is the stretched arc through the
+                            same ends on which every element has this strain (default
+                            1e-3, see docs/theory.md); 0 starts from the arc itself */
 } ctn_cable_spec;
 
 /* Create an empty model bound to ctx (errors are recorded there; ctx must outlive it). */

@@ -56,25 +56,28 @@ int ctn_arc_make(const double A[3], const double B[3], const double g[3], double
     return 0;
 }
 
-void ctn_arc_point(const ctn_arc *arc, double t, double delta, double X[3], double guess[3])
+void ctn_arc_point(const ctn_arc *arc, double t, double X[3])
 {
     if (arc->alpha == 0) {
-        for (int j = 0; j < 3; j++) {
-            X[j] = arc->mid[j] + (t - 0.5) * arc->chord * arc->u[j];
-            if (guess) guess[j] = 0;
-        }
+        for (int j = 0; j < 3; j++) X[j] = arc->mid[j] + (t - 0.5) * arc->chord * arc->u[j];
         return;
     }
     double a = arc->alpha, th = a * (2 * t - 1);                 /* -alpha .. alpha */
     double drop = 2 * sin(0.5 * (a + th)) * sin(0.5 * (a - th)); /* cos th - cos alpha */
-    for (int j = 0; j < 3; j++) {
-        X[j] = arc->mid[j] + arc->R * (sin(th) * arc->u[j] + drop * arc->n[j]);
-        if (guess) guess[j] = delta * arc->R * (sin(th) * arc->u[j] + cos(th) * arc->n[j]);
-    }
+    for (int j = 0; j < 3; j++) X[j] = arc->mid[j] + arc->R * (sin(th) * arc->u[j] + drop * arc->n[j]);
 }
 
-double ctn_arc_delta(const ctn_arc *arc, double dt, double eps)
+int ctn_arc_stretched(const ctn_arc *arc, const double A[3], const double B[3],
+                      const double g[3], double S, double dt, double eps, ctn_arc *out)
 {
-    double phi = arc->alpha * dt;                       /* half the chord's angle */
-    return phi > 0 ? (phi / sin(phi)) * (1 + eps) - 1 : 0;
+    double S2 = S * (1 + eps);
+    (void)arc;
+    for (int it = 0; it < 50; it++) {                /* chord = arc * sin(phi)/phi */
+        if (ctn_arc_make(A, B, g, S2, out)) return -1;
+        double phi = out->alpha * dt, ratio = phi > 0 ? sin(phi) / phi : 1;
+        double next = S * (1 + eps) / ratio;
+        if (fabs(next - S2) <= 1e-15 * S2) break;
+        S2 = next;
+    }
+    return 0;
 }

@@ -1,5 +1,5 @@
 /* Internal: circular-arc placement of a chain of nodes between two points, sagging
- * along gravity, and the paper's Newton start (the concentric arc of larger radius).
+ * along gravity, and the Newton start (the stretched arc through the same ends).
  * Used by the `cable` generator and by the solver's pre-shaping of slack chains. */
 #ifndef CTN_MODEL_ARC_H
 #define CTN_MODEL_ARC_H
@@ -16,11 +16,12 @@ typedef struct ctn_arc {
  * parallel to the chord, or S < chord. */
 int ctn_arc_make(const double A[3], const double B[3], const double g[3], double S,
                  ctn_arc *arc);
-/* Point at fraction t in [0, 1] of the arc length; with delta > 0 also the
- * displacement that moves it radially onto the concentric arc of radius R (1 + delta). */
-void ctn_arc_point(const ctn_arc *arc, double t, double delta, double X[3], double guess[3]);
-/* delta such that a chord spanning the arc fraction dt is stretched by strain eps
- * relative to its arc length on the larger arc. */
-double ctn_arc_delta(const ctn_arc *arc, double dt, double eps);
+/* Point at fraction t in [0, 1] of the arc length. */
+void ctn_arc_point(const ctn_arc *arc, double t, double X[3]);
+/* The stretched start: the arc through the same ends, sagging the same way, on which a
+ * chord spanning the fraction dt of the arc is longer than dt * S by the factor
+ * (1 + eps), S the length of `arc`. Returns 0, or -1 as ctn_arc_make. */
+int ctn_arc_stretched(const ctn_arc *arc, const double A[3], const double B[3],
+                      const double g[3], double S, double dt, double eps, ctn_arc *out);
 
 #endif

@@ -1,6 +1,6 @@
 /* The `cable` generator: n elements and n-1 interior nodes between two nodes, placed on
- * a circular arc of the cable's length (or on the chord), with the paper's Newton start:
- * the concentric arc of slightly larger radius. */
+ * a circular arc of the cable's length (or on the chord), with the Newton start on the
+ * stretched arc through the same ends (docs/theory.md). */
 #include "model/arc.h"
 #include "model/model.h"
 
@@ -47,7 +47,9 @@ int ctn_model_add_cable(ctn_model *m, int a, int b, const char *section,
     if (!section || ctn_model_find_section(m, section) < 0)
         return ctn_model_error(m, CTN_ERR_MODEL, "cable: undefined section '%s'", section ? section : "");
     ctn_arc f;
-    const double *A = m->nodes.v[ia].X, *B = m->nodes.v[ib].X;
+    double A[3], B[3];                      /* copies: reserve_all() moves the nodes */
+    memcpy(A, m->nodes.v[ia].X, sizeof A);
+    memcpy(B, m->nodes.v[ib].X, sizeof B);
     double chord = sqrt((B[0] - A[0]) * (B[0] - A[0]) + (B[1] - A[1]) * (B[1] - A[1]) + (B[2] - A[2]) * (B[2] - A[2]));
     if (!(chord > 0)) return ctn_model_error(m, CTN_ERR_MODEL, "cable: nodes %d and %d coincide", a, b);
     int rc = check_spec(m, spec, chord);
@@ -60,15 +62,19 @@ int ctn_model_add_cable(ctn_model *m, int a, int b, const char *section,
     if (lim && (m->nodes.n + (size_t)spec->n > (size_t)lim || m->elements.n + (size_t)spec->n > (size_t)lim))
         return ctn_model_error(m, CTN_ERR_MODEL, "model too large: cable of %d elements exceeds the caller's limit of %ld", spec->n, lim);
     if ((rc = reserve_all(m, (size_t)spec->n))) return rc;
-    double delta = ctn_arc_delta(&f, 1.0 / spec->n, spec->guess_strain);
-    if (spec->guess_strain == 0) delta = 0;
+    ctn_arc start = f;                                   /* the Newton start */
+    if (spec->shape == CTN_SHAPE_ARC && spec->guess_strain > 0 &&
+        ctn_arc_stretched(&f, A, B, m->gravity, spec->length, 1.0 / spec->n, spec->guess_strain, &start))
+        start = f;
     int prev = a, first = m->max_element_id + 1;
     size_t e0 = m->elements.n;
     for (int k = 1; k <= spec->n; k++) {
         int next = b;
         if (k < spec->n) {
             double X[3], guess[3];
-            ctn_arc_point(&f, (double)k / spec->n, delta, X, guess);
+            ctn_arc_point(&f, (double)k / spec->n, X);
+            ctn_arc_point(&start, (double)k / spec->n, guess);
+            for (int j = 0; j < 3; j++) guess[j] -= X[j];
             next = m->max_node_id + 1;
             if ((rc = ctn_model_add_node(m, next, X, 0))) return rc;   /* cannot fail: reserved */
             memcpy(m->nodes.v[m->nodes.n - 1].guess, guess, sizeof guess);

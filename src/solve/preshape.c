@@ -4,9 +4,9 @@
  * shorter than its unstressed length (a cable given straight, or as its unstressed
  * arc) has compressed or unstressed members, and Newton from there either meets an
  * indefinite tangent or wanders. Such a chain is placed as the paper places a cable:
- * on the circular arc of its unstressed length through its anchors, sagging along
- * gravity, then moved onto the concentric arc of larger radius on which every member is
- * stretched by CTN_PRESHAPE_STRAIN. This changes only the start, not the equations. */
+ * on the circular arc through its anchors, sagging along gravity, that is longer than the
+ * chain so that every member is stretched by CTN_PRESHAPE_STRAIN (the start `cable`
+ * gives a generated cable). This changes only the start, not the equations. */
 #include "model/arc.h"
 #include "solve/engine.h"
 
@@ -72,15 +72,17 @@ static int place_chain(const ctn_engine *e, const chains *c, size_t n, double *d
     }
     current(e, d, c->nodes[0], a);
     current(e, d, c->nodes[n - 1], b);
-    ctn_arc arc;
-    if (n < 3 || poly > S || ctn_arc_make(a, b, e->m->gravity, S, &arc) || arc.alpha == 0) return 0;
-    double delta = ctn_arc_delta(&arc, lmax / S, CTN_PRESHAPE_STRAIN), s = 0;
+    ctn_arc arc, start;
+    if (n < 3 || poly > S || ctn_arc_make(a, b, e->m->gravity, S, &arc) || arc.alpha == 0 ||
+        ctn_arc_stretched(&arc, a, b, e->m->gravity, S, lmax / S, CTN_PRESHAPE_STRAIN, &start))
+        return 0;
+    double s = 0;
     for (size_t i = 1; i + 1 < n; i++) {
-        double X[3], g[3];
+        double X[3];
         s += e->a->props[c->elems[i - 1]].l0;
-        ctn_arc_point(&arc, s / S, delta, X, g);
+        ctn_arc_point(&start, s / S, X);
         for (int k = 0; k < 3; k++)
-            d[3 * (size_t)c->nodes[i] + (size_t)k] = X[k] + g[k] - e->m->nodes.v[c->nodes[i]].X[k];
+            d[3 * (size_t)c->nodes[i] + (size_t)k] = X[k] - e->m->nodes.v[c->nodes[i]].X[k];
     }
     return 1;
 }
