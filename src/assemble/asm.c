@@ -39,13 +39,14 @@ void ctn_asm_destroy(ctn_asm **a)
     *a = NULL;
 }
 
-/* Add an element's upper-triangle entries into the global values. */
+/* Add (or, for an entry's first element, assign) an element's upper-triangle entries. */
 static void scatter_K(const int *slot, const double *Ke, double *Kx)
 {
     for (int i = 0; i < CTN_EDOF; i++)
         for (int j = i; j < CTN_EDOF; j++) {
             int s = slot[ctn_asm_local_slot(i, j)];
             if (s >= 0) Kx[s] += Ke[CTN_EDOF * i + j];
+            else if (s <= -2) Kx[-(s + 2)] = Ke[CTN_EDOF * i + j];
         }
 }
 
@@ -60,19 +61,28 @@ void ctn_asm_gather(const ctn_asm *a, size_t e, const double *d, double *X, doub
 
 int ctn_asm_eval(const ctn_asm *a, const double *d, double *f, double *Kx, size_t *bad)
 {
+    return ctn_asm_eval_energy(a, d, f, Kx, NULL, bad);
+}
+
+int ctn_asm_eval_energy(const ctn_asm *a, const double *d, double *f, double *Kx, double *U,
+                        size_t *bad)
+{
+    double energy = 0;
+    ctn_elem_state st;
     memset(f, 0, 3 * a->nn * sizeof(double));
-    if (Kx) memset(Kx, 0, a->nnz * sizeof(double));
     for (size_t e = 0; e < a->ne; e++) {
         const int *nd = a->m->elements.v[e].node;
         double X[CTN_EDOF], u[CTN_EDOF], fe[CTN_EDOF], Ke[CTN_EDOF * CTN_EDOF];
         ctn_asm_gather(a, e, d, X, u);
-        if (a->ops->eval(&a->props[e], X, u, fe, Kx ? Ke : NULL, NULL)) {
+        if (a->ops->eval(&a->props[e], X, u, fe, Kx ? Ke : NULL, U ? &st : NULL)) {
             if (bad) *bad = e;
             return CTN_ERR_DOMAIN;
         }
+        if (U) energy += st.energy;
         for (int k = 0; k < CTN_EDOF; k++) f[3 * (size_t)nd[k / 3] + (size_t)(k % 3)] += fe[k];
         if (Kx) scatter_K(a->slot + e * CTN_ESLOTS, Ke, Kx);
     }
+    if (U) *U = energy;
     return CTN_OK;
 }
 

@@ -18,7 +18,9 @@ typedef struct ctn_asm {
     int *dof_node, *dof_dir;           /* per equation: node index and direction */
     int *colptr, *rowind;              /* upper triangle of K, compressed columns, sorted */
     size_t nnz;
-    int *slot;                         /* CTN_ESLOTS per element: index into the values, -1 */
+    int *slot;                         /* CTN_ESLOTS per element: v >= 0 adds into value v,
+                                          v <= -2 assigns value -(v + 2) (the first element
+                                          to reach an entry: no zeroing pass), -1: none */
     ctn_cable_props *props;            /* per element */
     unsigned char *tension_only;       /* per element: the material's own flag */
     const ctn_element_ops *ops;
@@ -31,6 +33,9 @@ void ctn_asm_destroy(ctn_asm **a);
  * pattern's order) at displacements d (3 per node). On CTN_ERR_DOMAIN *bad is the index
  * of an element that collapsed to zero length. */
 int ctn_asm_eval(const ctn_asm *a, const double *d, double *f, double *Kx, size_t *bad);
+/* The same, with the total strain energy in *U (when U != NULL) from the same pass. */
+int ctn_asm_eval_energy(const ctn_asm *a, const double *d, double *f, double *Kx, double *U,
+                        size_t *bad);
 
 /* Elements of two-way material in compression at d (0 if one collapsed). */
 size_t ctn_asm_count_compressed(const ctn_asm *a, const double *d);

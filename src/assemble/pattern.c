@@ -107,8 +107,12 @@ static int find_slot(const ctn_asm *a, int r, int c)
 
 int ctn_asm_scatter_map(ctn_ctx *ctx, ctn_asm *a)
 {
+    unsigned char *seen = ctn_calloc(ctx, a->nnz ? a->nnz : 1, 1);
     a->slot = ctn_malloc(ctx, a->ne, CTN_ESLOTS * sizeof(int));
-    if (!a->slot) return CTN_ERR_NOMEM;
+    if (!a->slot || !seen) {
+        ctn_free(seen);
+        return CTN_ERR_NOMEM;
+    }
     for (size_t e = 0; e < a->ne; e++) {
         const int *nd = a->m->elements.v[e].node;
         int g[CTN_EDOF], *s = a->slot + e * CTN_ESLOTS;
@@ -116,8 +120,14 @@ int ctn_asm_scatter_map(ctn_ctx *ctx, ctn_asm *a)
         for (int i = 0; i < CTN_EDOF; i++)
             for (int j = i; j < CTN_EDOF; j++) {
                 int r = g[i] < g[j] ? g[i] : g[j], c = g[i] < g[j] ? g[j] : g[i];
-                s[ctn_asm_local_slot(i, j)] = r < 0 ? -1 : find_slot(a, r, c);
+                int k = r < 0 ? -1 : find_slot(a, r, c);
+                if (k >= 0 && !seen[k]) {                 /* first to reach it: assign */
+                    seen[k] = 1;
+                    k = -(k + 2);
+                }
+                s[ctn_asm_local_slot(i, j)] = k;
             }
     }
+    ctn_free(seen);
     return CTN_OK;
 }

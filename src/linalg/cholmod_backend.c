@@ -40,6 +40,8 @@ static int choose_ordering(ctn_chol *c, ctn_ordering ord)
     cholmod_factor *nat = NULL, *amd = NULL;
     if (ord != CTN_ORDER_AMD && !(nat = analyze(c, CHOLMOD_NATURAL, &fl_nat, &lnz_nat)))
         return backend_error(c, "analysis");
+    int no_fill = nat && lnz_nat <= (double)((const int *)c->A->p)[c->A->ncol];
+    if (ord == CTN_ORDER_AUTO && no_fill) ord = CTN_ORDER_NATURAL;   /* nothing can beat it */
     if (ord != CTN_ORDER_NATURAL && !(amd = analyze(c, CHOLMOD_AMD, &fl_amd, &lnz_amd))) {
         cholmod_free_factor(&nat, &c->cm);
         return backend_error(c, "analysis");

@@ -35,7 +35,7 @@ static int place(arc *a, double lambda, double *rn)
     memcpy(a->d, a->d0, e->n3 * sizeof(double));
     ctn_engine_axpy(e, a->d, 1.0, a->du);
     for (size_t i = 0; i < e->n3; i++) e->fext[i] = lambda * e->f1[i];
-    return ctn_engine_residual(e, a->d, 1, rn);
+    return ctn_engine_residual(e, a->d, 1, rn, NULL);
 }
 
 /* Root of the constraint closest in direction to the current Delta u. */

@@ -81,13 +81,14 @@ static int factor(corrector *c, int *ok)
     }
 }
 
-/* d = dsave + alpha dd and its residual (with K); *ok = 0 if an element collapsed. */
-static int trial(corrector *c, double alpha, double *rn, int *ok)
+/* d = dsave + alpha dd, its residual (with K) and, if pi != NULL, its potential;
+ * *ok = 0 if an element collapsed. */
+static int trial(corrector *c, double alpha, double *rn, double *pi, int *ok)
 {
     ctn_engine *e = c->e;
     memcpy(c->d, e->dsave, e->n3 * sizeof(double));
     ctn_engine_axpy(e, c->d, alpha, e->dd);
-    int rc = ctn_engine_residual(e, c->d, 1, rn);
+    int rc = ctn_engine_residual(e, c->d, 1, rn, pi);
     *ok = rc != CTN_ERR_DOMAIN;
     return rc == CTN_ERR_DOMAIN ? CTN_OK : rc;
 }
@@ -98,7 +99,7 @@ static int newton_search(corrector *c, double *alpha, double *rn)
     int ok, rc, halvings = c->e->opt.linesearch ? LS_HALVINGS : 0;
     *alpha = 1;
     for (int h = 0; h <= halvings; h++, *alpha *= 0.5) {
-        if ((rc = trial(c, *alpha, rn, &ok))) return rc;
+        if ((rc = trial(c, *alpha, rn, NULL, &ok))) return rc;
         if (ok && (!c->e->opt.linesearch || *rn <= (1 - ARMIJO * *alpha) * c->rn)) return CTN_OK;
     }
     *alpha = 0;
@@ -130,11 +131,9 @@ static int lm_step(corrector *c, double *alpha, double *rn, double *pi)
     ctn_engine *e = c->e;
     double dd2 = ctn_dot(e->dd, e->dd, e->ndof);
     double pred = 0.5 * (ctn_dot(e->r, e->dd, e->ndof) + c->mu * dd2);
-    int ok, rc = trial(c, 1.0, rn, &ok);
+    int ok, rc = trial(c, 1.0, rn, pi, &ok);
     *alpha = 0;
     if (rc || !ok) return rc;
-    if ((rc = ctn_engine_potential(e, c->d, pi)) == CTN_ERR_DOMAIN) return CTN_OK;
-    if (rc) return rc;
     double noise = 1e-12 * fabs(c->pi), rho = pred > 0 ? (c->pi - *pi) / pred : -1;
     if (*pi < reference(c) || (*rn <= c->rn && *pi <= c->pi + noise)) {
         if (rho > 0) {
@@ -166,7 +165,7 @@ static int iteration(corrector *c, ctn_reason *why)
     if (rc) return rc;
     if (alpha == 0) {                            /* back to the start of the iteration */
         memcpy(c->d, e->dsave, e->n3 * sizeof(double));
-        if ((rc = ctn_engine_residual(e, c->d, 1, &c->rn))) return rc == CTN_ERR_DOMAIN ? CTN_OK : rc;
+        if ((rc = ctn_engine_residual(e, c->d, 1, &c->rn, NULL))) return rc == CTN_ERR_DOMAIN ? CTN_OK : rc;
         if (!c->globalized) { *why = e->opt.linesearch ? CTN_DIVERGED_LINESEARCH : CTN_DIVERGED_NANORINF; return CTN_OK; }
         raise_mu(c);
         return ctn_engine_record(e, c->s, c->rn, 0.0);
@@ -187,8 +186,7 @@ static int correct(ctn_engine *e, ctn_solution *s, double *d, ctn_reason *reason
     c.nu = 2;
     c.globalized = e->opt.method == CTN_METHOD_AUTO;
     *reason = CTN_DIVERGED_NANORINF;
-    int rc = ctn_engine_residual(e, d, 1, &c.rn);
-    if (!rc && c.globalized) rc = ctn_engine_potential(e, d, &c.pi);
+    int rc = ctn_engine_residual(e, d, 1, &c.rn, c.globalized ? &c.pi : NULL);
     if (!rc && c.globalized) remember(&c, c.pi);
     if (rc) return rc == CTN_ERR_DOMAIN ? CTN_OK : rc;
     if ((rc = ctn_solution_push_residual(s, c.rn))) return rc;

@@ -92,32 +92,24 @@ void ctn_engine_set_t(ctn_engine *e, double t, double *d)
     }
 }
 
-int ctn_engine_residual(ctn_engine *e, const double *d, int with_K, double *rnorm)
+int ctn_engine_residual(ctn_engine *e, const double *d, int with_K, double *rnorm, double *pi)
 {
-    double t0 = ctn_now();
-    int rc = ctn_asm_eval(e->a, d, e->fint, with_K ? ctn_chol_values(e->ch) : NULL, NULL);
+    double t0 = ctn_now(), U = 0, work = 0;
+    int rc = ctn_asm_eval_energy(e->a, d, e->fint, with_K ? ctn_chol_values(e->ch) : NULL,
+                                 pi ? &U : NULL, NULL);
     if (!rc) {
         for (size_t i = 0; i < e->n3; i++) {
             int q = e->a->eq[i];
-            if (q >= 0) e->r[q] = e->fext[i] - e->fint[i];
+            if (q < 0) continue;
+            e->r[q] = e->fext[i] - e->fint[i];
+            work += e->fext[i] * d[i];
         }
         *rnorm = ctn_norm(e->r, e->ndof);
-        if (!isfinite(*rnorm)) rc = CTN_ERR_DOMAIN;
+        if (pi) *pi = U - work;
+        if (!isfinite(*rnorm) || (pi && !isfinite(*pi))) rc = CTN_ERR_DOMAIN;
     }
     e->sum->t_assemble += ctn_now() - t0;
     return rc;
-}
-
-int ctn_engine_potential(ctn_engine *e, const double *d, double *pi)
-{
-    double U, t0 = ctn_now();
-    int rc = ctn_asm_energy(e->a, d, &U);
-    double work = 0;
-    for (size_t i = 0; i < e->n3; i++)
-        if (e->a->eq[i] >= 0) work += e->fext[i] * d[i];
-    *pi = U - work;
-    e->sum->t_assemble += ctn_now() - t0;
-    return rc ? rc : isfinite(*pi) ? CTN_OK : CTN_ERR_DOMAIN;
 }
 
 double ctn_engine_fref(const ctn_engine *e)

@@ -35,11 +35,10 @@ void ctn_engine_teardown(ctn_engine *e);
 
 /* Set t: fext and the fixed entries of d. */
 void ctn_engine_set_t(ctn_engine *e, double t, double *d);
-/* f_int (and K if with_K) at d; r = f_ext - f_int on free DOFs, |r| in *rnorm.
- * CTN_ERR_DOMAIN if an element collapsed or the residual is not finite. */
-int ctn_engine_residual(ctn_engine *e, const double *d, int with_K, double *rnorm);
-/* Total potential: strain energy - f_ext . d over free DOFs. */
-int ctn_engine_potential(ctn_engine *e, const double *d, double *pi);
+/* f_int (and K if with_K) at d; r = f_ext - f_int on free DOFs, |r| in *rnorm; if pi is
+ * not NULL, the total potential (strain energy - f_ext . d over free DOFs) from the same
+ * pass. CTN_ERR_DOMAIN if an element collapsed or a result is not finite. */
+int ctn_engine_residual(ctn_engine *e, const double *d, int with_K, double *rnorm, double *pi);
 /* Force scale of the residual test: |f_ext| on free DOFs, or where that is zero (pure
  * prescribed displacement) |f_int| on fixed DOFs, or 1. */
 double ctn_engine_fref(const ctn_engine *e);
