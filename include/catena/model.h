@@ -33,6 +33,9 @@ typedef enum ctn_cable_shape {
     CTN_SHAPE_STRAIGHT = 1 /* on the chord between the end nodes */
 } ctn_cable_shape;
 
+#define CTN_CABLE_MAX_N 50000000   /* most elements of one generated cable */
+#define CTN_SUBSTEPS_MAX 100000    /* most increments of one load step */
+
 /* Parameters of a generated cable (ctn_model_add_cable). */
 typedef struct ctn_cable_spec {
     int n;               /* number of elements, >= 1 */

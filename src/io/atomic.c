@@ -1,5 +1,5 @@
 /* Atomic file output: write a temporary file beside the target, then rename. */
-#include "core/ctx.h"
+#include "io/atomic.h"
 #include "catena/io.h"
 
 #include <errno.h>
@@ -9,9 +9,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-int ctn_write_file_atomic(ctn_ctx *ctx, const char *path, const char *data, size_t len)
+int ctn_atomic_stage(ctn_ctx *ctx, const char *path, const char *data, size_t len, char **out)
 {
-    if (!path || (!data && len)) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_write_file_atomic: bad arguments");
+    *out = NULL;
     size_t pl = strlen(path);
     char *tmp = ctn_malloc(ctx, pl + 16, 1);
     if (!tmp) return CTN_ERR_NOMEM;
@@ -32,8 +32,36 @@ int ctn_write_file_atomic(ctn_ctx *ctx, const char *path, const char *data, size
     }
     if (!rc && fsync(fd)) rc = ctn_error(ctx, CTN_ERR_IO, "%s: fsync failed: %s", path, strerror(errno));
     if (close(fd) && !rc) rc = ctn_error(ctx, CTN_ERR_IO, "%s: close failed: %s", path, strerror(errno));
-    if (!rc && rename(tmp, path)) rc = ctn_error(ctx, CTN_ERR_IO, "%s: rename failed: %s", path, strerror(errno));
-    if (rc) unlink(tmp);
+    if (rc) {
+        ctn_atomic_abort(tmp);
+        return rc;
+    }
+    *out = tmp;
+    return CTN_OK;
+}
+
+int ctn_atomic_commit(ctn_ctx *ctx, char *tmp, const char *path)
+{
+    int rc = CTN_OK;
+    if (rename(tmp, path)) {
+        rc = ctn_error(ctx, CTN_ERR_IO, "%s: rename failed: %s", path, strerror(errno));
+        unlink(tmp);
+    }
     ctn_free(tmp);
     return rc;
+}
+
+void ctn_atomic_abort(char *tmp)
+{
+    if (!tmp) return;
+    unlink(tmp);
+    ctn_free(tmp);
+}
+
+int ctn_write_file_atomic(ctn_ctx *ctx, const char *path, const char *data, size_t len)
+{
+    if (!path || (!data && len)) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_write_file_atomic: bad arguments");
+    char *tmp = NULL;
+    int rc = ctn_atomic_stage(ctx, path, data, len, &tmp);
+    return rc ? rc : ctn_atomic_commit(ctx, tmp, path);
 }

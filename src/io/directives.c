@@ -6,6 +6,33 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* An integer-valued key in [lo, hi]; *out unchanged when absent. */
+static int key_int(ctn_line *l, const char *key, int lo, int hi, int *out)
+{
+    const char *v = ctn_parse_key(l, 1, key);
+    double x;
+    char what[64];
+    snprintf(what, sizeof what, "'%s'", key);
+    if (!v) return CTN_OK;
+    int rc = ctn_parse_num(l, what, v, &x);
+    if (rc) return rc;
+    if (!(x >= lo && x <= hi) || x != floor(x))
+        return ctn_parse_error(l, "%s must be an integer from %d to %d (found %.40s)", key, lo, hi, v);
+    *out = (int)x;
+    return CTN_OK;
+}
+
+/* A keyword-valued key: index into words[], *out unchanged when absent. */
+static int key_word(ctn_line *l, const char *key, const char *const *words, int n, int *out)
+{
+    const char *v = ctn_parse_key(l, 1, key);
+    if (!v) return CTN_OK;
+    for (int i = 0; i < n; i++)
+        if (!strcmp(v, words[i])) { *out = i; return CTN_OK; }
+    char b[64];
+    return ctn_parse_error(l, "unknown %s '%s'", key, ctn_parse_show(v, b, sizeof b));
+}
+
 static int d_units(ctn_line *l)
 {
     int rc = ctn_parse_positional(l, 2, "units FORCE LENGTH");
@@ -112,9 +139,8 @@ static int d_cable(ctn_line *l)
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[2], &b);
     const char *sec = rc ? NULL : ctn_parse_key(l, 3, "section");
     if (!rc && !sec) return ctn_parse_error(l, "cable: missing required key 'section='");
-    const char *ns = rc ? NULL : ctn_parse_key(l, 3, "n");
-    if (!rc && !ns) return ctn_parse_error(l, "cable: missing required key 'n='");
-    if (!rc) rc = ctn_parse_int(l, "'n' (the element count)", ns, &n);
+    if (!rc && !ctn_parse_key(l, 3, "n")) return ctn_parse_error(l, "cable: missing required key 'n='");
+    if (!rc) rc = key_int(l, "n", 1, CTN_CABLE_MAX_N, &n);
     if (!rc) rc = ctn_parse_key_num(l, 3, "length", 1, &spec.length);
     if (!rc) rc = cable_shape(l, &spec);
     if (!rc) rc = ctn_parse_leftovers(l, 3, "cable");
@@ -144,6 +170,8 @@ static int parse_range(ctn_line *l, const char *s, int *first, int *last)
     char buf[64];
     snprintf(buf, sizeof buf, "%s", s);
     char *dash = strchr(buf, '-');
+    if (dash == buf || (dash && !dash[1]))
+        return ctn_parse_error(l, "element range '%.40s' is not of the form FIRST-LAST, ID or all", s);
     if (dash) *dash = '\0';
     int rc = ctn_parse_int(l, "an element id", buf, first);
     if (!rc) rc = ctn_parse_int(l, "an element id", dash ? dash + 1 : buf, last);
@@ -160,33 +188,6 @@ static int d_hload(ctn_line *l)
     if (!rc) rc = parse_range(l, ctn_parse_key(l, 1, "elements"), &first, &last);
     if (!rc) rc = ctn_parse_leftovers(l, 1, "hload");
     return rc ? rc : ctn_model_add_hload(l->m, q, first, last);
-}
-
-/* An integer-valued key in [lo, hi]; *out unchanged when absent. */
-static int key_int(ctn_line *l, const char *key, int lo, int hi, int *out)
-{
-    const char *v = ctn_parse_key(l, 1, key);
-    double x;
-    char what[64];
-    snprintf(what, sizeof what, "'%s'", key);
-    if (!v) return CTN_OK;
-    int rc = ctn_parse_num(l, what, v, &x);
-    if (rc) return rc;
-    if (!(x >= lo && x <= hi) || x != floor(x))
-        return ctn_parse_error(l, "%s must be an integer from %d to %d (found %.40s)", key, lo, hi, v);
-    *out = (int)x;
-    return CTN_OK;
-}
-
-/* A keyword-valued key: index into words[], *out unchanged when absent. */
-static int key_word(ctn_line *l, const char *key, const char *const *words, int n, int *out)
-{
-    const char *v = ctn_parse_key(l, 1, key);
-    if (!v) return CTN_OK;
-    for (int i = 0; i < n; i++)
-        if (!strcmp(v, words[i])) { *out = i; return CTN_OK; }
-    char b[64];
-    return ctn_parse_error(l, "unknown %s '%s'", key, ctn_parse_show(v, b, sizeof b));
 }
 
 static int d_solve(ctn_line *l)
@@ -223,10 +224,7 @@ static int d_step(ctn_line *l)
 {
     int sub = 0;
     int rc = ctn_parse_positional(l, 1, "step NAME [substeps=N]");
-    if (!rc) {
-        const char *v = ctn_parse_key(l, 2, "substeps");
-        if (v) rc = ctn_parse_int(l, "'substeps'", v, &sub);
-    }
+    if (!rc) rc = key_int(l, "substeps", 1, CTN_SUBSTEPS_MAX, &sub);
     if (!rc) rc = ctn_parse_leftovers(l, 2, "step");
     return rc ? rc : ctn_model_add_step(l->m, l->tok[1], sub);
 }
@@ -244,8 +242,8 @@ static int d_displace(ctn_line *l)
         dofs |= 1u << k;
         rc = ctn_parse_key_num(l, 2, axes[k], 1, &u[k]);
     }
-    if (!rc && !dofs) return ctn_parse_error(l, "displace: give at least one of x=, y=, z=");
     if (!rc) rc = ctn_parse_leftovers(l, 2, "displace");
+    if (!rc && !dofs) return ctn_parse_error(l, "displace: give at least one of x=, y=, z=");
     return rc ? rc : ctn_model_add_displacement(l->m, id, dofs, u);
 }
 

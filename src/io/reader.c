@@ -43,6 +43,11 @@ static int parse_text(ctn_model *m, const char *name, char *text, size_t len)
         if (!rc && l.ntok) {
             ctn_model_set_origin(m, name, l.line);
             rc = ctn_parse_directive(&l);
+            if (rc == CTN_ERR_NOMEM) {                  /* say where it ran out */
+                char msg[CTN_MSG_MAX];
+                snprintf(msg, sizeof msg, "%s", ctn_ctx_message(m->ctx));
+                ctn_error_at(m->ctx, rc, name, l.line, "%s", msg);
+            }
         }
         if (rc) return rc;
         start = end + 1;

@@ -1,5 +1,6 @@
 /* Result files: nodes.csv, elements.csv and result.json in a directory, each written
  * atomically, numbers as %.17g in the C locale. */
+#include "io/atomic.h"
 #include "io/strbuf.h"
 #include "model/model.h"
 #include "solve/solution.h"
@@ -49,45 +50,72 @@ static void elements_csv(ctn_strbuf *b, const ctn_model *m, const ctn_solution *
     }
 }
 
-static int write_one(ctn_ctx *ctx, const char *dir, const char *name, const char *text, size_t n)
+/* Stage one file of the set: dir/name; its temporary name in *tmp. */
+static int stage(ctn_ctx *ctx, const char *dir, const char *name, const char *text, size_t n,
+                 char **tmp)
 {
     char path[4096];
     if ((size_t)snprintf(path, sizeof path, "%s/%s", dir, name) >= sizeof path)
         return ctn_error(ctx, CTN_ERR_IO, "%s: path too long", dir);
-    return ctn_write_file_atomic(ctx, path, text, n);
+    return ctn_atomic_stage(ctx, path, text, n, tmp);
 }
 
-static int write_csvs(ctn_ctx *ctx, const char *dir, const ctn_model *m, const ctn_solution *s)
+/* Render the three files into memory. */
+static int render(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s, ctn_strbuf *nb,
+                  ctn_strbuf *eb, char **json)
 {
-    ctn_strbuf nb = { ctx, NULL, 0, 0, 0 }, eb = { ctx, NULL, 0, 0, 0 };
+    int rc = ctn_result_json(ctx, m, s, 1, json);
+    if (rc) return rc;
     locale_t c = newlocale(LC_ALL_MASK, "C", (locale_t)0);
     locale_t old = c ? uselocale(c) : (locale_t)0;
-    nodes_csv(&nb, m, s);
-    elements_csv(&eb, m, s);
+    nodes_csv(nb, m, s);
+    elements_csv(eb, m, s);
     if (c) {
         uselocale(old);
         freelocale(c);
     }
-    int rc = nb.err ? nb.err : eb.err;
-    if (rc) rc = ctn_error(ctx, rc, "out of memory writing CSV");
-    if (!rc) rc = write_one(ctx, dir, "nodes.csv", nb.s, nb.n);
-    if (!rc) rc = write_one(ctx, dir, "elements.csv", eb.s, eb.n);
-    ctn_sb_free(&nb);
-    ctn_sb_free(&eb);
-    return rc;
+    rc = nb->err ? nb->err : eb->err;
+    return rc ? ctn_error(ctx, rc, "out of memory writing CSV") : CTN_OK;
 }
 
+/* A target that exists must be a regular file (checked before anything is renamed). */
+static int check_targets(ctn_ctx *ctx, const char *dir, const char *const *names)
+{
+    for (int i = 0; i < 3; i++) {
+        char path[4096];
+        struct stat st;
+        snprintf(path, sizeof path, "%s/%s", dir, names[i]);
+        if (!stat(path, &st) && !S_ISREG(st.st_mode))
+            return ctn_error(ctx, CTN_ERR_IO, "%s: exists and is not a regular file", path);
+    }
+    return CTN_OK;
+}
+
+/* All three files are staged before any replaces an older one, so a failure leaves the
+ * previous set (or nothing) in place, never a mix. */
 int ctn_write_results(ctn_ctx *ctx, const char *dir, const ctn_model *m,
                       const ctn_solution *s)
 {
+    static const char *names[3] = { "result.json", "nodes.csv", "elements.csv" };
     if (!dir || !m || !s) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_write_results: bad arguments");
     if (!all_finite(s)) return ctn_error(ctx, CTN_ERR_INVALID, "result holds a NaN or Inf; not written");
     if (mkdir(dir, 0755) && errno != EEXIST)
         return ctn_error(ctx, CTN_ERR_IO, "%s: cannot create directory: %s", dir, strerror(errno));
-    char *json = NULL;
-    int rc = ctn_result_json(ctx, m, s, 1, &json);
-    if (!rc) rc = write_csvs(ctx, dir, m, s);
-    if (!rc) rc = write_one(ctx, dir, "result.json", json, strlen(json));
+    ctn_strbuf nb = { ctx, NULL, 0, 0, 0 }, eb = { ctx, NULL, 0, 0, 0 };
+    char *json = NULL, *tmp[3] = { NULL, NULL, NULL };
+    int rc = check_targets(ctx, dir, names);
+    if (!rc) rc = render(ctx, m, s, &nb, &eb, &json);
+    const char *text[3] = { json, nb.s, eb.s };
+    size_t len[3] = { json ? strlen(json) : 0, nb.n, eb.n };
+    for (int i = 0; i < 3 && !rc; i++) rc = stage(ctx, dir, names[i], text[i], len[i], &tmp[i]);
+    for (int i = 0; i < 3; i++) {
+        char path[4096];
+        snprintf(path, sizeof path, "%s/%s", dir, names[i]);
+        if (!rc) rc = ctn_atomic_commit(ctx, tmp[i], path);
+        else ctn_atomic_abort(tmp[i]);
+    }
     ctn_json_free(json);
+    ctn_sb_free(&nb);
+    ctn_sb_free(&eb);
     return rc;
 }

@@ -7,7 +7,6 @@
 #include <math.h>
 #include <string.h>
 
-#define CTN_CABLE_MAX_N 50000000
 
 
 static int check_spec(const ctn_model *m, const ctn_cable_spec *s, double chord)
@@ -16,6 +15,8 @@ static int check_spec(const ctn_model *m, const ctn_cable_spec *s, double chord)
         return ctn_model_error(m, CTN_ERR_MODEL, "cable: n must be between 1 and %d (got %d)", CTN_CABLE_MAX_N, s->n);
     if (!isfinite(s->length) || s->length <= 0)
         return ctn_model_error(m, CTN_ERR_MODEL, "cable: length must be positive and finite (got %g)", s->length);
+    if (s->shape == CTN_SHAPE_ARC && chord < 1e-12 * s->length)
+        return ctn_model_error(m, CTN_ERR_MODEL, "cable: length %g is more than 1e12 times its chord %g: no arc can be placed in double precision", s->length, chord);
     if (s->shape == CTN_SHAPE_ARC && s->length < chord)
         return ctn_model_error(m, CTN_ERR_MODEL, "cable shorter than its chord (length %.17g < chord %.17g); use shape=straight for a taut cable", s->length, chord);
     if (!isfinite(s->guess_strain) || s->guess_strain < 0 || s->guess_strain >= 1)

@@ -80,6 +80,8 @@ int ctn_model_add_section(ctn_model *m, const char *name, const char *material, 
         return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': A must be positive and finite (got %g)", name, A);
     if (!isfinite(w) || w < 0)
         return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': w must be >= 0 and finite (got %g)", name, w);
+    if (!isfinite(m->materials.v[mat].E * A))
+        return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': E A = %g * %g overflows", name, m->materials.v[mat].E, A);
     if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->sections, 1))) return rc;
     ctn_section *p = &m->sections.v[m->sections.n++];
     snprintf(p->name, sizeof p->name, "%s", name);

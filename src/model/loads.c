@@ -88,8 +88,8 @@ int ctn_model_add_step(ctn_model *m, const char *name, int substeps)
         return ctn_model_error(m, CTN_ERR_MODEL, "step name must have 1 to %d characters", CTN_NAME_MAX - 1);
     for (size_t i = 0; i < m->steps.n; i++)
         if (!strcmp(m->steps.v[i].name, name)) return ctn_model_error(m, CTN_ERR_MODEL, "duplicate step '%s'", name);
-    if (substeps < 0 || substeps > 100000)
-        return ctn_model_error(m, CTN_ERR_MODEL, "step '%s': substeps must be between 1 and 100000", name);
+    if (substeps < 0 || substeps > CTN_SUBSTEPS_MAX)
+        return ctn_model_error(m, CTN_ERR_MODEL, "step '%s': substeps must be between 1 and %d", name, CTN_SUBSTEPS_MAX);
     int rc = CTN_ARRAY_RESERVE(m->ctx, m->steps, 1);
     if (rc) return rc;
     ctn_step *st = &m->steps.v[m->steps.n++];
@@ -152,10 +152,10 @@ int ctn_model_validate(const ctn_model *m)
     if (m->elements.n == 0) return ctn_error(m->ctx, CTN_ERR_MODEL, "%s%sthe model has no elements", m->file, *m->file ? ": " : "");
     if (g0 && has_weight(m, &line))
         return ctn_error_at(m->ctx, CTN_ERR_MODEL, m->file, line,
-                            "section has weight w > 0 but the model has no gravity directive");
+                            "section has weight w > 0 but the gravity vector is zero (no gravity directive, or gravity 0 0 0)");
     if (g0 && m->hloads.n)
         return ctn_error_at(m->ctx, CTN_ERR_MODEL, m->file, m->hloads.v[0].line,
-                            "hload needs a gravity direction (no gravity directive)");
+                            "hload needs a gravity direction (no gravity directive, or gravity 0 0 0)");
     int fixed = 0;
     for (size_t i = 0; i < m->nodes.n && !fixed; i++) fixed = m->nodes.v[i].fix != 0;
     if (!fixed) return ctn_error(m->ctx, CTN_ERR_MODEL, "%s%sthe model has no supports (no node has fix=)", m->file, *m->file ? ": " : "");

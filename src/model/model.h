@@ -36,6 +36,7 @@ typedef struct ctn_element {
     int node[2];     /* node indices */
     int section;     /* section index */
     double l0;
+    int line;        /* defining line in the source, 0 if from the API */
 } ctn_element;
 
 typedef struct ctn_hload {

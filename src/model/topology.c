@@ -66,6 +66,10 @@ int ctn_model_add_element(ctn_model *m, int id, int n1, int n2, const char *sect
     if (l0 == CTN_L0_DEFAULT) l0 = d;
     if (!isfinite(l0) || l0 <= 0)
         return ctn_model_error(m, CTN_ERR_MODEL, "element %d: l0 must be positive and finite (got %g)", id, l0);
+    const ctn_section *sp = &m->sections.v[sec];
+    double k = m->materials.v[sp->material].E * sp->A / l0;
+    if (!isfinite(k))
+        return ctn_model_error(m, CTN_ERR_MODEL, "element %d: axial stiffness E A / l0 overflows (l0 = %g)", id, l0);
     if (m->elements.n >= (size_t)0x7fffffff)
         return ctn_model_error(m, CTN_ERR_MODEL, "too many elements");
     long lim = ctn_ctx_model_limit(m->ctx);
@@ -79,6 +83,7 @@ int ctn_model_add_element(ctn_model *m, int id, int n1, int n2, const char *sect
     e->node[1] = b;
     e->section = sec;
     e->l0 = l0;
+    e->line = m->line;
     if (id > m->max_element_id) m->max_element_id = id;
     return CTN_OK;
 }

@@ -110,10 +110,10 @@ static int record_state(arc *a, size_t count)
 static int check_model(const ctn_engine *e)
 {
     if (ctn_model_step_count(e->m) > 1)
-        return ctn_error(e->ctx, CTN_ERR_MODEL, "arc-length traces one load pattern; the model has %zu steps", ctn_model_step_count(e->m));
+        return ctn_error(e->ctx, CTN_ERR_MODEL, "%s: arc-length traces one load pattern; the model has %zu steps", e->m->file, ctn_model_step_count(e->m));
     for (size_t i = 0; i < e->n3; i++)
         if (e->p1[i] != 0)
-            return ctn_error(e->ctx, CTN_ERR_MODEL, "arc-length does not take prescribed displacements (node %d)", e->m->nodes.v[i / 3].id);
+            return ctn_error(e->ctx, CTN_ERR_MODEL, "%s: arc-length does not take prescribed displacements (node %d)", e->m->file, e->m->nodes.v[i / 3].id);
     return CTN_OK;
 }
 
@@ -144,7 +144,7 @@ static int initial_radius(arc *a)
     int ok, rc = place(a, 0.0, &rn);
     if (!rc) rc = solve_rhs(a, a->F, a->ut, &ok);
     if (rc) return rc;
-    if (!ok) return ctn_error(a->e->ctx, CTN_ERR_MODEL, "arc-length: the initial tangent is singular");
+    if (!ok) return ctn_error(a->e->ctx, CTN_ERR_MODEL, "%s: arc-length: the initial tangent is singular", a->e->m->file);
     a->ds = fabs(a->e->opt.lambda_max) * ctn_norm(a->ut, a->e->ndof) / a->e->opt.steps;
     return CTN_OK;
 }
@@ -223,7 +223,7 @@ int ctn_arclength_run(ctn_engine *e, ctn_solution *s, double *d)
         for (size_t i = 0; i < e->n3; i++)
             if (e->a->eq[i] >= 0) a.F[e->a->eq[i]] = e->f1[i];
         a.fref = ctn_norm(a.F, e->ndof);
-        if (!(a.fref > 0)) rc = ctn_error(e->ctx, CTN_ERR_MODEL, "arc-length needs a load on free DOFs");
+        if (!(a.fref > 0)) rc = ctn_error(e->ctx, CTN_ERR_MODEL, "%s: arc-length needs a load on free DOFs", e->m->file);
     }
     if (!rc) rc = initial_radius(&a);
     if (!rc) rc = trace(&a);

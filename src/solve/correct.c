@@ -190,6 +190,7 @@ static int correct(ctn_engine *e, ctn_solution *s, double *d, ctn_reason *reason
     if (!rc && c.globalized) remember(&c, c.pi);
     if (rc) return rc == CTN_ERR_DOMAIN ? CTN_OK : rc;
     if ((rc = ctn_solution_push_residual(s, c.rn))) return rc;
+    s->sum.residual = c.rn;
     for (int it = 1; it <= e->opt.maxit; it++) {
         ctn_reason why;
         if ((rc = iteration(&c, &why))) return rc;

@@ -56,6 +56,25 @@ static int run_steps(ctn_engine *e, ctn_solution *s, double *d, double *dstep)
     return CTN_OK;
 }
 
+/* The start state must have finite element forces: otherwise the model is beyond double
+ * precision (e.g. a stretch l/l0 of 1e200), an input error naming the element. */
+static int check_start(ctn_engine *e, const double *d)
+{
+    for (size_t i = 0; i < e->a->ne; i++) {
+        double X[CTN_EDOF], u[CTN_EDOF], f[CTN_EDOF];
+        ctn_elem_state st;
+        ctn_asm_gather(e->a, i, d, X, u);
+        int bad = e->a->ops->eval(&e->a->props[i], X, u, f, NULL, &st);
+        if (!bad && isfinite(st.N) && isfinite(st.energy)) continue;
+        const ctn_element *el = &e->m->elements.v[i];
+        if (bad) return ctn_error_at(e->ctx, CTN_ERR_MODEL, e->m->file, el->line, "element %d has zero length in the start state", el->id);
+        return ctn_error_at(e->ctx, CTN_ERR_MODEL, e->m->file, el->line,
+                            "element %d: its force in the start state is not finite (stretch l/l0 = %g, E A = %g)",
+                            el->id, st.l / e->a->props[i].l0, e->a->props[i].EA);
+    }
+    return CTN_OK;
+}
+
 static void resolve_options(const ctn_model *m, const ctn_solve_options *opt, ctn_solve_options *o)
 {
     if (opt) *o = *opt;
@@ -85,6 +104,7 @@ int ctn_solve(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options *opt,
         for (size_t i = 0; i < e.n3; i++)
             d[i] = e.a->eq[i] >= 0 ? m->nodes.v[i / 3].guess[i % 3] : 0.0;
         if (o.method == CTN_METHOD_AUTO) rc = ctn_preshape(&e, d, &s->sum.preshaped);
+        if (!rc) rc = check_start(&e, d);
         if (!rc) rc = o.method == CTN_METHOD_ARCLENGTH ? ctn_arclength_run(&e, s, d) : run_steps(&e, s, d, dstep);
         s->sum.fext_norm = ctn_engine_fref(&e);
         s->sum.ordering = ctn_chol_ordering(e.ch);

@@ -60,7 +60,7 @@ int ctn_engine_setup(ctn_engine *e, ctn_ctx *ctx, const ctn_model *m,
     if (rc) return rc;
     e->n3 = 3 * e->a->nn;
     e->ndof = e->a->ndof;
-    if (e->ndof == 0) return ctn_error(ctx, CTN_ERR_MODEL, "the model has no free degree of freedom");
+    if (e->ndof == 0) return ctn_error(ctx, CTN_ERR_MODEL, "%s: the model has no free degree of freedom", m->file);
     int indefinite = opt->method == CTN_METHOD_ARCLENGTH;
     if ((rc = ctn_chol_create_ex(ctx, e->ndof, e->a->colptr, e->a->rowind, opt->ordering,
                                  indefinite, &e->ch)))

@@ -1,0 +1,324 @@
+#!/usr/bin/env bash
+# tests/cli/errors.sh CATENA: the malformed-input corpus.
+#
+# Every tests/errors/*.cable starts with a header line
+#     # expect: CODE: SUBSTRING
+# CODE is the exit code of `catena solve FILE` (0 converged, 2 bad model, 3 not converged,
+# 4 I/O); SUBSTRING must occur in its stderr. The word FILE in SUBSTRING stands for the
+# path given to catena, so "FILE:7: unknown directive" demands the `file:line:` prefix
+# with line 7. " ... " splits SUBSTRING into pieces that must each occur (in any order),
+# for messages whose exact wording is open: "FILE:7: ... 100000". An empty SUBSTRING
+# (CODE 0) demands an empty stderr.
+#
+# Each case is run four ways and must give the same exit code every time:
+#   plain       exit code, message (bounded in length, starting "catena: ");
+#   --json      exit 0/3: stdout is valid JSON with "converged" true/false;
+#               exit 2/4: stdout empty;
+#   -q -o DIR   no temporary or partial file left in DIR; exit 2/4: DIR holds nothing;
+#               exit 0: result.json (valid, "converged": true), nodes.csv, elements.csv;
+#               exit 3: those three files (result.json with "converged": false) or none;
+#   CRLF        the same file with DOS line endings: same code, same message and line.
+# Hostile inputs that cannot be committed (empty, binary, huge lines, directories,
+# missing files) are generated into a temporary directory below.
+#
+# Run from the repository root (ctest does). Prints "N passed, N failed"; exit 1 on any
+# failure.
+set -u
+
+BIN=${1:?usage: tests/cli/errors.sh PATH/TO/catena}
+case $BIN in /*) ;; *) BIN=$PWD/$BIN ;; esac
+[ -x "$BIN" ] || { echo "errors.sh: $BIN is not an executable" >&2; exit 1; }
+cd "$(dirname "$0")/../.." || exit 1
+[ -d tests/errors ] || { echo "errors.sh: no tests/errors directory" >&2; exit 1; }
+
+T=$(mktemp -d "${TMPDIR:-/tmp}/catena-errors.XXXXXX") || exit 1
+trap 'rm -rf "$T"' EXIT
+
+PASS=0
+FAIL=0
+FAILED_NAMES=()
+WHY=()                               # problems found in the current case
+
+have_python=0
+command -v python3 >/dev/null 2>&1 && have_python=1
+
+# json_converged FILE WANT: FILE is valid JSON with "converged": WANT (true|false).
+json_converged() {
+    if [ "$have_python" = 1 ]; then
+        python3 -m json.tool "$1" >/dev/null 2>&1 || return 1
+        python3 - "$1" "$2" <<'EOF' 2>/dev/null
+import json, sys
+d = json.load(open(sys.argv[1]))
+sys.exit(0 if d.get("converged") is (sys.argv[2] == "true") and isinstance(d.get("reason"), str) else 1)
+EOF
+        return
+    fi
+    # Minimal check: an object from first to last byte, with the converged key.
+    local first last
+    first=$(tr -d ' \t\r\n' <"$1" | head -c 1)
+    last=$(tr -d ' \t\r\n' <"$1" | tail -c 1)
+    [ "$first" = "{" ] && [ "$last" = "}" ] &&
+        tr -d ' \t\r\n' <"$1" | grep -q "\"converged\":$2"
+}
+
+# describe RC: "exit RC" plus a hint for signals.
+describe() {
+    if [ "$1" -ge 128 ]; then echo "exit $1 (killed by signal $(($1 - 128)): a crash)"; else echo "exit $1"; fi
+}
+
+# sanitizer_report ERRFILE MODE: a sanitizer finding is always a failure.
+sanitizer_report() {
+    if grep -qE 'AddressSanitizer|LeakSanitizer|runtime error:|UndefinedBehaviorSanitizer' "$1"; then
+        WHY+=("$2: sanitizer report: $(grep -m1 -E 'Sanitizer|runtime error' "$1")")
+    fi
+}
+
+# check_plain PATH CODE SUBSTRING MODE
+check_plain() {
+    local path=$1 code=$2 want=$3 mode=$4 rc
+    "$BIN" solve "$path" >"$T/out" 2>"$T/err"
+    rc=$?
+    sanitizer_report "$T/err" "$mode"
+    if [ "$rc" != "$code" ]; then
+        WHY+=("$mode: expected exit $code, got $(describe "$rc"); stderr: $(head -c 300 "$T/err")")
+        return
+    fi
+    if [ -z "$want" ]; then
+        [ -s "$T/err" ] && WHY+=("$mode: expected an empty stderr, got: $(head -c 300 "$T/err")")
+    else
+        local rest=$want piece
+        while [ -n "$rest" ]; do
+            piece=${rest%% ... *}
+            if [ "$piece" = "$rest" ]; then rest=; else rest=${rest#* ... }; fi
+            grep -qF -- "$piece" "$T/err" ||
+                WHY+=("$mode: stderr lacks '$piece'; it is: $(head -c 300 "$T/err")")
+        done
+        [ "$code" = 0 ] || head -c 8 "$T/err" | grep -q '^catena: ' ||
+            WHY+=("$mode: the message does not start with 'catena: '")
+    fi
+    local len
+    len=$(wc -c <"$T/err")
+    [ "$len" -le 2048 ] || WHY+=("$mode: message of $len bytes (hostile input echoed unbounded?)")
+}
+
+# check_json PATH CODE
+check_json() {
+    local path=$1 code=$2 rc
+    "$BIN" solve "$path" --json >"$T/json" 2>"$T/err"
+    rc=$?
+    sanitizer_report "$T/err" "--json"
+    [ "$rc" = "$code" ] ||
+        WHY+=("--json: expected exit $code, got $(describe "$rc"); stderr: $(head -c 300 "$T/err")")
+    case $code in
+        0) json_converged "$T/json" true ||
+               WHY+=("--json: stdout is not valid JSON with \"converged\": true") ;;
+        3) json_converged "$T/json" false ||
+               WHY+=("--json: stdout is not valid JSON with \"converged\": false ($(wc -c <"$T/json") bytes)") ;;
+        *) [ -s "$T/json" ] && WHY+=("--json: stdout not empty on exit $code: $(head -c 200 "$T/json")") ;;
+    esac
+}
+
+# check_outdir PATH CODE NAME
+check_outdir() {
+    local path=$1 code=$2 dir=$T/outdir/$3 rc
+    mkdir -p "$T/outdir"
+    "$BIN" solve "$path" -q -o "$dir" >/dev/null 2>"$T/err"
+    rc=$?
+    sanitizer_report "$T/err" "-o"
+    [ "$rc" = "$code" ] ||
+        WHY+=("-o: expected exit $code, got $(describe "$rc"); stderr: $(head -c 300 "$T/err")")
+    if [ -d "$dir" ]; then
+        local stray
+        stray=$(find "$dir" -mindepth 1 ! -name result.json ! -name nodes.csv ! -name elements.csv | head -3)
+        [ -z "$stray" ] && stray=$(find "$dir" -mindepth 1 -name '*tmp*' | head -3)
+        [ -n "$stray" ] && WHY+=("-o: stray (temporary or partial) files: $stray")
+    fi
+    case $code in
+        0|3)
+            local want=true f n=0
+            [ "$code" = 3 ] && want=false
+            for f in result.json nodes.csv elements.csv; do
+                [ -s "$dir/$f" ] && n=$((n + 1))
+            done
+            if [ "$code" = 0 ] || [ "$n" != 0 ]; then     # exit 3 may write all or nothing
+                [ "$n" = 3 ] || WHY+=("-o: expected result.json, nodes.csv, elements.csv; found: $(ls -A "$dir" 2>/dev/null | tr '\n' ' ')")
+            fi
+            [ -s "$dir/result.json" ] && { json_converged "$dir/result.json" "$want" ||
+                WHY+=("-o: result.json is not valid JSON with \"converged\": $want"); }
+            [ -s "$dir/nodes.csv" ] && { head -n 1 "$dir/nodes.csv" | grep -q '^id,x,y,z,ux,uy,uz,fix,rx,ry,rz' ||
+                WHY+=("-o: nodes.csv header"); }
+            [ -s "$dir/elements.csv" ] && { head -n 1 "$dir/elements.csv" | grep -q '^id,node1,node2,l0,length,strain,force,stress' ||
+                WHY+=("-o: elements.csv header"); }
+            ;;
+        *)
+            if [ -d "$dir" ] && [ -n "$(ls -A "$dir")" ]; then
+                WHY+=("-o: files written on exit $code: $(ls -A "$dir" | tr '\n' ' ')")
+            fi
+            ;;
+    esac
+}
+
+# finish NAME: count the case.
+finish() {
+    if [ ${#WHY[@]} -eq 0 ]; then
+        PASS=$((PASS + 1))
+    else
+        FAIL=$((FAIL + 1))
+        FAILED_NAMES+=("$1")
+        echo "FAIL $1"
+        local w
+        for w in "${WHY[@]}"; do echo "     $w"; done
+    fi
+    WHY=()
+}
+
+# run_case NAME PATH CODE SUBSTRING [all]: plain (+ --json and -o with "all").
+run_case() {
+    local name=$1 path=$2 code=$3 want=${4//FILE/$2}
+    check_plain "$path" "$code" "$want" plain
+    if [ "${5:-}" = all ]; then
+        check_json "$path" "$code"
+        check_outdir "$path" "$code" "$name"
+    fi
+    finish "$name"
+}
+
+# ---- the committed corpus -------------------------------------------------------------
+mkdir -p "$T/crlf"
+ncorpus=0
+for f in tests/errors/*.cable; do
+    name=$(basename "$f" .cable)
+    ncorpus=$((ncorpus + 1))
+    header=$(head -n 1 "$f" | tr -d '\r')
+    if ! [[ $header =~ ^#\ expect:\ ([0-9]+):\ ?(.*)$ ]]; then
+        WHY+=("corpus: first line is not '# expect: CODE: SUBSTRING': $header")
+        finish "$name"
+        continue
+    fi
+    code=${BASH_REMATCH[1]}
+    want=${BASH_REMATCH[2]}
+    # The corpus itself: a FILE:N: expectation must point at a directive line.
+    if [[ $want =~ FILE:([0-9]+): ]]; then
+        n=${BASH_REMATCH[1]}
+        line=$(sed -n "${n}p" "$f" | tr -d '\r' | sed 's/#.*//; s/[[:space:]]//g')
+        [ -n "$line" ] || WHY+=("corpus: line $n of $f is blank or a comment")
+    fi
+    check_plain "$f" "$code" "${want//FILE/$f}" plain
+    check_json "$f" "$code"
+    check_outdir "$f" "$code" "$name"
+    # The same model with CRLF line endings.
+    c=$T/crlf/$name.cable
+    sed 's/\r*$/\r/' "$f" >"$c"
+    check_plain "$c" "$code" "${want//FILE/$c}" CRLF
+    finish "$name"
+done
+[ "$ncorpus" -ge 45 ] || { WHY+=("only $ncorpus corpus files (at least 45 expected)"); finish corpus_size; }
+
+# The committed CRLF case must really have CRLF endings (an editor or git may strip them).
+if ! grep -q $'\r$' tests/errors/ok_crlf.cable; then
+    WHY+=("tests/errors/ok_crlf.cable lost its CRLF line endings")
+fi
+finish ok_crlf_has_cr
+
+# ---- generated hostile inputs ---------------------------------------------------------
+G=$T/gen
+mkdir -p "$G"
+PAPER='units kN m
+material steel E=2.0e8
+section strand material=steel A=3.14e-4 w=0.1
+gravity 0 -1 0
+node 1 0 0 0 fix=xyz
+node 2 200 0 0 fix=xyz
+cable 1 2 section=strand n=20 length=200.3340'
+
+# Repeat character $1 $2 times.
+rep() { head -c "$2" /dev/zero | tr '\0' "$1"; }
+
+: >"$G/empty.cable"
+run_case gen_empty_file "$G/empty.cable" 2 "FILE: the model has no elements" all
+
+run_case gen_dev_null /dev/null 2 "FILE: the model has no elements"
+
+printf '\000\001\002\003garbage\377\376\n' >"$G/nul_line1.cable"
+run_case gen_binary_nul_line1 "$G/nul_line1.cable" 2 "FILE:1: binary data (a NUL byte)" all
+
+printf 'units kN m\nmaterial steel E=2.0e8\n\nnode 1 0\0000 0\n' >"$G/nul_line4.cable"
+run_case gen_binary_nul_line4 "$G/nul_line4.cable" 2 "FILE:4: binary data (a NUL byte)" all
+
+printf '\177ELF\002\001\001\003 \377\376\375\n\211PNG\r\n\032\n' >"$G/elf.cable"
+run_case gen_binary_no_nul "$G/elf.cable" 2 "FILE:1: unknown directive '\\x7fELF" all
+
+# 4 KiB of deterministic pseudo-random bytes (a linear congruential generator).
+seed=12345
+esc=''
+for ((i = 0; i < 4096; i++)); do
+    seed=$(((seed * 1103515245 + 12345) % 2147483648))
+    esc+=$(printf '\\%03o' $(((seed >> 16) & 255)))
+done
+printf "$esc" >"$G/random.cable"
+run_case gen_binary_random "$G/random.cable" 2 "FILE:" all
+
+printf '\357\273\277units kN m\n' >"$G/bom.cable"
+run_case gen_utf8_bom "$G/bom.cable" 2 "FILE:1: unknown directive" all
+
+{ echo "units kN m"; printf '# '; rep a 1048576; printf '\nbogus 1\n'; } >"$G/long_comment.cable"
+run_case gen_long_comment_then_error "$G/long_comment.cable" 2 "FILE:3: unknown directive 'bogus'" all
+
+{ echo "units kN m"; rep a 1048576; echo; } >"$G/long_directive.cable"
+run_case gen_long_directive "$G/long_directive.cable" 2 "FILE:2: unknown directive 'aaaaaaaaaa" all
+
+{ printf 'node 1 0 0 '; rep 1 100000; echo; } >"$G/long_number.cable"
+run_case gen_long_number "$G/long_number.cable" 2 "FILE:1: non-finite number for a coordinate" all
+
+{ printf 'material '; rep m 100000; echo " E=1"; } >"$G/long_name.cable"
+run_case gen_long_name "$G/long_name.cable" 2 "FILE:1: material name longer than 63 characters" all
+
+{ printf 'node 1 0 0 0 '; rep k 1048576; echo "=1"; } >"$G/long_key.cable"
+run_case gen_long_key "$G/long_key.cable" 2 "FILE:1: unknown key 'kkkkkkkkkk" all
+
+{ printf '%s\n' "$PAPER" | sed 's/section=strand/section='"$(rep s 100000)"'/'; } >"$G/long_value.cable"
+run_case gen_long_section_reference "$G/long_value.cable" 2 "FILE:7: cable: undefined section 'sssssssss" all
+
+{ rep '\n' 1000000; echo "bogus"; } >"$G/many_lines.cable"
+run_case gen_million_blank_lines "$G/many_lines.cable" 2 "FILE:1000001: unknown directive 'bogus'" all
+
+{ printf '%s\n' "$PAPER"; printf '# '; rep c 1048576; echo; } >"$G/ok_long_comment.cable"
+run_case gen_ok_long_trailing_comment "$G/ok_long_comment.cable" 0 "" all
+
+printf '%s' "$PAPER" >"$G/ok_no_final_newline.cable"
+run_case gen_ok_no_final_newline "$G/ok_no_final_newline.cable" 0 "" all
+
+{ printf '%s\n' "$PAPER"; printf 'frobnicate\n'; } | sed 's/$/\r/' >"$G/crlf_error.cable"
+run_case gen_crlf_error_line "$G/crlf_error.cable" 2 "FILE:8: unknown directive 'frobnicate'" all
+
+mkdir -p "$G/a_directory.cable"
+run_case gen_directory_as_model "$G/a_directory.cable" 4 "FILE: " all
+
+run_case gen_missing_file "$G/no_such_file.cable" 4 "FILE: cannot open" all
+
+# ---- output that cannot be written: exit 4 and nothing half-written -------------------
+printf '%s\n' "$PAPER" >"$G/paper.cable"
+dir=$T/blocked
+mkdir -p "$dir/elements.csv"                       # a directory where a file must go
+"$BIN" solve "$G/paper.cable" -q -o "$dir" >/dev/null 2>"$T/err"
+rc=$?
+[ "$rc" = 4 ] || WHY+=("expected exit 4 when elements.csv cannot be written, got $(describe "$rc")")
+grep -qF "elements.csv" "$T/err" || WHY+=("the message does not name elements.csv: $(cat "$T/err")")
+stray=$(find "$dir" -mindepth 1 -name '*tmp*')
+[ -z "$stray" ] || WHY+=("temporary files left behind: $stray")
+[ -e "$dir/result.json" ] && WHY+=("result.json written although elements.csv failed")
+finish gen_output_blocked
+
+touch "$T/plainfile"
+"$BIN" solve "$G/paper.cable" -q -o "$T/plainfile/sub" >/dev/null 2>"$T/err"
+rc=$?
+[ "$rc" = 4 ] || WHY+=("expected exit 4 for an output directory under a regular file, got $(describe "$rc")")
+grep -qF "$T/plainfile/sub" "$T/err" || WHY+=("the message does not name the directory: $(cat "$T/err")")
+finish gen_output_under_file
+
+echo "${PASS} passed, ${FAIL} failed"
+if [ "$FAIL" -gt 0 ]; then
+    echo "failed: ${FAILED_NAMES[*]}"
+    exit 1
+fi
+exit 0
