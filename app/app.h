@@ -30,4 +30,34 @@ typedef struct ctn_iter_log {
 } ctn_iter_log;
 void ctn_print_iteration(void *data, int it, double rnorm, double dnorm);
 
+/* ---- compare, study, convergence (cmd_compare.c, cmd_study.c, cmd_convergence.c) ---- */
+#include <cjson/cJSON.h>
+
+int ctn_cmd_compare(int argc, char **argv);
+int ctn_cmd_study(int argc, char **argv);
+int ctn_cmd_convergence(int argc, char **argv);
+/* Shared helpers (cmd_report.c). */
+/* Comma-separated numbers (':' also separates) into out[cap]; 0 on success. */
+int ctn_app_parse_list(const char *s, double *out, size_t cap, size_t *n);
+void ctn_app_print_span(FILE *out, const ctn_span *s);
+/* Stress in MPa when the model has units, else unchanged. */
+double ctn_app_stress(const ctn_span *s, double stress);
+void ctn_app_print_header(FILE *out, const ctn_span *s);
+void ctn_app_print_values(FILE *out, const char *label, const ctn_span *s, const ctn_compare_values *v);
+void ctn_app_print_diffs(FILE *out, const ctn_compare_values *v, const ctn_compare_values *ref);
+/* Object `key` in parent with the compared values (and their relative differences to
+ * ref when ref is not NULL); NULL when out of memory. */
+cJSON *ctn_app_values_json(cJSON *parent, const char *key, const ctn_compare_values *v,
+                           const ctn_compare_values *ref);
+/* Print root on stdout; exit code (CTN_EXIT_IO when root is NULL: out of memory). */
+int ctn_app_print_json(cJSON *root);
+/* Render the figures names[0..n-1] in dir with gnuplot, or say how to. Exit code. */
+int ctn_app_render(ctn_ctx *ctx, const char *dir, const char *const *names, size_t n, int quiet);
+
+/* `catena study` output (cmd_study_print.c): the summary, the marked lengths and the
+ * error table at levels[0..nlevels-1] (room for cap; the claims' stresses are added). */
+void ctn_app_study_report(const ctn_study *st, const char *model, size_t sweep, double *levels,
+                          size_t nlevels, size_t cap, const double *claims, size_t nclaims);
+int ctn_app_study_json(const ctn_study *st, const char *model);
+
 #endif

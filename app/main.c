@@ -10,6 +10,9 @@ static void usage(FILE *f)
             "\n"
             "commands:\n"
             "  solve MODEL [--json] [-o DIR] [-q]   solve a .cable model (docs/format.md)\n"
+            "  compare MODEL [--json] [-o DIR] [-q] FEA of a single span against the closed forms\n"
+            "  study MODEL... [options]              FEA against the catenary over cable lengths\n"
+            "  convergence MODEL [--n LIST] [...]    mesh convergence to the elastic catenary\n"
             "  help                                  this text\n"
             "\n"
             "exit codes: 0 converged, 1 usage, 2 bad model, 3 not converged, 4 I/O error\n");
@@ -30,6 +33,9 @@ int main(int argc, char **argv)
         return CTN_EXIT_USAGE;
     }
     if (!strcmp(argv[1], "solve")) return ctn_cmd_solve(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "compare")) return ctn_cmd_compare(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "study")) return ctn_cmd_study(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "convergence")) return ctn_cmd_convergence(argc - 1, argv + 1);
     if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
         usage(stdout);
         return CTN_EXIT_OK;

@@ -15,5 +15,7 @@
 #include "catena/io.h"
 #include "catena/solve.h"
 #include "catena/analytic.h"
+#include "catena/compare.h"
+#include "catena/plot.h"
 
 #endif

@@ -32,7 +32,7 @@ static int parse_text(ctn_model *m, const char *name, char *text, size_t len)
     memset(&l, 0, sizeof l);
     l.m = m;
     l.file = name;
-    size_t start = 0;
+    size_t start = len >= 3 && !memcmp(text, "\xef\xbb\xbf", 3) ? 3 : 0;   /* UTF-8 BOM */
     for (l.line = 1; start < len || (start == len && l.line == 1); l.line++) {
         char *nl = memchr(text + start, '\n', len - start);
         size_t end = nl ? (size_t)(nl - text) : len;

@@ -258,8 +258,10 @@ done
 printf "$esc" >"$G/random.cable"
 run_case gen_binary_random "$G/random.cable" 2 "FILE:" all
 
-printf '\357\273\277units kN m\n' >"$G/bom.cable"
-run_case gen_utf8_bom "$G/bom.cable" 2 "FILE:1: unknown directive" all
+{ printf '\357\273\277'; printf '%s\n' "$PAPER"; } >"$G/bom.cable"
+run_case gen_utf8_bom "$G/bom.cable" 0 "" all
+{ printf 'units kN m\n\357\273\277gravity 0 -1 0\n'; } >"$G/bom_later.cable"
+run_case gen_utf8_bom_not_first "$G/bom_later.cable" 2 "FILE:2: unknown directive" all
 
 { echo "units kN m"; printf '# '; rep a 1048576; printf '\nbogus 1\n'; } >"$G/long_comment.cable"
 run_case gen_long_comment_then_error "$G/long_comment.cable" 2 "FILE:3: unknown directive 'bogus'" all

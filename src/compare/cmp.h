@@ -1,0 +1,55 @@
+/* Internal: the comparison object and the helpers shared by src/compare/. */
+#ifndef CTN_COMPARE_CMP_H
+#define CTN_COMPARE_CMP_H
+
+#include "catena/analytic.h"
+#include "catena/compare.h"
+#include "core/ctx.h"
+
+#define CTN_CMP_SAMPLES 201        /* points of a sampled closed-form curve */
+
+struct ctn_compare {
+    ctn_ctx *ctx;
+    ctn_span span;
+    size_t *node;          /* [n + 1] node indices along the span, support 0 first */
+    size_t *elem;          /* [n] element indices in span order */
+    double *l0;            /* [n] unstressed lengths */
+    double *EA;            /* [n] axial stiffnesses (all span.EA) */
+    double *Xref;          /* [3 (n + 1)] reference positions of the span's nodes */
+    double *P;             /* [2 (n + 1)] lumped loads of the nodes, in plane (x, y) */
+    double W;              /* total load along -y [force] */
+    unsigned has;          /* bit (1 << form) set for each form with values */
+    ctn_compare_values v[CTN_FORM_COUNT];
+    ctn_catenary cat;
+    ctn_ecatenary ecat;
+    ctn_parabola par[2];   /* inextensible, elastic */
+    double *poly[2];       /* [3 n + 2] funicular polygons (inextensible, elastic):
+                              joints x0 y0 ... xn yn, then the n segment tensions */
+    double *fea;           /* [3 n + 2] FEA: node positions, then element forces */
+};
+
+/* Span detection (span.c): fills span.n, support, generated, node, elem, l0, EA and
+ * the section data; allocates the arrays. */
+int ctn_cmp_find_span(ctn_compare *c, const ctn_model *m);
+/* Geometry and loads (span_loads.c): plane, l, h, w, q, loads flags, P, W. */
+int ctn_cmp_span_loads(ctn_compare *c, const ctn_model *m);
+/* Closed forms (forms.c): every form that applies, into has / v / cat ... poly. */
+int ctn_cmp_solve_forms(ctn_compare *c);
+/* Values of a polyline of n segments (xy [2 (n + 1)], forces N [n]) in the span's
+ * plane, supports carrying the loads P[0..1] and P[2n..2n+1] (fea.c). */
+int ctn_cmp_polyline_values(const ctn_compare *c, const double *xy, const double *N,
+                            ctn_compare_values *v);
+/* Dot product and plane coordinates (x, y) of a 3D point relative to span.origin. */
+double ctn_cmp_dot3(const double a[3], const double b[3]);
+void ctn_cmp_to_plane(const ctn_span *s, const double p[3], double xy[2]);
+
+/* A fresh single-span model like the span of base (see ctn_study_run): unstressed
+ * length L0, n elements, strain measure, the base's solve options (build.c). */
+int ctn_cmp_build(ctn_ctx *ctx, const ctn_model *base, const ctn_span *span, double L0,
+                  size_t n, ctn_strain strain, ctn_model **out);
+/* Solve a built model with its own options; on non-convergence with a method other
+ * than AUTO, solve again with AUTO (*fallback = 1). *s owns the last solution. */
+int ctn_cmp_solve(ctn_ctx *ctx, const ctn_model *m, double tol, ctn_solution **s,
+                  int *fallback);
+
+#endif

@@ -1,0 +1,200 @@
+#!/usr/bin/env bash
+# tests/cli/compare.sh CATENA: end-to-end checks of `catena compare`.
+#
+#   - the paper's four cables: exit 0, empty stderr, a table with the FEA, the catenary,
+#     the elastic catenary and their differences;
+#   - --json: the keys fea, catenary, elastic_catenary with sag, max_tension, min_tension,
+#     horizontal_force, all finite; the catenary's values against an independent bisection
+#     here (python3), the FEA's support tension against `catena solve --json`'s reactions
+#     (resultant), and the paper's direction: at high stress the catenary over-predicts the
+#     stress and under-predicts the sag (> 3 %), on the slack cables both agree within 1 %;
+#   - a weightless chain with point loads and engineering strain: funicular and
+#     elastic_funicular keys, the elastic funicular equal to the FEA to 1e-9;
+#   - -o DIR: the data files and the two gnuplot scripts (and SVGs when gnuplot is there);
+#     with no gnuplot (CATENA_GNUPLOT=/nonexistent): exit 0, data and scripts written and
+#     a message saying how to render them;
+#   - usage errors exit 1, a missing file 4, a model that is not a single span 2, a model
+#     that does not converge 3, each with a message on stderr.
+# Prints "N passed, N failed"; exit 1 on any failure.
+set -u
+
+BIN=${1:?usage: tests/cli/compare.sh PATH/TO/catena}
+case $BIN in /*) ;; *) BIN=$PWD/$BIN ;; esac
+[ -x "$BIN" ] || { echo "compare.sh: $BIN is not an executable" >&2; exit 1; }
+cd "$(dirname "$0")/../.." || exit 1
+
+T=$(mktemp -d "${TMPDIR:-/tmp}/catena-compare.XXXXXX") || exit 1
+trap 'rm -rf "$T"' EXIT
+
+PASS=0
+FAIL=0
+WHY=()
+have_python=0
+command -v python3 >/dev/null 2>&1 && have_python=1
+have_gnuplot=0
+command -v gnuplot >/dev/null 2>&1 && have_gnuplot=1
+
+finish() {
+    if [ ${#WHY[@]} -eq 0 ]; then
+        PASS=$((PASS + 1))
+    else
+        FAIL=$((FAIL + 1))
+        echo "FAIL $1"
+        local w
+        for w in "${WHY[@]}"; do echo "     $w"; done
+    fi
+    WHY=()
+}
+
+# check_paper_json COMPARE.json SOLVE.json S: keys, independent catenary, directions.
+check_paper_json() {
+    if [ "$have_python" = 0 ]; then
+        local k
+        for k in fea catenary elastic_catenary sag max_tension min_tension horizontal_force; do
+            grep -q "\"$k\"" "$1" || { echo "missing key '$k'"; return 1; }
+        done
+        return 0
+    fi
+    python3 - "$@" <<'PY'
+import json, math, sys
+c = json.load(open(sys.argv[1])); s = json.load(open(sys.argv[2])); S = float(sys.argv[3])
+err = []
+def need(cond, what):
+    if not cond: err.append(what)
+for k in ("fea", "catenary", "elastic_catenary", "parabola", "elastic_parabola", "elastic_funicular"):
+    need(k in c, "missing key %s" % k)
+    for q in ("sag", "max_tension", "min_tension", "horizontal_force"):
+        need(k in c and isinstance(c[k].get(q), (int, float)) and math.isfinite(c[k][q]) and c[k][q] > 0,
+             "%s.%s missing or not positive" % (k, q))
+need("funicular" not in c, "funicular given without point loads")
+if err: print("; ".join(err)); sys.exit(1)
+# the inextensible catenary by bisection: S = 2 c sinh(l / 2c), w = 0.1, l = 200
+lo, hi = 1.0, 1e6
+for _ in range(200):
+    m = math.sqrt(lo * hi)
+    if 2 * m * math.sinh(100 / m) > S: lo = m
+    else: hi = m
+cc = math.sqrt(lo * hi)
+cat = c["catenary"]
+need(abs(cat["max_tension"] - 0.1 * cc * math.cosh(100 / cc)) <= 1e-9 * cat["max_tension"], "catenary T_max")
+need(abs(cat["horizontal_force"] - 0.1 * cc) <= 1e-9 * cat["horizontal_force"], "catenary H")
+need(abs(cat["sag"] - cc * (math.cosh(100 / cc) - 1)) <= 1e-8 * cat["sag"], "catenary sag")
+# the FEA's support tension is the resultant reaction of `catena solve`
+R = max(math.hypot(r["fx"], r["fy"]) for r in s["reactions"])
+need(abs(c["fea"]["max_tension"] - R) <= 1e-9 * R, "FEA T_max %r is not the resultant reaction %r" % (c["fea"]["max_tension"], R))
+need(abs(c["fea"]["horizontal_force"] - abs(s["reactions"][0]["fx"])) <= 1e-9 * R, "FEA H")
+dT = cat["max_tension"] / c["fea"]["max_tension"] - 1
+dS = cat["sag"] / c["fea"]["sag"] - 1
+need(abs(c["catenary"]["relative_difference"]["max_tension"] - dT) < 1e-12, "relative_difference")
+if S < 202:
+    need(dT > 0.03 and dS < -0.03, "S=%g: expected stress over, sag under: %.4f %.4f" % (S, dT, dS))
+else:
+    need(abs(dT) < 0.01 and abs(dS) < 0.01, "S=%g: expected agreement within 1 %%: %.4f %.4f" % (S, dT, dS))
+if err: print("; ".join(err)); sys.exit(1)
+PY
+}
+
+# ---- the paper's cables ------------------------------------------------------------------
+for f in examples/paper/s*.cable; do
+    name=$(basename "$f" .cable)
+    S=$(sed -n 's/.*length=\([0-9.]*\).*/\1/p' "$f")
+    "$BIN" compare "$f" >"$T/out" 2>"$T/err"
+    rc=$?
+    [ "$rc" = 0 ] || WHY+=("plain: exit $rc: $(head -c 300 "$T/err")")
+    [ -s "$T/err" ] && WHY+=("plain: stderr not empty: $(head -c 300 "$T/err")")
+    for row in "^FEA " "^catenary " "^elastic catenary " "difference \[%\]"; do
+        grep -q "$row" "$T/out" || WHY+=("plain: no line matching '$row'")
+    done
+    "$BIN" compare "$f" --json >"$T/c.json" 2>"$T/err" || WHY+=("--json: exit $?")
+    "$BIN" solve "$f" --json >"$T/s.json" 2>/dev/null || WHY+=("solve --json failed")
+    msg=$(check_paper_json "$T/c.json" "$T/s.json" "$S") || WHY+=("--json: $msg")
+    finish "compare $name"
+done
+
+# ---- figures --------------------------------------------------------------------------------
+f=examples/paper/s201.3545.cable
+"$BIN" compare "$f" -o "$T/fig" -q >"$T/out" 2>"$T/err"
+rc=$?
+[ "$rc" = 0 ] || WHY+=("-o: exit $rc: $(head -c 300 "$T/err")")
+for k in compare_shape.gp compare_stress.gp compare_shape_fea.dat compare_shape_catenary.dat \
+         compare_shape_elastic_catenary.dat compare_stress_fea.dat compare_stress_catenary.dat; do
+    [ -s "$T/fig/$k" ] || WHY+=("-o: $k missing")
+done
+if [ "$have_gnuplot" = 1 ]; then
+    for k in compare_shape.svg compare_stress.svg; do
+        grep -q "<svg" "$T/fig/$k" 2>/dev/null || WHY+=("-o: $k missing or not SVG")
+    done
+fi
+grep -qi "nan\|inf" "$T/fig"/*.dat && WHY+=("-o: a data file holds nan or inf")
+[ "$(grep -v '^#' "$T/fig/compare_shape_fea.dat" | wc -l)" = 21 ] || WHY+=("-o: FEA shape is not 21 nodes")
+ls "$T/fig" | grep -q tmp && WHY+=("-o: a temporary file was left")
+[ -s "$T/out" ] && WHY+=("-q: printed something")
+finish "compare -o"
+
+CATENA_GNUPLOT=/nonexistent/gnuplot "$BIN" compare "$f" -o "$T/nognu" >"$T/out" 2>"$T/err"
+rc=$?
+[ "$rc" = 0 ] || WHY+=("exit $rc")
+[ -s "$T/nognu/compare_shape.gp" ] && [ -s "$T/nognu/compare_stress_fea.dat" ] || WHY+=("scripts or data missing")
+ls "$T/nognu" | grep -q svg && WHY+=("an SVG without gnuplot")
+grep -q "gnuplot not found" "$T/err" && grep -q "gnuplot compare_shape.gp" "$T/err" || WHY+=("no message: $(cat "$T/err")")
+grep -q "^FEA " "$T/out" || WHY+=("no table")
+finish "compare -o without gnuplot"
+
+# ---- point loads: the elastic funicular is the FEA ------------------------------------------
+cat >"$T/chain.cable" <<'CABLE'
+units kN m
+material steel E=2.0e8 strain=engineering
+section rod material=steel A=1e-4
+node 1 0 0 0 fix=xyz
+node 2 4 -2 0 fix=z
+node 3 7 -2.5 0 fix=z
+node 4 12 1 0 fix=xyz
+element 1 1 2 section=rod l0=4.4
+element 2 2 3 section=rod l0=3.1
+element 3 3 4 section=rod l0=6.2
+load 2 1 -10 0
+load 3 0 -25 0
+CABLE
+"$BIN" compare "$T/chain.cable" --json >"$T/chain.json" 2>"$T/err"
+rc=$?
+[ "$rc" = 0 ] || WHY+=("exit $rc: $(head -c 300 "$T/err")")
+if [ "$have_python" = 1 ] && [ "$rc" = 0 ]; then
+    msg=$(python3 - "$T/chain.json" <<'PY'
+import json, sys
+c = json.load(open(sys.argv[1]))
+err = []
+for k in ("fea", "funicular", "elastic_funicular"):
+    if k not in c: err.append("missing %s" % k)
+for k in ("catenary", "parabola"):
+    if k in c: err.append("%s given for point loads" % k)
+if not err:
+    for q, v in c["elastic_funicular"]["relative_difference"].items():
+        if abs(v) > 1e-9: err.append("elastic funicular %s differs by %g" % (q, v))
+print("; ".join(err)); sys.exit(1 if err else 0)
+PY
+) || WHY+=("$msg")
+fi
+finish "compare point loads"
+
+# ---- errors -----------------------------------------------------------------------------------
+expect() {   # expect CODE TEXT ARGS...: exit code and a stderr substring
+    local code=$1 text=$2
+    shift 2
+    "$BIN" "$@" >"$T/out" 2>"$T/err"
+    local rc=$?
+    [ "$rc" = "$code" ] || WHY+=("'$*': exit $rc, expected $code")
+    grep -q -- "$text" "$T/err" || WHY+=("'$*': stderr lacks '$text': $(head -c 200 "$T/err")")
+}
+expect 1 "usage: catena compare" compare
+expect 1 "unknown or incomplete option" compare examples/paper/s200.3340.cable --bogus
+expect 1 "more than one model" compare a.cable b.cable
+expect 4 "catena: " compare "$T/does-not-exist.cable"
+sed 's/^cable 1 2/node 3 0 50 0 fix=xyz\nnode 4 200 50 0 fix=xyz\ncable 3 4 section=strand n=4 length=201\ncable 1 2/' \
+    examples/paper/s250.8777.cable >"$T/two.cable"
+expect 2 "not a single span" compare "$T/two.cable"
+sed 's/maxit=50/maxit=1/' examples/paper/s250.8777.cable >"$T/maxit.cable"
+expect 3 "did not converge" compare "$T/maxit.cable"
+finish "compare errors"
+
+echo "$PASS passed, $FAIL failed"
+[ "$FAIL" = 0 ]
