@@ -14,11 +14,19 @@ static double urand(unsigned *seed, double lo, double hi)
     return lo + (hi - lo) * (double)((*seed >> 8) & 0xffffff) / (double)0xffffff;
 }
 
+/* The full symmetric 6 x 6 matrix from the kernel's packed upper triangle. */
+static void unpack(const double *P, double K[36])
+{
+    for (int i = 0; i < 6; i++)
+        for (int j = i; j < 6; j++) K[6 * i + j] = K[6 * j + i] = P[ctn_packed_index(i, j)];
+}
+
 /* max |K - K_fd| / max |K| for one configuration. */
 static double tangent_error(const ctn_cable_props *p, const double X[6], const double u[6])
 {
-    double f[6], K[36], kmax = 0, emax = 0;
-    ctn_cable2_eval(p, X, u, f, K, NULL);
+    double f[6], P[CTN_EPACKED], K[36], kmax = 0, emax = 0;
+    ctn_cable2_eval(p, X, u, f, P, NULL);
+    unpack(P, K);
     for (int j = 0; j < 6; j++) {
         double up[6], um[6], fp[6], fm[6];
         double h = 1e-6 * (1.0 + fabs(X[j]));
@@ -120,14 +128,14 @@ static void test_axial_laws(void)
 
 static void test_tension_only(void)
 {
-    double X[6] = { 0, 0, 0, 10, 0, 0 }, u[6] = { 0, 0, 0, -0.5, 0, 0 }, f[6], K[36];
+    double X[6] = { 0, 0, 0, 10, 0, 0 }, u[6] = { 0, 0, 0, -0.5, 0, 0 }, f[6], K[CTN_EPACKED];
     ctn_cable_props p = { 1000, 10, CTN_STRAIN_GREEN_LAGRANGE, 1 };
     ctn_elem_state s;
     ctn_cable2_eval(&p, X, u, f, K, &s);
     CHECK(s.slack == 1);
     CHECK(s.N == 0);
     double kmax = 0;
-    for (int i = 0; i < 36; i++) kmax = fmax(kmax, fabs(K[i]));
+    for (int i = 0; i < CTN_EPACKED; i++) kmax = fmax(kmax, fabs(K[i]));
     CHECK(kmax == 0);
     u[3] = 0.5;
     ctn_cable2_eval(&p, X, u, f, K, &s);

@@ -39,23 +39,26 @@ void ctn_asm_destroy(ctn_asm **a)
     *a = NULL;
 }
 
-/* Add (or, for an entry's first element, assign) an element's upper-triangle entries. */
+/* Add (or, for an entry's first element, assign) an element's packed upper triangle. */
 static void scatter_K(const int *slot, const double *Ke, double *Kx)
 {
-    for (int i = 0; i < CTN_EDOF; i++)
-        for (int j = i; j < CTN_EDOF; j++) {
-            int s = slot[ctn_asm_local_slot(i, j)];
-            if (s >= 0) Kx[s] += Ke[CTN_EDOF * i + j];
-            else if (s <= -2) Kx[-(s + 2)] = Ke[CTN_EDOF * i + j];
-        }
+    for (int t = 0; t < CTN_ESLOTS; t++) {
+        int s = slot[t];
+        if (s >= 0) Kx[s] += Ke[t];
+        else if (s <= -2) Kx[-(s + 2)] = Ke[t];
+    }
 }
 
 void ctn_asm_gather(const ctn_asm *a, size_t e, const double *d, double *X, double *u)
 {
     const int *nd = a->m->elements.v[e].node;
-    for (int k = 0; k < CTN_EDOF; k++) {
-        X[k] = a->m->nodes.v[nd[k / 3]].X[k % 3];
-        u[k] = d[3 * (size_t)nd[k / 3] + (size_t)(k % 3)];
+    const double *X0 = a->m->nodes.v[nd[0]].X, *X1 = a->m->nodes.v[nd[1]].X;
+    const double *u0 = d + 3 * (size_t)nd[0], *u1 = d + 3 * (size_t)nd[1];
+    for (int k = 0; k < 3; k++) {
+        X[k] = X0[k];
+        X[3 + k] = X1[k];
+        u[k] = u0[k];
+        u[3 + k] = u1[k];
     }
 }
 
@@ -72,14 +75,18 @@ int ctn_asm_eval_energy(const ctn_asm *a, const double *d, double *f, double *Kx
     memset(f, 0, 3 * a->nn * sizeof(double));
     for (size_t e = 0; e < a->ne; e++) {
         const int *nd = a->m->elements.v[e].node;
-        double X[CTN_EDOF], u[CTN_EDOF], fe[CTN_EDOF], Ke[CTN_EDOF * CTN_EDOF];
+        double X[CTN_EDOF], u[CTN_EDOF], fe[CTN_EDOF], Ke[CTN_ESLOTS];
         ctn_asm_gather(a, e, d, X, u);
         if (a->ops->eval(&a->props[e], X, u, fe, Kx ? Ke : NULL, U ? &st : NULL)) {
             if (bad) *bad = e;
             return CTN_ERR_DOMAIN;
         }
         if (U) energy += st.energy;
-        for (int k = 0; k < CTN_EDOF; k++) f[3 * (size_t)nd[k / 3] + (size_t)(k % 3)] += fe[k];
+        double *f0 = f + 3 * (size_t)nd[0], *f1 = f + 3 * (size_t)nd[1];
+        for (int k = 0; k < 3; k++) {
+            f0[k] += fe[k];
+            f1[k] += fe[3 + k];
+        }
         if (Kx) scatter_K(a->slot + e * CTN_ESLOTS, Ke, Kx);
     }
     if (U) *U = energy;

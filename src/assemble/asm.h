@@ -8,7 +8,7 @@
 #include "model/model.h"
 
 #define CTN_EDOF 6                     /* DOFs of a two-node element */
-#define CTN_ESLOTS 21                  /* upper-triangle entries of its 6x6 matrix */
+#define CTN_ESLOTS CTN_EPACKED         /* upper-triangle entries of its 6x6 matrix */
 
 typedef struct ctn_asm {
     const ctn_model *m;
@@ -58,7 +58,7 @@ int ctn_asm_scatter_map(ctn_ctx *ctx, ctn_asm *a);
 /* Local upper-triangle index of the pair (i, j), i <= j < CTN_EDOF. */
 static inline int ctn_asm_local_slot(int i, int j)
 {
-    return i * CTN_EDOF - i * (i - 1) / 2 + (j - i);
+    return ctn_packed_index(i, j);
 }
 
 #endif

@@ -50,14 +50,17 @@ int ctn_cable2_eval(const void *props, const double *X, const double *u, double 
         f[i] = -st.N * e[i];                                  /* f1 = -N e */
         f[3 + i] = st.N * e[i];                               /* f2 =  N e */
     }
-    if (K) {
-        double s = st.N / l;
+    if (K) {                                                  /* packed upper triangle */
+        double s = st.N / l, k[3][3];
         for (int i = 0; i < 3; i++)
-            for (int j = 0; j < 3; j++) {
-                double k = (dNdl - s) * e[i] * e[j] + (i == j ? s : 0.0);
-                K[6 * i + j] = K[6 * (i + 3) + j + 3] = k;
-                K[6 * i + j + 3] = K[6 * (i + 3) + j] = -k;
-            }
+            for (int j = i; j < 3; j++) k[i][j] = k[j][i] = (dNdl - s) * e[i] * e[j] + (i == j ? s : 0.0);
+        int t = 0;
+        for (int i = 0; i < 3; i++) {
+            for (int j = i; j < 3; j++) K[t++] = k[i][j];      /* node 1 - node 1 */
+            for (int j = 0; j < 3; j++) K[t++] = -k[i][j];     /* node 1 - node 2 */
+        }
+        for (int i = 0; i < 3; i++)
+            for (int j = i; j < 3; j++) K[t++] = k[i][j];      /* node 2 - node 2 */
     }
     if (out) *out = st;
     return CTN_OK;

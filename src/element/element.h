@@ -25,8 +25,10 @@ typedef struct ctn_elem_state {
 /* eval(props, X, u, f, K, st): X = reference coordinates of the nodes (3 per node),
  * u = their displacements (the current chord is formed as (X2 - X1) + (u2 - u1), which
  * keeps round-off at the scale of the element, not of the coordinates);
- * f = internal nodal forces (3 per node); K = tangent stiffness, row-major
- * (3 nnodes)^2, or NULL to skip it; st = element state (may be NULL).
+ * f = internal nodal forces (3 per node); K = the upper triangle of the symmetric
+ * tangent stiffness packed row by row ((3 nnodes)(3 nnodes + 1)/2 values: K00, K01, ...,
+ * K05, K11, ..., K55 for two nodes), or NULL to skip it; st = element state (may be
+ * NULL).
  * Returns 0, or CTN_ERR_DOMAIN if the element has collapsed to zero length. */
 typedef int (*ctn_elem_eval_fn)(const void *props, const double *X, const double *u,
                                 double *f, double *K, ctn_elem_state *st);
@@ -36,6 +38,14 @@ typedef struct ctn_element_ops {
     int nnodes;
     ctn_elem_eval_fn eval;
 } ctn_element_ops;
+
+#define CTN_EPACKED 21   /* packed upper triangle of a 6 x 6 element matrix */
+
+/* Index of (i, j), i <= j < 6, in the packed upper triangle. */
+static inline int ctn_packed_index(int i, int j)
+{
+    return i * 6 - i * (i - 1) / 2 + (j - i);
+}
 
 /* The two-node total-Lagrangian cable element of shared/THEORY.md. */
 extern const ctn_element_ops ctn_cable2_ops;

@@ -140,9 +140,11 @@ int ctn_chol_factorize_shifted(ctn_chol *c, double shift, long *fail_col)
 int ctn_chol_solve(ctn_chol *c, const double *b, double *x)
 {
     size_t n = c->A->nrow;
-    memcpy(c->B->x, b, n * sizeof(double));
-    if (!cholmod_solve2(CHOLMOD_A, c->L, c->B, NULL, &c->X, NULL, &c->Y, &c->E, &c->cm))
-        return backend_error(c, "solve");
+    void *own = c->B->x;
+    c->B->x = (void *)b;                         /* solve2 only reads B: no copy */
+    int ok = cholmod_solve2(CHOLMOD_A, c->L, c->B, NULL, &c->X, NULL, &c->Y, &c->E, &c->cm);
+    c->B->x = own;
+    if (!ok) return backend_error(c, "solve");
     memcpy(x, c->X->x, n * sizeof(double));
     return CTN_OK;
 }

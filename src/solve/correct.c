@@ -42,6 +42,8 @@ typedef struct corrector {
     int npast;
     int globalized;
     int accepted;       /* the last iteration moved d */
+    double dmax;        /* an upper bound of |d| (triangle inequality), for the increment
+                           test: |d| itself is computed only when the test can pass */
 } corrector;
 
 /* Largest diagonal entry of the assembled tangent (the last row of each column). */
@@ -82,11 +84,11 @@ static int factor(corrector *c, int *ok)
 }
 
 /* d = dsave + alpha dd, its residual (with K) and, if pi != NULL, its potential;
- * *ok = 0 if an element collapsed. */
-static int trial(corrector *c, double alpha, double *rn, double *pi, int *ok)
+ * *ok = 0 if an element collapsed. d equals dsave on entry when fresh is set. */
+static int trial(corrector *c, double alpha, int fresh, double *rn, double *pi, int *ok)
 {
     ctn_engine *e = c->e;
-    memcpy(c->d, e->dsave, e->n3 * sizeof(double));
+    if (!fresh) memcpy(c->d, e->dsave, e->n3 * sizeof(double));
     ctn_engine_axpy(e, c->d, alpha, e->dd);
     int rc = ctn_engine_residual(e, c->d, 1, rn, pi);
     *ok = rc != CTN_ERR_DOMAIN;
@@ -99,7 +101,7 @@ static int newton_search(corrector *c, double *alpha, double *rn)
     int ok, rc, halvings = c->e->opt.linesearch ? LS_HALVINGS : 0;
     *alpha = 1;
     for (int h = 0; h <= halvings; h++, *alpha *= 0.5) {
-        if ((rc = trial(c, *alpha, rn, NULL, &ok))) return rc;
+        if ((rc = trial(c, *alpha, h == 0, rn, NULL, &ok))) return rc;
         if (ok && (!c->e->opt.linesearch || *rn <= (1 - ARMIJO * *alpha) * c->rn)) return CTN_OK;
     }
     *alpha = 0;
@@ -131,7 +133,7 @@ static int lm_step(corrector *c, double *alpha, double *rn, double *pi)
     ctn_engine *e = c->e;
     double dd2 = ctn_dot(e->dd, e->dd, e->ndof);
     double pred = 0.5 * (ctn_dot(e->r, e->dd, e->ndof) + c->mu * dd2);
-    int ok, rc = trial(c, 1.0, rn, pi, &ok);
+    int ok, rc = trial(c, 1.0, 1, rn, pi, &ok);
     *alpha = 0;
     if (rc || !ok) return rc;
     double noise = 1e-12 * fabs(c->pi), rho = pred > 0 ? (c->pi - *pi) / pred : -1;
@@ -160,11 +162,13 @@ static int iteration(corrector *c, ctn_reason *why)
     if (!ok) { *why = CTN_DIVERGED_INDEFINITE; return CTN_OK; }
     if ((rc = ctn_engine_solve(e, e->r, e->dd))) return rc;
     if (!isfinite(ctn_norm(e->dd, e->ndof))) { *why = CTN_DIVERGED_NANORINF; return CTN_OK; }
-    memcpy(e->dsave, c->d, e->n3 * sizeof(double));
+    int keep = c->globalized || e->opt.linesearch;   /* a step may be rejected */
+    if (keep) memcpy(e->dsave, c->d, e->n3 * sizeof(double));
     rc = c->globalized ? lm_step(c, &alpha, &rn, &pi) : newton_search(c, &alpha, &rn);
     if (rc) return rc;
     if (alpha == 0) {                            /* back to the start of the iteration */
-        memcpy(c->d, e->dsave, e->n3 * sizeof(double));
+        if (keep) memcpy(c->d, e->dsave, e->n3 * sizeof(double));
+        else ctn_engine_axpy(e, c->d, -1.0, e->dd); /* pure Newton: undo the step */
         if ((rc = ctn_engine_residual(e, c->d, 1, &c->rn, NULL))) return rc == CTN_ERR_DOMAIN ? CTN_OK : rc;
         if (!c->globalized) { *why = e->opt.linesearch ? CTN_DIVERGED_LINESEARCH : CTN_DIVERGED_NANORINF; return CTN_OK; }
         raise_mu(c);
@@ -191,16 +195,22 @@ static int correct(ctn_engine *e, ctn_solution *s, double *d, ctn_reason *reason
     if (rc) return rc == CTN_ERR_DOMAIN ? CTN_OK : rc;
     if ((rc = ctn_solution_push_residual(s, c.rn))) return rc;
     s->sum.residual = c.rn;
+    double fref = ctn_engine_fref(e);                /* once per increment */
+    c.dmax = ctn_norm(d, e->n3);
     for (int it = 1; it <= e->opt.maxit; it++) {
         ctn_reason why;
         if ((rc = iteration(&c, &why))) return rc;
         if (why) { *reason = why; return CTN_OK; }
-        double dnorm = s->dhist[s->nd - 1], size = ctn_norm(d, e->n3) + e->lref;
+        double dnorm = s->dhist[s->nd - 1];
+        if (!c.accepted) continue;
+        c.dmax += dnorm;                                 /* |d + a dd| <= |d| + |a dd| */
+        if (dnorm > e->opt.dtol * (c.dmax + e->lref)) continue;
+        double size = ctn_norm(d, e->n3) + e->lref;     /* only when it can matter */
+        c.dmax = size - e->lref;
         int at_floor = dnorm <= CTN_FLOOR * size;        /* dd at coordinate resolution */
-        if (c.accepted && (c.rn <= e->opt.tol * ctn_engine_fref(e) || at_floor) &&
-            dnorm <= e->opt.dtol * size) {
+        if ((c.rn <= e->opt.tol * fref || at_floor) && dnorm <= e->opt.dtol * size) {
             *reason = CTN_CONVERGED;
-            if (c.rn > e->opt.tol * ctn_engine_fref(e)) s->sum.floor = 1;
+            if (c.rn > e->opt.tol * fref) s->sum.floor = 1;
             return CTN_OK;
         }
     }

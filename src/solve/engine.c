@@ -98,13 +98,16 @@ int ctn_engine_residual(ctn_engine *e, const double *d, int with_K, double *rnor
     int rc = ctn_asm_eval_energy(e->a, d, e->fint, with_K ? ctn_chol_values(e->ch) : NULL,
                                  pi ? &U : NULL, NULL);
     if (!rc) {
+        double rr = 0;
         for (size_t i = 0; i < e->n3; i++) {
             int q = e->a->eq[i];
             if (q < 0) continue;
-            e->r[q] = e->fext[i] - e->fint[i];
-            work += e->fext[i] * d[i];
+            double ri = e->fext[i] - e->fint[i];
+            e->r[q] = ri;
+            rr += ri * ri;
+            if (pi) work += e->fext[i] * d[i];
         }
-        *rnorm = ctn_norm(e->r, e->ndof);
+        *rnorm = sqrt(rr);
         if (pi) *pi = U - work;
         if (!isfinite(*rnorm) || (pi && !isfinite(*pi))) rc = CTN_ERR_DOMAIN;
     }
