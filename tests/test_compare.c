@@ -24,7 +24,7 @@ static ctn_model *paper_model(ctn_ctx *ctx, double S, int n, ctn_strain strain, 
 {
     ctn_model *m = NULL;
     double A[3] = { 0, 0, 0 }, B[3] = { 200, 0, 0 }, g[3] = { 0, -1, 0 };
-    ctn_cable_spec spec = { n, S, CTN_SHAPE_ARC, 1e-3 };
+    ctn_cable_spec spec = { n, S, CTN_SHAPE_ARC, 1e-3, CTN_START_ARC };
     ctn_solve_options opt;
     ctn_solve_options_default(&opt);
     opt.method = method;
@@ -269,7 +269,7 @@ static void test_hload(void)
     ctn_ctx_create(&ctx);
     ctn_model *m = NULL;
     double A[3] = { 0, 0, 0 }, B[3] = { 200, 10, 0 }, g[3] = { 0, -1, 0 };
-    ctn_cable_spec spec = { 40, 206, CTN_SHAPE_ARC, 1e-3 };
+    ctn_cable_spec spec = { 40, 206, CTN_SHAPE_ARC, 1e-3, CTN_START_ARC };
     int first = 0, last = 0;
     int rc = ctn_model_create(ctx, &m) || ctn_model_set_gravity(m, g) ||
              ctn_model_add_material(m, "steel", 2.0e8, CTN_STRAIN_ENGINEERING, 0) ||

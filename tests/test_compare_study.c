@@ -20,7 +20,7 @@ static ctn_model *paper_model(ctn_ctx *ctx, double S, int n)
 {
     ctn_model *m = NULL;
     double A[3] = { 0, 0, 0 }, B[3] = { 200, 0, 0 }, g[3] = { 0, -1, 0 };
-    ctn_cable_spec spec = { n, S, CTN_SHAPE_ARC, 1e-3 };
+    ctn_cable_spec spec = { n, S, CTN_SHAPE_ARC, 1e-3, CTN_START_ARC };
     ctn_solve_options opt;
     ctn_solve_options_default(&opt);
     opt.method = CTN_METHOD_NEWTON;

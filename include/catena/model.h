@@ -27,6 +27,14 @@ typedef enum ctn_strain {
     CTN_STRAIN_ENGINEERING = 1     /* eps = lambda - 1, N = E A eps (Irvine) */
 } ctn_strain;
 
+/* Where Newton starts for a generated cable. */
+typedef enum ctn_cable_start {
+    CTN_START_ARC = 0,      /* the stretched arc through the ends (the paper's; default) */
+    CTN_START_CATENARY = 1  /* Irvine's elastic catenary of the cable under its self-weight
+                               (engineering strain), in the plane of chord and gravity; the
+                               arc when the cable has no weight or a vertical chord */
+} ctn_cable_start;
+
 /* How the `cable` generator places its interior nodes. */
 typedef enum ctn_cable_shape {
     CTN_SHAPE_ARC = 0,     /* circular arc of the cable's length, sagging along gravity */
@@ -45,6 +53,7 @@ typedef struct ctn_cable_spec {
     double guess_strain; /* arc shape: the Newton start is the stretched arc through the
                             same ends on which every element has this strain (default
                             1e-3, see docs/theory.md); 0 starts from the arc itself */
+    ctn_cable_start start;  /* CTN_START_ARC (zero-initialized default) or _CATENARY */
 } ctn_cable_spec;
 
 /* Create an empty model bound to ctx (errors are recorded there; ctx must outlive it). */

@@ -127,14 +127,17 @@ static int cable_shape(ctn_line *l, ctn_cable_spec *spec)
     else if (shape && strcmp(shape, "arc"))
         return ctn_parse_error(l, "unknown cable shape '%.40s' (expected arc or straight)", shape);
     spec->guess_strain = 1e-3;
-    return ctn_parse_key_num(l, 3, "guess", 0, &spec->guess_strain);
+    static const char *const starts[] = { "arc", "catenary" };
+    int start = CTN_START_ARC, rc = key_word(l, "start", starts, 2, &start);
+    spec->start = (ctn_cable_start)start;
+    return rc ? rc : ctn_parse_key_num(l, 3, "guess", 0, &spec->guess_strain);
 }
 
 static int d_cable(ctn_line *l)
 {
     int a = 0, b = 0, n = 0;
-    ctn_cable_spec spec = { 0, 0, CTN_SHAPE_ARC, 1e-3 };
-    int rc = ctn_parse_positional(l, 2, "cable NODE1 NODE2 section=SECTION n=COUNT length=LENGTH [shape=arc|straight] [guess=STRAIN]");
+    ctn_cable_spec spec = { 0, 0, CTN_SHAPE_ARC, 1e-3, CTN_START_ARC };
+    int rc = ctn_parse_positional(l, 2, "cable NODE1 NODE2 section=SECTION n=COUNT length=LENGTH [shape=arc|straight] [start=arc|catenary] [guess=STRAIN]");
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[1], &a);
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[2], &b);
     const char *sec = rc ? NULL : ctn_parse_key(l, 3, "section");

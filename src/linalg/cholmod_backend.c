@@ -142,6 +142,14 @@ int ctn_chol_solve(ctn_chol *c, const double *b, double *x)
     size_t n = c->A->nrow;
     void *own = c->B->x;
     c->B->x = (void *)b;                         /* solve2 only reads B: no copy */
+    /* cholmod_solve2 reallocates its workspace Y whenever Y's shape is not the one it
+     * wants (4 x n for a simplicial factor), although the space it kept suffices; give
+     * it that shape back, so the loop allocates nothing. Only when the space is there. */
+    if (c->Y && !c->L->is_super && c->Y->nzmax >= 4 * n) {
+        c->Y->nrow = 4;
+        c->Y->ncol = n;
+        c->Y->d = 4;
+    }
     int ok = cholmod_solve2(CHOLMOD_A, c->L, c->B, NULL, &c->X, NULL, &c->Y, &c->E, &c->cm);
     c->B->x = own;
     if (!ok) return backend_error(c, "solve");

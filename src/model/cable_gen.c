@@ -2,6 +2,7 @@
  * a circular arc of the cable's length (or on the chord), with the Newton start on the
  * stretched arc through the same ends (docs/theory.md). */
 #include "model/arc.h"
+#include "model/cable_start.h"
 #include "model/model.h"
 
 #include <math.h>
@@ -67,6 +68,11 @@ int ctn_model_add_cable(ctn_model *m, int a, int b, const char *section,
     if (spec->shape == CTN_SHAPE_ARC && spec->guess_strain > 0 &&
         ctn_arc_stretched(&f, A, B, m->gravity, spec->length, 1.0 / spec->n, spec->guess_strain, &start))
         start = f;
+    ctn_catenary_place cat;
+    const ctn_section *sec = &m->sections.v[ctn_model_find_section(m, section)];
+    int on_catenary = spec->shape == CTN_SHAPE_ARC && spec->start == CTN_START_CATENARY &&
+                      !ctn_catenary_start(m->ctx, A, B, m->gravity, sec->w, m->materials.v[sec->material].E * sec->A,
+                                          spec->length, spec->n, 1e-4, &cat);
     int prev = a, first = m->max_element_id + 1;
     size_t e0 = m->elements.n;
     for (int k = 1; k <= spec->n; k++) {
@@ -74,7 +80,8 @@ int ctn_model_add_cable(ctn_model *m, int a, int b, const char *section,
         if (k < spec->n) {
             double X[3], guess[3];
             ctn_arc_point(&f, (double)k / spec->n, X);
-            ctn_arc_point(&start, (double)k / spec->n, guess);
+            if (on_catenary) ctn_catenary_start_point(&cat, k, guess);
+            else ctn_arc_point(&start, (double)k / spec->n, guess);
             for (int j = 0; j < 3; j++) guess[j] -= X[j];
             next = m->max_node_id + 1;
             if ((rc = ctn_model_add_node(m, next, X, 0))) return rc;   /* cannot fail: reserved */
