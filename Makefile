@@ -11,7 +11,7 @@ JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 
 all: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
-	@cmake --build $(BUILD) -j $(JOBS) -- -s --no-print-directory
+	@cmake --build $(BUILD) -j $(JOBS) -- -s --no-print-directory >/dev/null
 
 deps:
 	@bash scripts/deps.sh
