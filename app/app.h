@@ -17,6 +17,14 @@ enum {
 
 int ctn_cmd_solve(int argc, char **argv);
 
+/* MODEL [--json] [-o DIR] [-q], as `solve` and `compare` take them (args.c). 0, or 1
+ * after printing a usage message naming cmd. */
+typedef struct ctn_model_args {
+    const char *model, *outdir;   /* outdir NULL: no files */
+    int json, quiet;
+} ctn_model_args;
+int ctn_app_model_args(const char *cmd, int argc, char **argv, ctn_model_args *a);
+
 /* Exit code for a failed library call, after printing its message to stderr. */
 int ctn_app_fail(ctn_ctx *ctx, int status);
 

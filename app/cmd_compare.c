@@ -4,30 +4,6 @@
 
 #include <string.h>
 
-typedef struct compare_args {
-    const char *model, *outdir;
-    int json, quiet;
-} compare_args;
-
-static int parse_args(int argc, char **argv, compare_args *a)
-{
-    memset(a, 0, sizeof *a);
-    for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--json")) a->json = 1;
-        else if (!strcmp(argv[i], "-q") || !strcmp(argv[i], "--quiet")) a->quiet = 1;
-        else if (!strcmp(argv[i], "-o") && i + 1 < argc) a->outdir = argv[++i];
-        else if (argv[i][0] == '-' && argv[i][1]) {
-            fprintf(stderr, "catena compare: unknown or incomplete option '%s'\n", argv[i]);
-            return 1;
-        } else if (!a->model) a->model = argv[i];
-        else {
-            fprintf(stderr, "catena compare: more than one model given ('%s')\n", argv[i]);
-            return 1;
-        }
-    }
-    if (!a->model) fprintf(stderr, "usage: catena compare MODEL [--json] [-o DIR] [-q]\n");
-    return a->model ? 0 : 1;
-}
 
 static void print_table(const char *path, const ctn_compare *c, const ctn_solve_summary *sum)
 {
@@ -83,7 +59,7 @@ static int solve(ctn_ctx *ctx, const char *path, const ctn_model *m, ctn_solutio
     return CTN_EXIT_NOCONV;
 }
 
-static int report(ctn_ctx *ctx, const compare_args *a, const ctn_compare *c, const ctn_solve_summary *sum)
+static int report(ctn_ctx *ctx, const ctn_model_args *a, const ctn_compare *c, const ctn_solve_summary *sum)
 {
     int code = CTN_EXIT_OK;
     if (a->outdir) {
@@ -102,8 +78,8 @@ static int report(ctn_ctx *ctx, const compare_args *a, const ctn_compare *c, con
 
 int ctn_cmd_compare(int argc, char **argv)
 {
-    compare_args a;
-    if (parse_args(argc, argv, &a)) return CTN_EXIT_USAGE;
+    ctn_model_args a;
+    if (ctn_app_model_args("compare", argc, argv, &a)) return CTN_EXIT_USAGE;
     ctn_ctx *ctx = NULL;
     ctn_model *m = NULL;
     ctn_solution *s = NULL;

@@ -3,32 +3,8 @@
 
 #include <string.h>
 
-typedef struct solve_args {
-    const char *model, *outdir;
-    int json, quiet;
-} solve_args;
 
-static int parse_args(int argc, char **argv, solve_args *a)
-{
-    memset(a, 0, sizeof *a);
-    for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "--json")) a->json = 1;
-        else if (!strcmp(argv[i], "-q") || !strcmp(argv[i], "--quiet")) a->quiet = 1;
-        else if (!strcmp(argv[i], "-o") && i + 1 < argc) a->outdir = argv[++i];
-        else if (argv[i][0] == '-' && argv[i][1]) {
-            fprintf(stderr, "catena solve: unknown or incomplete option '%s'\n", argv[i]);
-            return 1;
-        } else if (!a->model) a->model = argv[i];
-        else {
-            fprintf(stderr, "catena solve: more than one model given ('%s')\n", argv[i]);
-            return 1;
-        }
-    }
-    if (!a->model) fprintf(stderr, "usage: catena solve MODEL [--json] [-o DIR] [-q]\n");
-    return a->model ? 0 : 1;
-}
-
-static int emit(ctn_ctx *ctx, const solve_args *a, const ctn_model *m, const ctn_solution *s)
+static int emit(ctn_ctx *ctx, const ctn_model_args *a, const ctn_model *m, const ctn_solution *s)
 {
     int rc = CTN_OK;
     if (a->outdir) rc = ctn_write_results(ctx, a->outdir, m, s);
@@ -48,8 +24,8 @@ static int emit(ctn_ctx *ctx, const solve_args *a, const ctn_model *m, const ctn
 
 int ctn_cmd_solve(int argc, char **argv)
 {
-    solve_args a;
-    if (parse_args(argc, argv, &a)) return CTN_EXIT_USAGE;
+    ctn_model_args a;
+    if (ctn_app_model_args("solve", argc, argv, &a)) return CTN_EXIT_USAGE;
     ctn_ctx *ctx = NULL;
     ctn_model *m = NULL;
     ctn_solution *s = NULL;
