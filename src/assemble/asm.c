@@ -93,20 +93,6 @@ int ctn_asm_eval_energy(const ctn_asm *a, const double *d, double *f, double *Kx
     return CTN_OK;
 }
 
-int ctn_asm_energy(const ctn_asm *a, const double *d, double *U)
-{
-    double sum = 0;
-    for (size_t e = 0; e < a->ne; e++) {
-        double X[CTN_EDOF], u[CTN_EDOF], fe[CTN_EDOF];
-        ctn_elem_state st;
-        ctn_asm_gather(a, e, d, X, u);
-        if (a->ops->eval(&a->props[e], X, u, fe, NULL, &st)) return CTN_ERR_DOMAIN;
-        sum += st.energy;
-    }
-    *U = sum;
-    return CTN_OK;
-}
-
 size_t ctn_asm_count_compressed(const ctn_asm *a, const double *d)
 {
     size_t n = 0;

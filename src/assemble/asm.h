@@ -43,8 +43,6 @@ size_t ctn_asm_count_compressed(const ctn_asm *a, const double *d);
  * materials' own behaviour. */
 void ctn_asm_cut_compression(ctn_asm *a, int on);
 
-/* Total strain energy at displacements d. CTN_ERR_DOMAIN if an element collapsed. */
-int ctn_asm_energy(const ctn_asm *a, const double *d, double *U);
 
 /* Reference coordinates X and displacements u of element e's nodes, from d. */
 void ctn_asm_gather(const ctn_asm *a, size_t e, const double *d, double *X, double *u);

@@ -15,8 +15,8 @@ typedef struct ctn_chol ctn_chol;
 int ctn_chol_create(ctn_ctx *ctx, size_t n, const int *colptr, const int *rowind,
                     ctn_ordering ord, ctn_chol **out);
 /* The same with indefinite = 1: a simplicial LDL' factorization that accepts
- * indefinite matrices (no pivoting; fails only on a zero pivot) and counts negative
- * pivots, for arc-length continuation through limit points. */
+ * indefinite matrices (no pivoting; fails only on a zero pivot), for arc-length
+ * continuation through limit points. */
 int ctn_chol_create_ex(ctn_ctx *ctx, size_t n, const int *colptr, const int *rowind,
                        ctn_ordering ord, int indefinite, ctn_chol **out);
 void ctn_chol_destroy(ctn_chol **c);
@@ -28,9 +28,6 @@ double *ctn_chol_values(ctn_chol *c);
 int ctn_chol_factorize(ctn_chol *c, long *fail_col);
 /* Factorize A + shift I (shift >= 0), same results as ctn_chol_factorize. */
 int ctn_chol_factorize_shifted(ctn_chol *c, double shift, long *fail_col);
-/* LDL' variant: number of negative pivots of the last factorization (the number of
- * negative eigenvalues, by Sylvester's law of inertia); 0 for LL'. */
-size_t ctn_chol_negative_pivots(const ctn_chol *c);
 /* x = A \ b using the last factorization (x and b may alias). */
 int ctn_chol_solve(ctn_chol *c, const double *b, double *x);
 ctn_ordering ctn_chol_ordering(const ctn_chol *c);

@@ -112,15 +112,6 @@ int ctn_chol_factorize(ctn_chol *c, long *fail_col)
     return ctn_chol_factorize_shifted(c, 0.0, fail_col);
 }
 
-size_t ctn_chol_negative_pivots(const ctn_chol *c)
-{
-    if (!c->L || c->L->is_ll || c->L->is_super || c->L->xtype == CHOLMOD_PATTERN) return 0;
-    const int *Lp = c->L->p;
-    const double *Lx = c->L->x;
-    size_t neg = 0;
-    for (size_t j = 0; j < c->L->n; j++) neg += Lx[Lp[j]] < 0;   /* D(j,j) heads column j */
-    return neg;
-}
 
 int ctn_chol_factorize_shifted(ctn_chol *c, double shift, long *fail_col)
 {
