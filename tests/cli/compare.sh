@@ -18,33 +18,8 @@
 # Prints "N passed, N failed"; exit 1 on any failure.
 set -u
 
-BIN=${1:?usage: tests/cli/compare.sh PATH/TO/catena}
-case $BIN in /*) ;; *) BIN=$PWD/$BIN ;; esac
-[ -x "$BIN" ] || { echo "compare.sh: $BIN is not an executable" >&2; exit 1; }
-cd "$(dirname "$0")/../.." || exit 1
-
-T=$(mktemp -d "${TMPDIR:-/tmp}/catena-compare.XXXXXX") || exit 1
-trap 'rm -rf "$T"' EXIT
-
-PASS=0
-FAIL=0
-WHY=()
-have_python=0
-command -v python3 >/dev/null 2>&1 && have_python=1
-have_gnuplot=0
-command -v gnuplot >/dev/null 2>&1 && have_gnuplot=1
-
-finish() {
-    if [ ${#WHY[@]} -eq 0 ]; then
-        PASS=$((PASS + 1))
-    else
-        FAIL=$((FAIL + 1))
-        echo "FAIL $1"
-        local w
-        for w in "${WHY[@]}"; do echo "     $w"; done
-    fi
-    WHY=()
-}
+. "$(dirname "$0")/lib/common.sh"
+cli_init compare "${1:-}"
 
 # check_paper_json COMPARE.json SOLVE.json S: keys, independent catenary, directions.
 check_paper_json() {
@@ -196,5 +171,4 @@ sed 's/maxit=50/maxit=1/' examples/paper/s250.8777.cable >"$T/maxit.cable"
 expect 3 "did not converge" compare "$T/maxit.cable"
 finish "compare errors"
 
-echo "$PASS passed, $FAIL failed"
-[ "$FAIL" = 0 ]
+cli_summary

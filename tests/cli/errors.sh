@@ -25,22 +25,9 @@
 # failure.
 set -u
 
-BIN=${1:?usage: tests/cli/errors.sh PATH/TO/catena}
-case $BIN in /*) ;; *) BIN=$PWD/$BIN ;; esac
-[ -x "$BIN" ] || { echo "errors.sh: $BIN is not an executable" >&2; exit 1; }
-cd "$(dirname "$0")/../.." || exit 1
+. "$(dirname "$0")/lib/common.sh"
+cli_init errors "${1:-}"
 [ -d tests/errors ] || { echo "errors.sh: no tests/errors directory" >&2; exit 1; }
-
-T=$(mktemp -d "${TMPDIR:-/tmp}/catena-errors.XXXXXX") || exit 1
-trap 'rm -rf "$T"' EXIT
-
-PASS=0
-FAIL=0
-FAILED_NAMES=()
-WHY=()                               # problems found in the current case
-
-have_python=0
-command -v python3 >/dev/null 2>&1 && have_python=1
 
 # json_converged FILE WANT: FILE is valid JSON with "converged": WANT (true|false).
 json_converged() {
@@ -158,19 +145,6 @@ check_outdir() {
     esac
 }
 
-# finish NAME: count the case.
-finish() {
-    if [ ${#WHY[@]} -eq 0 ]; then
-        PASS=$((PASS + 1))
-    else
-        FAIL=$((FAIL + 1))
-        FAILED_NAMES+=("$1")
-        echo "FAIL $1"
-        local w
-        for w in "${WHY[@]}"; do echo "     $w"; done
-    fi
-    WHY=()
-}
 
 # run_case NAME PATH CODE SUBSTRING [all]: plain (+ --json and -o with "all").
 run_case() {
@@ -318,9 +292,4 @@ rc=$?
 grep -qF "$T/plainfile/sub" "$T/err" || WHY+=("the message does not name the directory: $(cat "$T/err")")
 finish gen_output_under_file
 
-echo "${PASS} passed, ${FAIL} failed"
-if [ "$FAIL" -gt 0 ]; then
-    echo "failed: ${FAILED_NAMES[*]}"
-    exit 1
-fi
-exit 0
+cli_summary

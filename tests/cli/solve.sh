@@ -12,32 +12,8 @@
 # failure.
 set -u
 
-BIN=${1:?usage: tests/cli/solve.sh PATH/TO/catena}
-case $BIN in /*) ;; *) BIN=$PWD/$BIN ;; esac
-[ -x "$BIN" ] || { echo "solve.sh: $BIN is not an executable" >&2; exit 1; }
-cd "$(dirname "$0")/../.." || exit 1
-
-T=$(mktemp -d "${TMPDIR:-/tmp}/catena-solve.XXXXXX") || exit 1
-trap 'rm -rf "$T"' EXIT
-
-PASS=0
-FAIL=0
-WHY=()
-
-have_python=0
-command -v python3 >/dev/null 2>&1 && have_python=1
-
-finish() {
-    if [ ${#WHY[@]} -eq 0 ]; then
-        PASS=$((PASS + 1))
-    else
-        FAIL=$((FAIL + 1))
-        echo "FAIL $1"
-        local w
-        for w in "${WHY[@]}"; do echo "     $w"; done
-    fi
-    WHY=()
-}
+. "$(dirname "$0")/lib/common.sh"
+cli_init solve "${1:-}"
 
 # check_result_json FILE NNODES NELEMS WEIGHT: the keys and their consistency.
 # WEIGHT is the total self-weight the vertical reactions must carry.
@@ -266,5 +242,4 @@ for h in help --help -h; do
     finish "catena $h"
 done
 
-echo "${PASS} passed, ${FAIL} failed"
-[ "$FAIL" -eq 0 ]
+cli_summary

@@ -12,33 +12,8 @@
 # Prints "N passed, N failed"; exit 1 on any failure.
 set -u
 
-BIN=${1:?usage: tests/cli/study.sh PATH/TO/catena}
-case $BIN in /*) ;; *) BIN=$PWD/$BIN ;; esac
-[ -x "$BIN" ] || { echo "study.sh: $BIN is not an executable" >&2; exit 1; }
-cd "$(dirname "$0")/../.." || exit 1
-
-T=$(mktemp -d "${TMPDIR:-/tmp}/catena-study.XXXXXX") || exit 1
-trap 'rm -rf "$T"' EXIT
-
-PASS=0
-FAIL=0
-WHY=()
-have_python=0
-command -v python3 >/dev/null 2>&1 && have_python=1
-have_gnuplot=0
-command -v gnuplot >/dev/null 2>&1 && have_gnuplot=1
-
-finish() {
-    if [ ${#WHY[@]} -eq 0 ]; then
-        PASS=$((PASS + 1))
-    else
-        FAIL=$((FAIL + 1))
-        echo "FAIL $1"
-        local w
-        for w in "${WHY[@]}"; do echo "     $w"; done
-    fi
-    WHY=()
-}
+. "$(dirname "$0")/lib/common.sh"
+cli_init study "${1:-}"
 
 PAPER=(examples/paper/s200.3340.cable examples/paper/s201.3545.cable examples/paper/s250.8777.cable
        examples/paper/s279.6157.cable)
@@ -140,5 +115,4 @@ expect 1 "--n takes" convergence examples/paper/s250.8777.cable --n 1,5
 expect 1 "usage: catena convergence" convergence
 finish "convergence"
 
-echo "$PASS passed, $FAIL failed"
-[ "$FAIL" = 0 ]
+cli_summary
