@@ -48,10 +48,11 @@ static int print_json(const char *path, const ctn_compare *c, const ctn_solve_su
     return code;
 }
 
-/* Solve with the model's options; exit code (3 when not converged). */
-static int solve(ctn_ctx *ctx, const char *path, const ctn_model *m, ctn_solution **s, ctn_solve_summary *sum)
+/* Solve with the file's options; exit code (3 when not converged). */
+static int solve(ctn_ctx *ctx, const char *path, const ctn_model *m, const ctn_solve_options *opt,
+                 ctn_solution **s, ctn_solve_summary *sum)
 {
-    int rc = ctn_solve(ctx, m, NULL, s);
+    int rc = ctn_solve(ctx, m, opt, s);
     if (rc) return ctn_app_fail(ctx, rc);
     ctn_solution_summary(*s, sum);
     if (sum->reason == CTN_CONVERGED) return CTN_EXIT_OK;
@@ -89,10 +90,11 @@ int ctn_cmd_compare(int argc, char **argv)
         fprintf(stderr, "catena: out of memory\n");
         return CTN_EXIT_IO;
     }
-    int rc = ctn_model_read_file(ctx, a.model, &m), code = CTN_EXIT_OK;
+    ctn_solve_options opt;
+    int rc = ctn_read_file(ctx, a.model, &m, &opt), code = CTN_EXIT_OK;
     if (!rc) rc = ctn_compare_create(ctx, m, &c);
     if (rc) code = ctn_app_fail(ctx, rc);
-    if (!code) code = solve(ctx, a.model, m, &s, &sum);
+    if (!code) code = solve(ctx, a.model, m, &opt, &s, &sum);
     if (!code && (rc = ctn_compare_set_fea(c, s))) code = ctn_app_fail(ctx, rc);
     if (!code) code = report(ctx, &a, c, &sum);
     ctn_compare_destroy(&c);

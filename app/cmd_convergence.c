@@ -130,8 +130,9 @@ int ctn_cmd_convergence(int argc, char **argv)
         fprintf(stderr, "catena: out of memory\n");
         return CTN_EXIT_IO;
     }
-    int rc = ctn_model_read_file(ctx, a.model, &m), code = CTN_EXIT_OK;
-    if (!rc) rc = ctn_convergence_run(ctx, m, a.n, a.count, &c);
+    ctn_solve_options opt;
+    int rc = ctn_read_file(ctx, a.model, &m, &opt), code = CTN_EXIT_OK;
+    if (!rc) rc = ctn_convergence_run(ctx, m, &opt, a.n, a.count, &c);
     if (!rc && a.outdir) rc = ctn_convergence_write_figures(ctx, c, a.outdir);
     if (rc) code = ctn_app_fail(ctx, rc);
     if (!code && a.json) code = print_json(c, a.model);

@@ -33,12 +33,10 @@ int ctn_cmd_solve(int argc, char **argv)
         fprintf(stderr, "catena: out of memory\n");
         return CTN_EXIT_IO;
     }
-    int rc = ctn_model_read_file(ctx, a.model, &m), code = CTN_EXIT_OK;
-    if (!rc) rc = ctn_model_validate(m);
     ctn_solve_options opt;
+    int rc = ctn_read_file(ctx, a.model, &m, &opt), code = CTN_EXIT_OK;
     ctn_iter_log iters = { stdout, { 0, 0 } };
     if (!rc) {
-        ctn_model_solve_options(m, &opt);
         if (!a.json && !a.quiet) {
             opt.monitor = ctn_print_iteration;
             opt.monitor_data = &iters;

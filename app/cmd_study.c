@@ -16,6 +16,7 @@ typedef struct study_args {
     size_t nmodel, nlengths, nlevels, nclaims;
     double lengths[MAX_LIST], levels[MAX_LIST], claims[2 * MAX_LIST];
     ctn_study_options opt;
+    ctn_solve_options solve;   /* the first model's `solve` line */
     int json, quiet;
 } study_args;
 
@@ -94,7 +95,9 @@ static int read_models(ctn_ctx *ctx, study_args *a, ctn_model **base, ctn_span *
     for (size_t i = 0; i < a->nmodel; i++) {
         ctn_model *m = NULL;
         ctn_compare *c = NULL;
-        int rc = ctn_model_read_file(ctx, a->model[i], &m), code = CTN_EXIT_OK;
+        ctn_solve_options opt;
+        int rc = ctn_read_file(ctx, a->model[i], &m, &opt), code = CTN_EXIT_OK;
+        if (!rc && i == 0) a->solve = opt;
         if (!rc) rc = ctn_compare_create(ctx, m, &c);
         if (rc) code = ctn_app_fail(ctx, rc);
         else if (i == 0) *span = *ctn_compare_span(c);
@@ -138,6 +141,7 @@ int ctn_cmd_study(int argc, char **argv)
     a.opt.nlengths = a.nlengths;
     a.opt.claims = a.claims;
     a.opt.nclaims = a.nclaims;
+    a.opt.solve = &a.solve;
     if (!code && (rc = ctn_study_run(ctx, base, &a.opt, &st))) {
         code = ctn_app_fail(ctx, rc);
         if (rc == CTN_ERR_INVALID) code = CTN_EXIT_USAGE;      /* a bad length or sweep */

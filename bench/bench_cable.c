@@ -17,7 +17,7 @@
  * breakdown, --log the iteration log (stderr). Exit status: 0 when the benchmark ran
  * (converged or not), 1 on a usage error, 2 when a library call failed. */
 #include "assemble/asm.h"
-#include "linalg/chol.h"
+#include "linalg/linsolve.h"
 
 #include <catena.h>
 
@@ -78,7 +78,7 @@ typedef struct result {
     long allocs_short;        /* the same in a solve of at most 2 iterations */
     int its_short;            /* iterations of that solve */
     double t_pattern;         /* ctn_asm_create: DOF map, pattern, scatter map */
-    double t_analyze[3];      /* [ordering]: ctn_chol_create (ordering + analysis) */
+    double t_analyze[3];      /* [ordering]: ctn_linsolve_create (ordering + analysis) */
     double floor[3];          /* [ordering]: median factorize + solve */
     double floor_fac[3];      /* [ordering]: median factorize */
     size_t lnz[3];            /* [ordering]: non-zeros of L */
@@ -354,17 +354,18 @@ static int run_solves(ctn_ctx *ctx, const ctn_model *m, const bench_opts *o, res
 /* reps timed factorize + solve pairs after one warm-up (the first factorization
  * allocates L's values, the first solve its workspace); medians in *fac and *tot.
  * CTN_ERR_LINALG if the matrix is not positive definite. */
-static int time_factor_solve(ctn_chol *ch, size_t ndof, double *b, int reps, double *fac,
-                             double *tot)
+static int time_factor_solve(ctn_linsolve *ch, const double *Kx, size_t ndof, double *b, int reps,
+                             double *fac, double *tot)
 {
     double tf[MAX_REPEAT], tt[MAX_REPEAT];
-    long col;
+    ctn_factor_info info;
     for (int k = -1; k < reps; k++) {
         for (size_t i = 0; i < ndof; i++) b[i] = 1.0;
         double t0 = now();
-        int rc = ctn_chol_factorize(ch, &col);
+        int rc = ctn_linsolve_factor(ch, Kx, 0.0, &info);
         double t1 = now();
-        if (!rc) rc = ctn_chol_solve(ch, b, b);
+        if (!rc && !info.ok) rc = CTN_ERR_LINALG;
+        if (!rc) rc = ctn_linsolve_solve(ch, b, b);
         double t2 = now();
         if (rc) return rc;
         if (k >= 0) {
@@ -381,19 +382,21 @@ static int time_factor_solve(ctn_chol *ch, size_t ndof, double *b, int reps, dou
 static int floor_ordering(ctn_ctx *ctx, const ctn_asm *a, const double *d, ctn_ordering ord,
                           int reps, result *r)
 {
-    ctn_chol *ch = NULL;
-    size_t bad;
-    double *f = malloc(3 * a->nn * sizeof *f), *b = malloc(a->ndof * sizeof *b);
-    int rc = f && b ? CTN_OK : CTN_ERR_NOMEM;
+    ctn_linsolve *ch = NULL;
+    ctn_pattern pat = { a->ndof, a->colptr, a->rowind };
+    double *f = malloc(a->map.nstate * sizeof *f), *b = malloc(a->ndof * sizeof *b);
+    double *Kx = malloc((a->nnz ? a->nnz : 1) * sizeof *Kx);
+    int rc = f && b && Kx ? CTN_OK : CTN_ERR_NOMEM;
     double t0 = now();
-    if (!rc) rc = ctn_chol_create(ctx, a->ndof, a->colptr, a->rowind, ord, &ch);
+    if (!rc) rc = ctn_linsolve_create(ctx, "cholmod", &pat, ord, &ch);
     r->t_analyze[ord] = now() - t0;
-    if (!rc) rc = ctn_asm_eval(a, d, f, ctn_chol_values(ch), &bad);
-    if (!rc) rc = time_factor_solve(ch, a->ndof, b, reps, &r->floor_fac[ord], &r->floor[ord]);
-    if (!rc) r->lnz[ord] = ctn_chol_factor_nnz(ch);
-    ctn_chol_destroy(&ch);
+    if (!rc && ctn_asm_eval(a, d, 0, f, Kx, NULL, NULL)) rc = CTN_ERR_LINALG;
+    if (!rc) rc = time_factor_solve(ch, Kx, a->ndof, b, reps, &r->floor_fac[ord], &r->floor[ord]);
+    if (!rc) r->lnz[ord] = ctn_linsolve_factor_nnz(ch);
+    ctn_linsolve_destroy(&ch);
     free(f);
     free(b);
+    free(Kx);
     return rc;
 }
 

@@ -20,29 +20,27 @@
 
 static const double paper_lengths[] = { 200.3340, 201.3545, 250.8777, 279.6157 };
 
-static ctn_model *paper_model(ctn_ctx *ctx, double S, int n, ctn_strain strain, ctn_method method)
+static ctn_model *paper_model(ctn_ctx *ctx, double S, int n, ctn_strain strain)
 {
     ctn_model *m = NULL;
     double A[3] = { 0, 0, 0 }, B[3] = { 200, 0, 0 }, g[3] = { 0, -1, 0 };
     ctn_cable_spec spec = { n, S, CTN_SHAPE_ARC, 1e-3, CTN_START_ARC };
-    ctn_solve_options opt;
-    ctn_solve_options_default(&opt);
-    opt.method = method;
     if (ctn_model_create(ctx, &m) || ctn_model_set_units(m, "kN", "m") || ctn_model_set_gravity(m, g) ||
         ctn_model_add_material(m, "steel", 2.0e8, strain, 0) ||
         ctn_model_add_section(m, "strand", "steel", 3.14e-4, 0.1) ||
         ctn_model_add_node(m, 1, A, CTN_FIX_ALL) || ctn_model_add_node(m, 2, B, CTN_FIX_ALL) ||
-        ctn_model_add_cable(m, 1, 2, "strand", &spec, NULL, NULL) || ctn_model_set_solve_options(m, &opt))
+        ctn_model_add_cable(m, 1, 2, "strand", &spec, NULL, NULL))
         ctn_model_destroy(&m);
     return m;
 }
 
-static ctn_solution *solve(ctn_ctx *ctx, const ctn_model *m, double tol)
+static ctn_solution *solve(ctn_ctx *ctx, const ctn_model *m, ctn_method method, double tol)
 {
     ctn_solution *s = NULL;
     ctn_solve_options opt;
     ctn_solve_summary sum;
-    ctn_model_solve_options(m, &opt);
+    ctn_solve_options_default(&opt);
+    opt.method = method;
     opt.tol = tol;
     if (ctn_solve(ctx, m, &opt, &s)) return NULL;
     ctn_solution_summary(s, &sum);
@@ -81,7 +79,7 @@ static void test_funicular_exact(void)
     ctn_ctx *ctx = NULL;
     ctn_ctx_create(&ctx);
     ctn_model *m = chain_model(ctx);
-    ctn_solution *s = m ? solve(ctx, m, 1e-13) : NULL;
+    ctn_solution *s = m ? solve(ctx, m, CTN_METHOD_AUTO, 1e-13) : NULL;
     CHECK(s != NULL);
     if (!s) { ctn_model_destroy(&m); ctn_ctx_destroy(&ctx); return; }
     double EA[NSEG], xy[2 * (NSEG + 1)], N[NSEG];
@@ -139,8 +137,8 @@ static void test_support_tension(void)
 {
     ctn_ctx *ctx = NULL;
     ctn_ctx_create(&ctx);
-    ctn_model *m = paper_model(ctx, 250.8777, 20, CTN_STRAIN_GREEN_LAGRANGE, CTN_METHOD_NEWTON);
-    ctn_solution *s = m ? solve(ctx, m, 1e-12) : NULL;
+    ctn_model *m = paper_model(ctx, 250.8777, 20, CTN_STRAIN_GREEN_LAGRANGE);
+    ctn_solution *s = m ? solve(ctx, m, CTN_METHOD_NEWTON, 1e-12) : NULL;
     ctn_compare *c = NULL;
     ctn_compare_values v;
     CHECK(s && ctn_compare_create(ctx, m, &c) == CTN_OK && ctn_compare_set_fea(c, s) == CTN_OK);
@@ -185,10 +183,10 @@ static void test_user_chain(void)
     ctn_ctx *ctx = NULL;
     ctn_ctx_create(&ctx);
     const double S = 250.8777;
-    ctn_model *gen = paper_model(ctx, S, 20, CTN_STRAIN_GREEN_LAGRANGE, CTN_METHOD_AUTO);
+    ctn_model *gen = paper_model(ctx, S, 20, CTN_STRAIN_GREEN_LAGRANGE);
     ctn_model *usr = gen ? reversed_chain(ctx, gen, 20, S) : NULL;
     CHECK(gen && usr);
-    ctn_solution *sg = gen ? solve(ctx, gen, 1e-12) : NULL, *su = usr ? solve(ctx, usr, 1e-12) : NULL;
+    ctn_solution *sg = gen ? solve(ctx, gen, CTN_METHOD_AUTO, 1e-12) : NULL, *su = usr ? solve(ctx, usr, CTN_METHOD_AUTO, 1e-12) : NULL;
     ctn_compare *cg = NULL, *cu = NULL;
     ctn_compare_values vg, vu;
     CHECK(sg && su);
@@ -237,22 +235,22 @@ static void test_refused(void)
     ctn_ctx *ctx = NULL;
     ctn_ctx_create(&ctx);
     double P[3] = { 100, 0, 0 }, Q[3] = { 100, -5, 0 }, F[3] = { 0, 0, 1 };
-    ctn_model *m = paper_model(ctx, 201, 4, CTN_STRAIN_GREEN_LAGRANGE, CTN_METHOD_AUTO);
+    ctn_model *m = paper_model(ctx, 201, 4, CTN_STRAIN_GREEN_LAGRANGE);
     if (m) ctn_model_add_node(m, 99, P, CTN_FIX_ALL);
     expect_refused(ctx, m, "three supports");
     ctn_model_destroy(&m);
-    m = paper_model(ctx, 201, 4, CTN_STRAIN_GREEN_LAGRANGE, CTN_METHOD_AUTO);
+    m = paper_model(ctx, 201, 4, CTN_STRAIN_GREEN_LAGRANGE);
     if (m && (ctn_model_add_node(m, 99, Q, 0) || ctn_model_add_element(m, 99, 3, 99, "strand", CTN_L0_DEFAULT)))
         ctn_model_destroy(&m);
     expect_refused(ctx, m, "branch");
     ctn_model_destroy(&m);
-    m = paper_model(ctx, 201, 4, CTN_STRAIN_GREEN_LAGRANGE, CTN_METHOD_AUTO);
+    m = paper_model(ctx, 201, 4, CTN_STRAIN_GREEN_LAGRANGE);
     if (m && (ctn_model_add_section(m, "thin", "steel", 1e-4, 0.1) ||
               ctn_model_add_element(m, 99, 1, 2, "thin", 203)))
         ctn_model_destroy(&m);
     expect_refused(ctx, m, "a second path between the supports");
     ctn_model_destroy(&m);
-    m = paper_model(ctx, 201, 4, CTN_STRAIN_GREEN_LAGRANGE, CTN_METHOD_AUTO);
+    m = paper_model(ctx, 201, 4, CTN_STRAIN_GREEN_LAGRANGE);
     if (m && ctn_model_add_load(m, 4, F)) ctn_model_destroy(&m);
     expect_refused(ctx, m, "load out of the plane");
     ctn_model_destroy(&m);
@@ -277,7 +275,7 @@ static void test_hload(void)
              ctn_model_add_node(m, 2, B, CTN_FIX_ALL) || ctn_model_add_cable(m, 1, 2, "s", &spec, &first, &last) ||
              ctn_model_add_hload(m, 2.0, first, last);
     CHECK(rc == 0);
-    ctn_solution *s = rc ? NULL : solve(ctx, m, 1e-12);
+    ctn_solution *s = rc ? NULL : solve(ctx, m, CTN_METHOD_AUTO, 1e-12);
     ctn_compare *c = NULL;
     ctn_compare_values vf, ve, vp;
     CHECK(s && ctn_compare_create(ctx, m, &c) == CTN_OK && ctn_compare_set_fea(c, s) == CTN_OK);
@@ -323,8 +321,8 @@ static void test_paper(void)
         ctn_ctx *ctx = NULL;
         ctn_ctx_create(&ctx);
         double S = paper_lengths[k], c0 = catenary_c(200, S);
-        ctn_model *m = paper_model(ctx, S, 20, CTN_STRAIN_GREEN_LAGRANGE, CTN_METHOD_NEWTON);
-        ctn_solution *s = m ? solve(ctx, m, 1e-10) : NULL;
+        ctn_model *m = paper_model(ctx, S, 20, CTN_STRAIN_GREEN_LAGRANGE);
+        ctn_solution *s = m ? solve(ctx, m, CTN_METHOD_NEWTON, 1e-10) : NULL;
         ctn_compare *c = NULL;
         ctn_compare_values f, cat;
         CHECK(s && ctn_compare_create(ctx, m, &c) == CTN_OK && ctn_compare_set_fea(c, s) == CTN_OK);
@@ -353,7 +351,7 @@ static void test_alloc(void)
     ctn_ctx *ctx = NULL;
     ctn_ctx_create(&ctx);
     ctn_model *m = chain_model(ctx);
-    ctn_solution *s = m ? solve(ctx, m, 1e-10) : NULL;
+    ctn_solution *s = m ? solve(ctx, m, CTN_METHOD_AUTO, 1e-10) : NULL;
     int done = 0, failures = 0;
     for (long k = 1; k < 1000 && s && !done; k++) {
         ctn_compare *c = NULL;

@@ -20,14 +20,11 @@ static ctn_model *span_model(ctn_ctx *ctx, double S, int n)
     ctn_model *m = NULL;
     double A[3] = { 0, 0, 0 }, B[3] = { 200, 0, 0 }, g[3] = { 0, -1, 0 };
     ctn_cable_spec spec = { n, S, CTN_SHAPE_ARC, 1e-3, CTN_START_ARC };
-    ctn_solve_options opt;
-    ctn_solve_options_default(&opt);
-    opt.method = CTN_METHOD_NEWTON;
     if (ctn_model_create(ctx, &m) || ctn_model_set_units(m, "kN", "m") || ctn_model_set_gravity(m, g) ||
         ctn_model_add_material(m, "steel", 2.0e8, CTN_STRAIN_ENGINEERING, 0) ||
         ctn_model_add_section(m, "strand", "steel", 3.14e-4, 0.1) ||
         ctn_model_add_node(m, 1, A, CTN_FIX_ALL) || ctn_model_add_node(m, 2, B, CTN_FIX_ALL) ||
-        ctn_model_add_cable(m, 1, 2, "strand", &spec, NULL, NULL) || ctn_model_set_solve_options(m, &opt))
+        ctn_model_add_cable(m, 1, 2, "strand", &spec, NULL, NULL))
         ctn_model_destroy(&m);
     return m;
 }
@@ -83,13 +80,16 @@ static void test_order(double S, double err1000[2])
 /* The library's study agrees with the errors measured above. */
 static void test_library(double S, const double err1000[2])
 {
+    ctn_solve_options newton;                 /* the paper's pure Newton */
+    ctn_solve_options_default(&newton);
+    newton.method = CTN_METHOD_NEWTON;
     ctn_ctx *ctx = NULL;
     ctn_ctx_create(&ctx);
     ctn_model *base = span_model(ctx, S, 20);
     ctn_convergence *cv = NULL;
     size_t ns[NMESH];
     for (size_t i = 0; i < NMESH; i++) ns[NMESH - 1 - i] = (size_t)meshes[i];   /* unsorted on purpose */
-    CHECK(base && ctn_convergence_run(ctx, base, ns, NMESH, &cv) == CTN_OK);
+    CHECK(base && ctn_convergence_run(ctx, base, &newton, ns, NMESH, &cv) == CTN_OK);
     CHECK(ctn_convergence_count(cv) == NMESH);
     for (size_t i = 0; i < ctn_convergence_count(cv); i++) {
         const ctn_convergence_row *r = ctn_convergence_row_at(cv, i);
@@ -129,7 +129,7 @@ static void test_inclined(void)
     CHECK(ctn_ecatenary_solve(NULL, &in, &ref) == CTN_OK);
     size_t ns[5] = { 10, 20, 40, 80, 160 };
     ctn_convergence *cv = NULL;
-    CHECK(!rc && ctn_convergence_run(ctx, m, ns, 5, &cv) == CTN_OK);
+    CHECK(!rc && ctn_convergence_run(ctx, m, NULL, ns, 5, &cv) == CTN_OK);
     const ctn_compare_values *r = ctn_convergence_reference(cv);
     CHECK(r != NULL);
     if (r) {
@@ -149,6 +149,9 @@ static void test_inclined(void)
 
 static void test_alloc(void)
 {
+    ctn_solve_options newton;                 /* the paper's pure Newton */
+    ctn_solve_options_default(&newton);
+    newton.method = CTN_METHOD_NEWTON;
     ctn_ctx *ctx = NULL;
     ctn_ctx_create(&ctx);
     ctn_model *base = span_model(ctx, 250.8777, 20);
@@ -157,7 +160,7 @@ static void test_alloc(void)
     for (long k = 1; k < 20000 && base && !done; k++) {
         ctn_convergence *cv = NULL;
         ctn_ctx_fail_alloc_at(ctx, k);
-        int rc = ctn_convergence_run(ctx, base, ns, 2, &cv);
+        int rc = ctn_convergence_run(ctx, base, &newton, ns, 2, &cv);
         ctn_ctx_fail_alloc_at(ctx, 0);
         if (rc) {
             failures++;

@@ -90,10 +90,11 @@ static int run_example(const char *path)
     ctn_ctx *ctx = NULL;
     ctn_model *m = NULL;
     ctn_solution *s = NULL;
+    ctn_solve_options opt;
     ctn_ctx_create(&ctx);
-    int rc = ctn_model_read_file(ctx, path, &m);
+    int rc = ctn_read_file(ctx, path, &m, &opt);
     CHECK_MSG(rc == CTN_OK, "%s", ctn_ctx_message(ctx));
-    if (!rc) rc = ctn_solve(ctx, m, NULL, &s);
+    if (!rc) rc = ctn_solve(ctx, m, &opt, &s);
     CHECK_MSG(rc == CTN_OK, "%s: %s", path, ctn_ctx_message(ctx));
     int lines = 0;
     FILE *f = fopen(path, "r");
@@ -105,9 +106,7 @@ static int run_example(const char *path)
             lines++;
         }
     if (f) fclose(f);
-    ctn_solve_options opt;
     ctn_solve_summary sum;
-    ctn_model_solve_options(m, &opt);
     ctn_solution_summary(s, &sum);
     if (!rc && sum.reason == CTN_CONVERGED && opt.method != CTN_METHOD_ARCLENGTH) check_balance(path, m, s);
     ctn_solution_destroy(&s);

@@ -181,6 +181,7 @@ typedef struct ctn_study_options {
                                stress in MPa (in model units if the model has none) */
     size_t nclaims;
     const char *claims_title; /* legend of those points; NULL: "reference points" */
+    const ctn_solve_options *solve; /* options of every FEA solve (NULL: the defaults) */
 } ctn_study_options;
 
 void ctn_study_options_default(ctn_study_options *opt);
@@ -259,9 +260,10 @@ typedef struct ctn_convergence_row {
 
 typedef struct ctn_convergence ctn_convergence;
 
-/* Run the study for ns[0..count-1] (each >= 2; sorted and duplicates merged). */
-int ctn_convergence_run(ctn_ctx *ctx, const ctn_model *base, const size_t *ns, size_t count,
-                        ctn_convergence **out);
+/* Run the study for ns[0..count-1] (each >= 2; sorted and duplicates merged), solving
+ * with options opt (NULL: the defaults; tol is set to 1e-12). */
+int ctn_convergence_run(ctn_ctx *ctx, const ctn_model *base, const ctn_solve_options *opt,
+                        const size_t *ns, size_t count, ctn_convergence **out);
 void ctn_convergence_destroy(ctn_convergence **c);
 const ctn_span *ctn_convergence_span(const ctn_convergence *c);
 /* The reference: the elastic catenary's values. */

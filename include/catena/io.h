@@ -20,10 +20,16 @@
 extern "C" {
 #endif
 
-/* Read a model file. On success *out owns a new model (ctn_model_destroy). */
-int ctn_model_read_file(ctn_ctx *ctx, const char *path, ctn_model **out);
-/* Parse a model from memory (len bytes, need not be NUL-terminated); name is used in
+/* Read a model file. On success *out owns a new model (ctn_model_destroy) and, when opt
+ * is not NULL, *opt holds the options of the file's `solve` line (the defaults where it
+ * has none): options belong to the solve, so the caller passes them on to ctn_solve. */
+int ctn_read_file(ctn_ctx *ctx, const char *path, ctn_model **out, ctn_solve_options *opt);
+/* The same from memory (len bytes, need not be NUL-terminated); name is used in
  * messages in place of a file name. */
+int ctn_read_string(ctn_ctx *ctx, const char *name, const char *text, size_t len,
+                    ctn_model **out, ctn_solve_options *opt);
+/* ctn_read_file / ctn_read_string without the options. */
+int ctn_model_read_file(ctn_ctx *ctx, const char *path, ctn_model **out);
 int ctn_model_read_string(ctn_ctx *ctx, const char *name, const char *text, size_t len,
                           ctn_model **out);
 

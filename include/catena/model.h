@@ -69,6 +69,53 @@ int ctn_model_set_units(ctn_model *m, const char *force, const char *length);
  * have w == 0. */
 int ctn_model_set_gravity(ctn_model *m, const double g[3]);
 
+/* Versioned spec structs. Each begins with `size`, the size of the struct as the caller
+ * compiled it; ctn_*_spec_init() sets it and every other field to its default. New keys
+ * are added at the end, so a program built against an older header keeps working: the
+ * library reads only the fields the caller's struct has. */
+
+/* A material. */
+typedef struct ctn_material_spec {
+    size_t size;          /* sizeof(ctn_material_spec) (set by ctn_material_spec_init) */
+    const char *name;     /* unique name (case-sensitive), 1 to 63 characters */
+    double E;             /* Young's modulus > 0 [force/length^2] */
+    ctn_strain strain;    /* strain measure (default CTN_STRAIN_GREEN_LAGRANGE) */
+    int tension_only;     /* 1: members carry no compression (default 0) */
+} ctn_material_spec;
+void ctn_material_spec_init(ctn_material_spec *s);
+int ctn_model_add_material_spec(ctn_model *m, const ctn_material_spec *s);
+
+/* A section of a cable. */
+typedef struct ctn_section_spec {
+    size_t size;          /* sizeof(ctn_section_spec) (set by ctn_section_spec_init) */
+    const char *name;     /* unique name */
+    const char *material; /* name of a defined material */
+    double A;             /* area > 0 [length^2] */
+    double w;             /* weight per unit unstressed length >= 0 [force/length] (default 0) */
+} ctn_section_spec;
+void ctn_section_spec_init(ctn_section_spec *s);
+int ctn_model_add_section_spec(ctn_model *m, const ctn_section_spec *s);
+
+/* An element of a registered family (docs/format.md):
+ *   "cable"  two nodes, section, unstressed length l0 (CTN_L0_DEFAULT: the reference
+ *            distance between the nodes); the material's strain law, self-weight w l0;
+ *   "spring" two nodes, stiffness k > 0, free length l0 (CTN_L0_DEFAULT: the reference
+ *            distance); N = k (l - l0), two-way, weightless, no section. */
+#define CTN_L0_DEFAULT (-1.0)
+typedef struct ctn_element_spec {
+    size_t size;          /* sizeof(ctn_element_spec) (set by ctn_element_spec_init) */
+    const char *type;     /* family name; NULL or "cable" (default), "spring" */
+    int id;               /* user id > 0, unique among elements */
+    int nnodes;           /* number of entries of nodes (the family's node count) */
+    const int *nodes;     /* user node ids (copied) */
+    const char *section;  /* families with a section: its name */
+    double l0;            /* unstressed / free length [length] (default CTN_L0_DEFAULT) */
+    double k;             /* spring: stiffness [force/length] */
+} ctn_element_spec;
+void ctn_element_spec_init(ctn_element_spec *s);
+int ctn_model_add_element_spec(ctn_model *m, const ctn_element_spec *s);
+
+/* Shorthands for the spec calls above, with the other fields at their defaults. */
 int ctn_model_add_material(ctn_model *m, const char *name, double E, ctn_strain strain,
                            int tension_only);
 /* A section: area A > 0 and weight per unit unstressed length w >= 0. */
@@ -76,9 +123,8 @@ int ctn_model_add_section(ctn_model *m, const char *name, const char *material, 
                           double w);
 /* A node with id > 0 at reference coordinates X, fixed DOFs `fix` (CTN_FIX_*). */
 int ctn_model_add_node(ctn_model *m, int id, const double X[3], unsigned fix);
-/* A two-node element between existing nodes n1 != n2 (user ids). l0 > 0 is the
- * unstressed length; CTN_L0_DEFAULT takes the reference distance between the nodes. */
-#define CTN_L0_DEFAULT (-1.0)
+/* A two-node cable element between existing nodes n1 != n2 (user ids), with unstressed
+ * length l0 > 0 or CTN_L0_DEFAULT. */
 int ctn_model_add_element(ctn_model *m, int id, int n1, int n2, const char *section,
                           double l0);
 /* Generate a cable of spec->n elements from node a to node b (see ctn_cable_spec):
@@ -126,13 +172,20 @@ typedef struct ctn_node_info {
 
 typedef struct ctn_element_info {
     int id;          /* user id */
-    int node[2];     /* node indices (0-based, into ctn_model_node) */
-    double l0;       /* unstressed length [length] */
+    const char *type;/* family name ("cable", "spring") */
+    int nnodes;      /* number of nodes */
+    const int *nodes;/* node indices (0-based, into ctn_model_node), owned by the model,
+                        valid until the model changes */
+    int node[2];     /* its first and last node indices (the ends) */
+    double l0;       /* unstressed (free) length [length] */
+    int has_section; /* 1 if the family has a section: A, E, w, strain, tension_only
+                        below are its; 0 (spring): they are 0 */
     double A;        /* area [length^2] */
     double E;        /* modulus [force/length^2] */
     double w;        /* weight per unit unstressed length [force/length] */
     ctn_strain strain;
     int tension_only;
+    double k;        /* spring stiffness [force/length]; 0 for other families */
 } ctn_element_info;
 
 /* A cable made by the generator: its end nodes and its element index range. */

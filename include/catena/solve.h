@@ -1,11 +1,16 @@
 /*
- * catena/solve.h - the Newton-Raphson solution of a model and its results.
+ * catena/solve.h - static analysis of a model and its results.
  *
- * ctn_solve() runs pure Newton-Raphson on K_T(d) dd = f_ext - f_int(d), d <- d + dd,
- * from the model's starting displacements, with a sparse Cholesky (CHOLMOD) tangent.
- * Non-convergence is an outcome, not an error: ctn_solve returns CTN_OK with a
- * solution whose reason says why it stopped (ctn_reason). Errors (out of memory,
- * invalid model, backend failure) return a status and no solution.
+ * A problem (ctn_problem) is the analysis of one model with one set of options: it
+ * validates the model and does the symbolic work once (DOF map, sparsity pattern,
+ * element properties, the linear solver's ordering and analysis). ctn_problem_solve()
+ * then runs the static analysis by the options' method (Newton-Raphson on
+ * K_T(d) dd = f_ext - f_int(d) in load steps, globalized or pure, or arc-length), and
+ * the same problem can be asked for the stability of a solution (the tangent at its
+ * state) afterwards. ctn_solve() is create + solve + destroy in one call.
+ * Non-convergence is an outcome, not an error: the solve returns CTN_OK with a solution
+ * whose reason says why it stopped (ctn_reason). Errors (out of memory, invalid model,
+ * backend failure) return a status and no solution.
  */
 #ifndef CATENA_SOLVE_H
 #define CATENA_SOLVE_H
@@ -64,13 +69,15 @@ typedef struct ctn_solve_options {
     double lambda_max;    /* ARCLENGTH: stop once the load factor reaches this (default 1) */
     ctn_monitor_fn monitor;  /* NULL: no log */
     void *monitor_data;
+    const char *linear_solver; /* NULL: the method's own ("cholmod", LL'; arc-length:
+                                  "cholmod-ldl", LDL' for indefinite tangents) */
 } ctn_solve_options;
 
+/* Fill the defaults. Options belong to a solve, not to a model: a model file's `solve`
+ * line is read into options by ctn_read_file (catena/io.h). */
 void ctn_solve_options_default(ctn_solve_options *opt);
-/* The options given by the model's `solve` directive (defaults if none). */
-void ctn_model_solve_options(const ctn_model *m, ctn_solve_options *opt);
-/* Record solve options in the model (what the `solve` directive does). */
-int ctn_model_set_solve_options(ctn_model *m, const ctn_solve_options *opt);
+/* CTN_OK, or CTN_ERR_INVALID with a message naming the option out of range. */
+int ctn_solve_options_check(ctn_ctx *ctx, const ctn_solve_options *opt);
 
 /* Why the Newton iteration stopped. Positive: converged; negative: diverged. */
 typedef enum ctn_reason {
@@ -112,6 +119,8 @@ typedef struct ctn_solve_summary {
                              (CTN_METHOD_AUTO from a start with compressed members) */
     size_t ndof;          /* free DOFs */
     size_t nnz_factor;    /* non-zeros of the Cholesky factor */
+    int factorizations;   /* numeric factorizations of the tangent */
+    int solves;           /* triangular solves (right-hand sides) */
     double t_setup;       /* wall seconds: DOF map, pattern, scatter map, ordering and
                              symbolic analysis (once per model) */
     double t_assemble;    /* wall seconds in all iterations: internal forces, tangent
@@ -129,8 +138,32 @@ typedef struct ctn_element_state {
     int slack;            /* 1 if a tension-only element carries no force */
 } ctn_element_state;
 
-/* Solve the model. opt NULL: the model's own options. On CTN_OK *out owns a solution
- * (free it with ctn_solution_destroy), whatever the reason. */
+/* The analysis of model m with options opt (NULL: the defaults), set up once. The model
+ * must outlive the problem and not change while it exists. On CTN_OK *out owns it. */
+typedef struct ctn_problem ctn_problem;
+int ctn_problem_create(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options *opt,
+                       ctn_problem **out);
+/* NULL or *p == NULL is a harmless no-op; sets *p to NULL. */
+void ctn_problem_destroy(ctn_problem **p);
+/* Static analysis: every load step by the options' method. On CTN_OK *out owns a new
+ * solution (free it with ctn_solution_destroy), whatever the reason. May be called again
+ * (the same problem solved afresh). */
+int ctn_problem_solve(ctn_problem *p, ctn_solution **out);
+
+/* Stability of an equilibrium: the inertia of the tangent stiffness (free DOFs) at the
+ * state of a solution's last step. */
+typedef struct ctn_stability {
+    int stable;           /* 1: the tangent is positive definite */
+    int semidefinite;     /* 1: not stable because of a zero pivot (a DOF with no
+                             stiffness, e.g. a node held only by slack members) */
+    long negative;        /* negative eigenvalues of the tangent (0 when semidefinite
+                             stopped the count) */
+    int node;             /* not stable: user id of the node whose DOF failed first */
+    int dir;              /* its direction 0 = x, 1 = y, 2 = z, -1 if none */
+} ctn_stability;
+int ctn_problem_stability(ctn_problem *p, const ctn_solution *s, ctn_stability *out);
+
+/* Solve the model: ctn_problem_create + ctn_problem_solve + destroy. opt NULL: defaults. */
 int ctn_solve(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options *opt,
               ctn_solution **out);
 void ctn_solution_destroy(ctn_solution **s);

@@ -1,62 +1,84 @@
-/* Internal: DOF map, sparsity pattern of the tangent, element-to-slot scatter map and
- * the one element loop. Built once per model (symbolic), evaluated every iteration
- * without allocation (numeric). */
+/* Internal: the assembler. Built once per model (symbolic): the DOF map, the element
+ * properties of every family, the sparsity pattern of the tangent (upper triangle,
+ * compressed columns, rows sorted) and the element-to-value scatter map. Evaluated every
+ * iteration without allocation (numeric) by the one element loop, ctn_asm_loop, which
+ * assembly, checks and results all use.
+ *
+ * Elements are kept in blocks: runs of consecutive elements of one family and node
+ * count, within which connectivity, properties and scatter slots are strided. */
 #ifndef CTN_ASSEMBLE_ASM_H
 #define CTN_ASSEMBLE_ASM_H
 
+#include "assemble/dofmap.h"
 #include "element/element.h"
-#include "model/model.h"
 
-#define CTN_EDOF 6                     /* DOFs of a two-node element */
-#define CTN_ESLOTS CTN_EPACKED         /* upper-triangle entries of its 6x6 matrix */
+typedef struct ctn_asm_block {
+    const ctn_element_ops *ops;
+    size_t e0, count;          /* model elements e0 .. e0 + count - 1 */
+    int nnodes;                /* nodes per element */
+    int nedof;                 /* DOFs per element: nnodes * ops->ndof_node */
+    int nslots;                /* packed upper-triangle entries: ctn_packed_size(nedof) */
+    size_t props0;             /* byte offset of the block's first element's properties */
+    size_t slot0;              /* index of its first element's first slot */
+} ctn_asm_block;
 
 typedef struct ctn_asm {
     const ctn_model *m;
     size_t nn, ne;                     /* nodes, elements */
-    size_t ndof;                       /* free DOFs (equations) */
-    int *eq;                           /* 3 per node: equation number, -1 if fixed */
-    int *dof_node, *dof_dir;           /* per equation: node index and direction */
+    ctn_dofmap map;
+    size_t ndof;                       /* free DOFs (equations) = map.ndof */
     int *colptr, *rowind;              /* upper triangle of K, compressed columns, sorted */
     size_t nnz;
-    int *slot;                         /* CTN_ESLOTS per element: v >= 0 adds into value v,
-                                          v <= -2 assigns value -(v + 2) (the first element
-                                          to reach an entry: no zeroing pass), -1: none */
-    ctn_cable_props *props;            /* per element */
-    unsigned char *tension_only;       /* per element: the material's own flag */
-    const ctn_element_ops *ops;
+    ctn_asm_block *blocks;
+    size_t nblocks;
+    unsigned char *props;              /* every element's properties (blocks' props0) */
+    int *slot;                         /* per element nslots entries: v >= 0 adds into value
+                                          v, v <= -2 assigns value -(v + 2) (the first
+                                          element to reach an entry: no zeroing pass), -1:
+                                          none (a fixed DOF) */
+    int maxdof;                        /* largest nedof over the blocks */
+    double *work;                      /* 2 maxdof + 3 nnodes_max + maxslots: eval scratch */
+    double kscale;                     /* largest element stiffness scale */
 } ctn_asm;
 
 int ctn_asm_create(ctn_ctx *ctx, const ctn_model *m, ctn_asm **out);
 void ctn_asm_destroy(ctn_asm **a);
 
-/* Internal forces f (3 per node) and, if Kx != NULL, the tangent's values (nnz, in the
- * pattern's order) at displacements d (3 per node). On CTN_ERR_DOMAIN *bad is the index
- * of an element that collapsed to zero length. */
-int ctn_asm_eval(const ctn_asm *a, const double *d, double *f, double *Kx, size_t *bad);
-/* The same, with the total strain energy in *U (when U != NULL) from the same pass. */
-int ctn_asm_eval_energy(const ctn_asm *a, const double *d, double *f, double *Kx, double *U,
-                        size_t *bad);
+/* What the element loop hands each visitor: element e (model order) of block b, its
+ * internal forces fe (nedof) and packed tangent Ke (NULL unless asked for), its state. */
+typedef struct ctn_asm_elem {
+    size_t e;
+    const ctn_asm_block *b;
+    const int *nodes;          /* node indices */
+    const double *fe, *Ke;
+    const ctn_elem_state *st;
+    const int *slot;           /* its scatter slots */
+} ctn_asm_elem;
+typedef void (*ctn_asm_visit_fn)(void *data, const ctn_asm *a, const ctn_asm_elem *el);
 
-/* Elements of two-way material in compression at d (0 if one collapsed). */
+/* The one element loop: evaluate every element at state d (mode CTN_EVAL_*), with the
+ * tangent if with_K, and hand each to visit. Returns 0, or 1 when an element collapsed
+ * (its index in *bad; the loop stops there): an outcome, not a status. */
+int ctn_asm_loop(const ctn_asm *a, const double *d, unsigned mode, int with_K,
+                 ctn_asm_visit_fn visit, void *data, size_t *bad);
+
+/* Internal forces f (state layout) and, if Kx != NULL, the tangent's values (nnz, in the
+ * pattern's order) at d; the total stored energy in *U when U != NULL. 0, or 1 when an
+ * element collapsed (index in *bad, may be NULL). */
+int ctn_asm_eval(const ctn_asm *a, const double *d, unsigned mode, double *f, double *Kx,
+                 double *U, size_t *bad);
+
+/* Flexible members (CTN_ELEM_FLEXIBLE) whose own material takes compression and that are
+ * compressed at d (0 if an element collapsed). */
 size_t ctn_asm_count_compressed(const ctn_asm *a, const double *d);
-/* on = 1: every element behaves as tension-only (compression cut off); 0: back to the
- * materials' own behaviour. */
-void ctn_asm_cut_compression(ctn_asm *a, int on);
 
+/* Family and properties of element e. */
+const ctn_asm_block *ctn_asm_block_of(const ctn_asm *a, size_t e);
+const void *ctn_asm_props(const ctn_asm *a, size_t e);
 
-/* Reference coordinates X and displacements u of element e's nodes, from d. */
-void ctn_asm_gather(const ctn_asm *a, size_t e, const double *d, double *X, double *u);
-
-/* Build steps of ctn_asm_create, one file each (dofmap.c, pattern.c). */
-int ctn_asm_number_dofs(ctn_ctx *ctx, ctn_asm *a);
-int ctn_asm_element_props(ctn_ctx *ctx, ctn_asm *a);
+/* Build steps of ctn_asm_create (blocks.c, pattern.c). */
+int ctn_asm_blocks(ctn_ctx *ctx, ctn_asm *a);
 int ctn_asm_pattern(ctn_ctx *ctx, ctn_asm *a);
 int ctn_asm_scatter_map(ctn_ctx *ctx, ctn_asm *a);
-
-/* Local upper-triangle index of the pair (i, j), i <= j < CTN_EDOF. */
-static inline int ctn_asm_local_slot(int i, int j)
-{
-    return ctn_packed_index(i, j);
-}
 
 #endif

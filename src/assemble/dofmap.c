@@ -1,42 +1,84 @@
-/* Equation numbering of the free DOFs, in node order x, y, z, and element properties. */
-#include "assemble/asm.h"
+/* The DOF map: state layout per node and the numbering of the free DOFs, node by node. */
+#include "assemble/dofmap.h"
 
-int ctn_asm_number_dofs(ctn_ctx *ctx, ctn_asm *a)
+#include <string.h>
+
+static int layout(ctn_ctx *ctx, ctn_dofmap *map, const unsigned char *ndof_node)
 {
-    const ctn_model *m = a->m;
-    a->eq = ctn_malloc(ctx, 3 * a->nn, sizeof(int));
-    if (!a->eq) return CTN_ERR_NOMEM;
-    size_t n = 0;
-    for (size_t i = 0; i < a->nn; i++)
-        for (int k = 0; k < 3; k++)
-            a->eq[3 * i + k] = (m->nodes.v[i].fix >> k) & 1u ? -1 : (int)n++;
-    a->ndof = n;
-    a->dof_node = ctn_malloc(ctx, n ? n : 1, sizeof(int));
-    a->dof_dir = ctn_malloc(ctx, n ? n : 1, sizeof(int));
-    if (!a->dof_node || !a->dof_dir) return CTN_ERR_NOMEM;
-    for (size_t i = 0; i < 3 * a->nn; i++)
-        if (a->eq[i] >= 0) {
-            a->dof_node[a->eq[i]] = (int)(i / 3);
-            a->dof_dir[a->eq[i]] = (int)(i % 3);
-        }
+    int u = map->nn ? ndof_node[0] : 3;
+    for (size_t i = 1; i < map->nn && u; i++)
+        if (ndof_node[i] != u) u = 0;
+    map->uniform = u;
+    map->first = ctn_malloc(ctx, map->nn + 1, sizeof(size_t));
+    if (!map->first) return CTN_ERR_NOMEM;
+    map->first[0] = 0;
+    for (size_t i = 0; i < map->nn; i++) map->first[i + 1] = map->first[i] + ndof_node[i];
+    map->nstate = map->first[map->nn];
+    if (u) {                                      /* the formula serves: drop the table */
+        ctn_free(map->first);
+        map->first = NULL;
+    }
     return CTN_OK;
 }
 
-int ctn_asm_element_props(ctn_ctx *ctx, ctn_asm *a)
+int ctn_dofmap_build(ctn_ctx *ctx, const ctn_model *m, const unsigned char *ndof_node,
+                     ctn_dofmap *map)
 {
-    const ctn_model *m = a->m;
-    a->props = ctn_malloc(ctx, a->ne, sizeof(ctn_cable_props));
-    a->tension_only = ctn_malloc(ctx, a->ne, 1);
-    if (!a->props || !a->tension_only) return CTN_ERR_NOMEM;
-    for (size_t e = 0; e < a->ne; e++) {
-        const ctn_section *s = &m->sections.v[m->elements.v[e].section];
-        const ctn_material *mat = &m->materials.v[s->material];
-        a->props[e].EA = mat->E * s->A;
-        a->props[e].l0 = m->elements.v[e].l0;
-        a->props[e].strain = mat->strain;
-        a->props[e].tension_only = mat->tension_only;
-        a->tension_only[e] = (unsigned char)mat->tension_only;
+    memset(map, 0, sizeof *map);
+    map->nn = m->nodes.n;
+    int rc = layout(ctx, map, ndof_node);
+    if (rc) return rc;
+    if (map->nstate > 0x7fffffff) return ctn_error(ctx, CTN_ERR_MODEL, "model too large: %zu degrees of freedom", map->nstate);
+    map->eq = ctn_malloc(ctx, map->nstate ? map->nstate : 1, sizeof(int));
+    if (!map->eq) return CTN_ERR_NOMEM;
+    size_t n = 0;
+    for (size_t i = 0; i < map->nn; i++) {
+        size_t s = ctn_dofmap_node(map, i);
+        for (int k = 0; k < ctn_dofmap_count(map, i); k++)
+            map->eq[s + (size_t)k] = k < 3 && ((m->nodes.v[i].fix >> k) & 1u) ? -1 : (int)n++;
     }
-    a->ops = &ctn_cable2_ops;
+    map->ndof = n;
+    map->dof_node = ctn_malloc(ctx, n ? n : 1, sizeof(int));
+    map->dof_dir = ctn_malloc(ctx, n ? n : 1, sizeof(int));
+    if (!map->dof_node || !map->dof_dir) return CTN_ERR_NOMEM;
+    for (size_t i = 0; i < map->nn; i++) {
+        size_t s = ctn_dofmap_node(map, i);
+        for (int k = 0; k < ctn_dofmap_count(map, i); k++) {
+            int q = map->eq[s + (size_t)k];
+            if (q < 0) continue;
+            map->dof_node[q] = (int)i;
+            map->dof_dir[q] = k;
+        }
+    }
     return CTN_OK;
+}
+
+void ctn_dofmap_free(ctn_dofmap *map)
+{
+    ctn_free(map->first);
+    ctn_free(map->eq);
+    ctn_free(map->dof_node);
+    ctn_free(map->dof_dir);
+    memset(map, 0, sizeof *map);
+}
+
+void ctn_dofmap_from3(const ctn_dofmap *map, const double *v3, double *state)
+{
+    if (map->uniform == 3) {
+        memcpy(state, v3, map->nstate * sizeof(double));
+        return;
+    }
+    memset(state, 0, map->nstate * sizeof(double));
+    for (size_t i = 0; i < map->nn; i++)
+        memcpy(state + ctn_dofmap_node(map, i), v3 + 3 * i, 3 * sizeof(double));
+}
+
+void ctn_dofmap_to3(const ctn_dofmap *map, const double *state, double *v3)
+{
+    if (map->uniform == 3) {
+        memcpy(v3, state, map->nstate * sizeof(double));
+        return;
+    }
+    for (size_t i = 0; i < map->nn; i++)
+        memcpy(v3 + 3 * i, state + ctn_dofmap_node(map, i), 3 * sizeof(double));
 }

@@ -1,6 +1,7 @@
 /* Sparsity pattern of the tangent (upper triangle, compressed columns) from the node
- * adjacency graph, and the element-to-slot scatter map. Equations are numbered in node
- * order, so the rows of a column come out sorted by walking sorted node neighbours. */
+ * adjacency graph (the nodes of an element are all adjacent), and the element-to-slot
+ * scatter map. Equations are numbered node by node, so the rows of a column come out
+ * sorted by walking sorted node neighbours. */
 #include "assemble/asm.h"
 
 #include <stdlib.h>
@@ -11,28 +12,47 @@ static int cmp_int(const void *x, const void *y)
     return (p > q) - (p < q);
 }
 
+/* Neighbour entries an element adds: each node sees the others. */
+static size_t pair_count(const ctn_asm *a)
+{
+    size_t n = 0;
+    for (size_t k = 0; k < a->nblocks; k++)
+        n += a->blocks[k].count * (size_t)a->blocks[k].nnodes * (size_t)(a->blocks[k].nnodes - 1);
+    return n;
+}
+
+/* For every element, node p sees node q (count: adj == NULL, then fill). */
+static void each_pair(const ctn_asm *a, int *ptr, int *fill, int *adj)
+{
+    for (size_t k = 0; k < a->nblocks; k++) {
+        const ctn_asm_block *b = &a->blocks[k];
+        const int *conn = ctn_elem_nodes(a->m, b->e0);
+        for (size_t i = 0; i < b->count; i++, conn += b->nnodes)
+            for (int s = 0; s < b->nnodes; s++)
+                for (int t = 0; t < b->nnodes; t++) {
+                    if (s == t) continue;
+                    if (adj) adj[fill[conn[s]]++] = conn[t];
+                    else ptr[conn[s] + 1]++;
+                }
+    }
+}
+
 /* Node adjacency (self included), each list sorted and unique: CSR ptr/adj. */
 static int adjacency(ctn_ctx *ctx, const ctn_asm *a, int **ptr_out, int **adj_out)
 {
-    const ctn_model *m = a->m;
+    size_t pairs = pair_count(a);
+    if (a->nn + pairs > 0x7fffffff) return ctn_error(ctx, CTN_ERR_MODEL, "model too large: %zu node adjacencies", pairs);
     int *ptr = ctn_calloc(ctx, a->nn + 1, sizeof(int));
-    int *adj = ctn_malloc(ctx, a->nn + 2 * a->ne, sizeof(int));
-    int *fill = ctn_malloc(ctx, a->nn, sizeof(int));
+    int *adj = ctn_malloc(ctx, a->nn + pairs, sizeof(int));
+    int *fill = ctn_malloc(ctx, a->nn ? a->nn : 1, sizeof(int));
     if (!ptr || !adj || !fill) goto fail;
-    for (size_t e = 0; e < a->ne; e++) {
-        ptr[m->elements.v[e].node[0] + 1]++;
-        ptr[m->elements.v[e].node[1] + 1]++;
-    }
+    each_pair(a, ptr, NULL, NULL);
     for (size_t i = 0; i < a->nn; i++) ptr[i + 1] += ptr[i] + 1;   /* +1: self */
     for (size_t i = 0; i < a->nn; i++) {
         adj[ptr[i]] = (int)i;
         fill[i] = ptr[i] + 1;
     }
-    for (size_t e = 0; e < a->ne; e++) {
-        int p = m->elements.v[e].node[0], q = m->elements.v[e].node[1];
-        adj[fill[p]++] = q;
-        adj[fill[q]++] = p;
-    }
+    each_pair(a, NULL, fill, adj);
     int w = 0, start = 0;                                /* sort, unique, compact */
     for (size_t i = 0; i < a->nn; i++) {
         int end = ptr[i + 1], last = -1;
@@ -55,14 +75,16 @@ fail:
 /* Walk column structure: count (rowind == NULL) or fill. Returns the entry count. */
 static size_t walk_columns(const ctn_asm *a, const int *ptr, const int *adj, int *rowind)
 {
+    const ctn_dofmap *map = &a->map;
     size_t nz = 0;
     for (size_t q = 0; q < a->nn; q++)
-        for (int k = 0; k < 3; k++) {
-            int c = a->eq[3 * q + k];
+        for (int k = 0; k < ctn_dofmap_count(map, q); k++) {
+            int c = map->eq[ctn_dofmap_node(map, q) + (size_t)k];
             if (c < 0) continue;
             for (int t = ptr[q]; t < ptr[q + 1] && adj[t] <= (int)q; t++) {
-                for (int j = 0; j < 3; j++) {
-                    int r = a->eq[3 * adj[t] + j];
+                size_t s = ctn_dofmap_node(map, (size_t)adj[t]);
+                for (int j = 0; j < ctn_dofmap_count(map, (size_t)adj[t]); j++) {
+                    int r = map->eq[s + (size_t)j];
                     if (r < 0 || r > c) continue;
                     if (rowind) rowind[nz] = r;
                     nz++;
@@ -105,29 +127,45 @@ static int find_slot(const ctn_asm *a, int r, int c)
     return -1;
 }
 
-int ctn_asm_scatter_map(ctn_ctx *ctx, ctn_asm *a)
+/* Equation numbers of an element's DOFs (-1: fixed). */
+static void element_eqs(const ctn_asm *a, const ctn_asm_block *b, const int *nd, int *g)
 {
-    unsigned char *seen = ctn_calloc(ctx, a->nnz ? a->nnz : 1, 1);
-    a->slot = ctn_malloc(ctx, a->ne, CTN_ESLOTS * sizeof(int));
-    if (!a->slot || !seen) {
-        ctn_free(seen);
-        return CTN_ERR_NOMEM;
-    }
-    for (size_t e = 0; e < a->ne; e++) {
-        const int *nd = a->m->elements.v[e].node;
-        int g[CTN_EDOF], *s = a->slot + e * CTN_ESLOTS;
-        for (int k = 0; k < CTN_EDOF; k++) g[k] = a->eq[3 * nd[k / 3] + k % 3];
-        for (int i = 0; i < CTN_EDOF; i++)
-            for (int j = i; j < CTN_EDOF; j++) {
+    int ndn = b->ops->ndof_node;
+    for (int k = 0; k < b->nedof; k++)
+        g[k] = a->map.eq[ctn_dofmap_node(&a->map, (size_t)nd[k / ndn]) + (size_t)(k % ndn)];
+}
+
+static void block_slots(const ctn_asm *a, const ctn_asm_block *b, unsigned char *seen, int *g)
+{
+    const int *conn = ctn_elem_nodes(a->m, b->e0);
+    int n = b->nedof;
+    for (size_t e = 0; e < b->count; e++, conn += b->nnodes) {
+        int *s = a->slot + b->slot0 + e * (size_t)b->nslots;
+        element_eqs(a, b, conn, g);
+        for (int i = 0; i < n; i++)
+            for (int j = i; j < n; j++) {
                 int r = g[i] < g[j] ? g[i] : g[j], c = g[i] < g[j] ? g[j] : g[i];
                 int k = r < 0 ? -1 : find_slot(a, r, c);
                 if (k >= 0 && !seen[k]) {                 /* first to reach it: assign */
                     seen[k] = 1;
                     k = -(k + 2);
                 }
-                s[ctn_asm_local_slot(i, j)] = k;
+                s[ctn_packed_index(n, i, j)] = k;
             }
     }
+}
+
+int ctn_asm_scatter_map(ctn_ctx *ctx, ctn_asm *a)
+{
+    size_t nslots = 0;
+    for (size_t k = 0; k < a->nblocks; k++) nslots += a->blocks[k].count * (size_t)a->blocks[k].nslots;
+    unsigned char *seen = ctn_calloc(ctx, a->nnz ? a->nnz : 1, 1);
+    int *g = ctn_malloc(ctx, (size_t)a->maxdof + 1, sizeof(int));
+    a->slot = ctn_malloc(ctx, nslots ? nslots : 1, sizeof(int));
+    if (a->slot && seen && g)
+        for (size_t k = 0; k < a->nblocks; k++) block_slots(a, &a->blocks[k], seen, g);
+    int rc = a->slot && seen && g ? CTN_OK : CTN_ERR_NOMEM;
     ctn_free(seen);
-    return CTN_OK;
+    ctn_free(g);
+    return rc;
 }

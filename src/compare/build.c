@@ -32,23 +32,22 @@ int ctn_cmp_build(ctn_ctx *ctx, const ctn_model *base, const ctn_span *span, dou
         return ctn_error(ctx, CTN_ERR_MODEL, "a span with point loads cannot be rebuilt with another "
                          "length or mesh (only self-weight and hload are carried over)");
     ctn_model *m = NULL;
-    ctn_solve_options opt;
-    ctn_model_solve_options(base, &opt);
-    opt.monitor = NULL;
-    opt.monitor_data = NULL;
     int rc = ctn_model_create(ctx, &m);
     if (!rc) rc = add_span(m, base, span, L0, n, strain);
-    if (!rc) rc = ctn_model_set_solve_options(m, &opt);
     if (rc) ctn_model_destroy(&m);
     *out = m;
     return rc;
 }
 
-int ctn_cmp_solve(ctn_ctx *ctx, const ctn_model *m, double tol, ctn_solution **s, int *fallback)
+int ctn_cmp_solve(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options *base, double tol,
+                  ctn_solution **s, int *fallback)
 {
     ctn_solve_options opt;
     ctn_solve_summary sum;
-    ctn_model_solve_options(m, &opt);
+    if (base) opt = *base;
+    else ctn_solve_options_default(&opt);
+    opt.monitor = NULL;
+    opt.monitor_data = NULL;
     if (tol > 0) opt.tol = tol;
     *fallback = 0;
     int rc = ctn_solve(ctx, m, &opt, s);

@@ -44,12 +44,13 @@ double ctn_cmp_dot3(const double a[3], const double b[3]);
 void ctn_cmp_to_plane(const ctn_span *s, const double p[3], double xy[2]);
 
 /* A fresh single-span model like the span of base (see ctn_study_run): unstressed
- * length L0, n elements, strain measure, the base's solve options (build.c). */
+ * length L0, n elements, strain measure (build.c). */
 int ctn_cmp_build(ctn_ctx *ctx, const ctn_model *base, const ctn_span *span, double L0,
                   size_t n, ctn_strain strain, ctn_model **out);
-/* Solve a built model with its own options; on non-convergence with a method other
- * than AUTO, solve again with AUTO (*fallback = 1). *s owns the last solution. */
-int ctn_cmp_solve(ctn_ctx *ctx, const ctn_model *m, double tol, ctn_solution **s,
-                  int *fallback);
+/* Solve a built model with options base (NULL: defaults; tol > 0 replaces its tol); on
+ * non-convergence with a method other than AUTO, solve again with AUTO (*fallback = 1).
+ * *s owns the last solution. */
+int ctn_cmp_solve(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options *base, double tol,
+                  ctn_solution **s, int *fallback);
 
 #endif

@@ -10,6 +10,7 @@ struct ctn_convergence {
     ctn_compare_values ref;    /* elastic catenary */
     size_t n;
     ctn_convergence_row *row;
+    const ctn_solve_options *opt; /* of the FEA solves (during the run) */
 };
 
 static int by_n(const void *a, const void *b)
@@ -28,7 +29,7 @@ static int solve_row(ctn_ctx *ctx, const ctn_model *base, ctn_convergence *cv, c
     ctn_compare *c = NULL;
     ctn_solve_summary sum;
     int fallback = 0, rc = ctn_cmp_build(ctx, base, &cv->span, cv->span.L0, row->n, CTN_STRAIN_ENGINEERING, &m);
-    if (!rc) rc = ctn_cmp_solve(ctx, m, 1e-12, &s, &fallback);
+    if (!rc) rc = ctn_cmp_solve(ctx, m, cv->opt, 1e-12, &s, &fallback);
     if (!rc) rc = ctn_compare_create(ctx, m, &c);
     if (!rc) {
         ctn_solution_summary(s, &sum);
@@ -80,8 +81,8 @@ static int mesh_list(ctn_ctx *ctx, ctn_convergence *cv, const size_t *ns, size_t
     return CTN_OK;
 }
 
-int ctn_convergence_run(ctn_ctx *ctx, const ctn_model *base, const size_t *ns, size_t count,
-                        ctn_convergence **out)
+int ctn_convergence_run(ctn_ctx *ctx, const ctn_model *base, const ctn_solve_options *opt,
+                        const size_t *ns, size_t count, ctn_convergence **out)
 {
     if (!out) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_convergence_run: out is NULL");
     *out = NULL;
@@ -90,6 +91,7 @@ int ctn_convergence_run(ctn_ctx *ctx, const ctn_model *base, const size_t *ns, s
         if (ns[i] < 2 || ns[i] > 50000000)
             return ctn_error(ctx, CTN_ERR_INVALID, "element counts must be between 2 and 50000000 (got %zu)", ns[i]);
     ctn_convergence *cv = ctn_calloc(ctx, 1, sizeof *cv);
+    if (cv) cv->opt = opt;
     int rc = cv ? setup(ctx, base, cv) : CTN_ERR_NOMEM;
     if (!rc) rc = mesh_list(ctx, cv, ns, count);
     for (size_t i = 0; !rc && i < cv->n; i++) rc = solve_row(ctx, base, cv, &cv->row[i]);

@@ -51,14 +51,15 @@ static int lengths(ctn_ctx *ctx, ctn_study *st, const ctn_study_options *o, doub
 }
 
 /* Solve length row->L0 and fill the row. */
-static int solve_row(ctn_ctx *ctx, const ctn_model *base, const ctn_span *sp, ctn_study_row *row)
+static int solve_row(ctn_ctx *ctx, const ctn_model *base, const ctn_solve_options *opt, const ctn_span *sp,
+                     ctn_study_row *row)
 {
     ctn_model *m = NULL;
     ctn_solution *s = NULL;
     ctn_compare *c = NULL;
     ctn_solve_summary sum;
     int rc = ctn_cmp_build(ctx, base, sp, row->L0, sp->n, sp->strain, &m);
-    if (!rc) rc = ctn_cmp_solve(ctx, m, 0, &s, &row->fallback);
+    if (!rc) rc = ctn_cmp_solve(ctx, m, opt, 0, &s, &row->fallback);
     if (!rc) rc = ctn_compare_create(ctx, m, &c);
     if (!rc) {
         ctn_solution_summary(s, &sum);
@@ -106,7 +107,7 @@ int ctn_study_run(ctn_ctx *ctx, const ctn_model *base, const ctn_study_options *
     if (!rc) st->span = c->span;
     if (!rc) rc = lengths(ctx, st, opt, c->span.L0);
     if (!rc) rc = copy_claims(ctx, st, opt);
-    for (size_t i = 0; !rc && i < st->n; i++) rc = solve_row(ctx, base, &st->span, &st->row[i]);
+    for (size_t i = 0; !rc && i < st->n; i++) rc = solve_row(ctx, base, opt->solve, &st->span, &st->row[i]);
     ctn_compare_destroy(&c);
     if (rc) ctn_study_destroy(&st);
     *out = st;

@@ -1,17 +1,16 @@
-/* Two-node cable element, total Lagrangian (shared/THEORY.md).
+/* Two-node cable element, total Lagrangian (docs/theory.md).
  *   a = x2 - x1, l = |a|, e = a / l, lambda = l / l0
  *   Green-Lagrange: eps = (lambda^2 - 1)/2, N = EA eps lambda, dN/dl = EA (3 lambda^2 - 1)/(2 l0)
  *   engineering:    eps = lambda - 1,       N = EA eps,        dN/dl = EA / l0
  *   strain energy U = EA l0 eps^2 / 2 (dU/dl = N for both measures)
  *   f2 = N e = -f1;  K = [[k, -k], [-k, k]],  k = dN/dl e e^T + N/l (I - e e^T)         */
-#include "element/element.h"
+#include "element/axial.h"
 
 #include <math.h>
 
-const ctn_element_ops ctn_cable2_ops = { "cable2", 2, ctn_cable2_eval };
-
 /* Axial force and its derivative with respect to the current length. */
-static void axial_law(const ctn_cable_props *p, double l, ctn_elem_state *st, double *dNdl)
+static void axial_law(const ctn_cable_props *p, unsigned mode, double l, ctn_elem_state *st,
+                      double *dNdl)
 {
     double lam = l / p->l0;
     if (p->strain == CTN_STRAIN_ENGINEERING) {
@@ -25,43 +24,71 @@ static void axial_law(const ctn_cable_props *p, double l, ctn_elem_state *st, do
     }
     st->energy = 0.5 * p->EA * p->l0 * st->strain * st->strain;   /* U = EA l0 eps^2 / 2 */
     st->slack = 0;
-    if (p->tension_only && st->N <= 0) {
+    if ((p->tension_only || (mode & CTN_EVAL_CUT_COMPRESSION)) && st->N <= 0) {
         st->N = 0;
         st->energy = 0;
         *dNdl = 0;
         st->slack = 1;
     }
+    st->stress = st->N / p->A;
 }
 
-int ctn_cable2_eval(const void *props, const double *X, const double *u, double *f,
-                    double *K, ctn_elem_state *out)
+static int cable_eval(const void *props, unsigned mode, const double *X, const double *u,
+                      double *f, double *K, ctn_elem_state *out)
 {
     const ctn_cable_props *p = props;
-    double a[3];
-    for (int i = 0; i < 3; i++) a[i] = (X[3 + i] - X[i]) + (u[3 + i] - u[i]);
-    double l = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    if (!(l > 0) || !isfinite(l)) return CTN_ERR_DOMAIN;
-    double e[3] = { a[0] / l, a[1] / l, a[2] / l };
     ctn_elem_state st;
-    double dNdl;
-    st.l = l;
-    axial_law(p, l, &st, &dNdl);
-    for (int i = 0; i < 3; i++) {
-        f[i] = -st.N * e[i];                                  /* f1 = -N e */
-        f[3 + i] = st.N * e[i];                               /* f2 =  N e */
-    }
-    if (K) {                                                  /* packed upper triangle */
-        double s = st.N / l, k[3][3];
-        for (int i = 0; i < 3; i++)
-            for (int j = i; j < 3; j++) k[i][j] = k[j][i] = (dNdl - s) * e[i] * e[j] + (i == j ? s : 0.0);
-        int t = 0;
-        for (int i = 0; i < 3; i++) {
-            for (int j = i; j < 3; j++) K[t++] = k[i][j];      /* node 1 - node 1 */
-            for (int j = 0; j < 3; j++) K[t++] = -k[i][j];     /* node 1 - node 2 */
-        }
-        for (int i = 0; i < 3; i++)
-            for (int j = i; j < 3; j++) K[t++] = k[i][j];      /* node 2 - node 2 */
-    }
+    double e[3], dNdl;
+    if (ctn_axial_chord(X, u, e, &st.l)) return 1;
+    axial_law(p, mode, st.l, &st, &dNdl);
+    ctn_axial_forces(e, st.N, f);
+    if (K) ctn_axial_tangent(e, st.l, st.N, dNdl, K);
     if (out) *out = st;
+    return 0;
+}
+
+static int cable_check(const ctn_model *m, const ctn_element *e)
+{
+    const ctn_section *sp = &m->sections.v[e->section];
+    if (!isfinite(e->l0) || e->l0 <= 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "element %d: l0 must be positive and finite (got %g)", e->id, e->l0);
+    if (!isfinite(m->materials.v[sp->material].E * sp->A / e->l0))
+        return ctn_model_error(m, CTN_ERR_MODEL, "element %d: axial stiffness E A / l0 overflows (l0 = %g)", e->id, e->l0);
     return CTN_OK;
 }
+
+static void cable_setup(const ctn_model *m, size_t e, void *props)
+{
+    const ctn_element *el = &m->elements.v[e];
+    const ctn_section *s = &m->sections.v[el->section];
+    const ctn_material *mat = &m->materials.v[s->material];
+    ctn_cable_props *p = props;
+    p->EA = mat->E * s->A;
+    p->l0 = el->l0;
+    p->A = s->A;
+    p->strain = (int)mat->strain;
+    p->tension_only = mat->tension_only;
+}
+
+/* Self-weight: w l0 g, half to each node (a dead load). */
+static void cable_load(const ctn_model *m, size_t e, double *f)
+{
+    const ctn_element *el = &m->elements.v[e];
+    const int *nd = ctn_elem_nodes(m, e);
+    double W = 0.5 * m->sections.v[el->section].w * el->l0;
+    for (int a = 0; a < 2; a++)
+        for (int k = 0; k < 3; k++) f[3 * (size_t)nd[a] + (size_t)k] += W * m->gravity[k];
+}
+
+static double cable_stiffness(const void *props)
+{
+    const ctn_cable_props *p = props;
+    return p->EA / p->l0;
+}
+
+static double cable_rest_length(const void *props) { return ((const ctn_cable_props *)props)->l0; }
+
+const ctn_element_ops ctn_cable2_ops = {
+    "cable", 2, 3, sizeof(ctn_cable_props), CTN_ELEM_FLEXIBLE | CTN_ELEM_SECTION,
+    cable_check, cable_setup, cable_eval, cable_load, cable_stiffness, cable_rest_length,
+};

@@ -1,55 +1,106 @@
-/* Internal: element kernels. Pure functions (no allocation, no I/O) behind one small
- * ops table, so the assembly loop is written once for every element type. */
+/* Internal: element families behind one ops table.
+ *
+ * A family (cable, spring, ...) is a table of operations on opaque per-element
+ * properties: setup builds the properties of element e from the model, eval is a pure
+ * kernel (no allocation, no I/O) that returns internal forces, the tangent and the
+ * element's state; load lumps the loads that belong to the element (self-weight).
+ * The assembler, the checks and the result code call the ops through one element loop
+ * (assemble/asm.h) and never look inside the properties. Registered families are listed
+ * in registry.c; a new one is a file here and a line there (docs/architecture.md). */
 #ifndef CTN_ELEMENT_ELEMENT_H
 #define CTN_ELEMENT_ELEMENT_H
 
-#include "catena/model.h"
+#include "model/model.h"
 
-/* Properties of a two-node cable (truss) element. */
-typedef struct ctn_cable_props {
-    double EA;          /* axial rigidity [force] */
-    double l0;          /* unstressed length [length] */
-    ctn_strain strain;  /* strain measure */
-    int tension_only;   /* 1: N = max(N, 0) */
-} ctn_cable_props;
+#define CTN_ELEM_MAX_NODES 64   /* most nodes of one element (pulley chains) */
+#define CTN_ELEM_MAX_DOF_NODE 6 /* most DOFs per node of any family */
 
 /* What an evaluation reports besides forces and stiffness. */
 typedef struct ctn_elem_state {
-    double l;           /* current length */
+    double l;           /* current length (of the whole member) */
     double strain;      /* strain of the element's measure */
     double N;           /* axial tension (true force) */
-    double energy;      /* strain energy EA l0 eps^2 / 2 (0 when slack); dU/dl = N */
-    int slack;          /* tension-only element with no force */
+    double stress;      /* N / A for members with a section, 0 otherwise */
+    double energy;      /* stored energy; its gradient is the internal force */
+    int slack;          /* tension-only member with no force */
 } ctn_elem_state;
 
-/* eval(props, X, u, f, K, st): X = reference coordinates of the nodes (3 per node),
- * u = their displacements (the current chord is formed as (X2 - X1) + (u2 - u1), which
- * keeps round-off at the scale of the element, not of the coordinates);
- * f = internal nodal forces (3 per node); K = the upper triangle of the symmetric
- * tangent stiffness packed row by row ((3 nnodes)(3 nnodes + 1)/2 values: K00, K01, ...,
- * K05, K11, ..., K55 for two nodes), or NULL to skip it; st = element state (may be
- * NULL).
- * Returns 0, or CTN_ERR_DOMAIN if the element has collapsed to zero length. */
-typedef int (*ctn_elem_eval_fn)(const void *props, const double *X, const double *u,
-                                double *f, double *K, ctn_elem_state *st);
+/* Evaluation modes (bit flags). */
+enum {
+    CTN_EVAL_CUT_COMPRESSION = 1   /* members that can go slack (CTN_ELEM_FLEXIBLE) carry
+                                      no compression, whatever their material */
+};
+
+/* Family flags. */
+enum {
+    CTN_ELEM_FLEXIBLE = 1,  /* a cable: hangs when slack; may be pre-shaped on an arc and
+                               relaxed with compression cut off by the solver */
+    CTN_ELEM_SECTION = 2    /* takes a section (section=): required; others refuse one */
+};
+
+/* eval(props, mode, X, u, f, K, st): X = reference coordinates of the element's nodes
+ * (3 per node), u = their displacements (ndof_node per node; the current chord is formed
+ * as (X2 - X1) + (u2 - u1), which keeps round-off at the scale of the element); f =
+ * internal nodal forces (ndof_node per node); K = the upper triangle of the symmetric
+ * tangent packed row by row (ctn_packed_index), or NULL to skip it; st may be NULL.
+ * Returns 0, or 1 if the element has collapsed (zero length): an outcome, not a status. */
+typedef int (*ctn_elem_eval_fn)(const void *props, unsigned mode, const double *X,
+                                const double *u, double *f, double *K, ctn_elem_state *st);
 
 typedef struct ctn_element_ops {
-    const char *name;
-    int nnodes;
+    const char *name;       /* family name, as the model file and the API spell it */
+    int nnodes;             /* nodes per element; 0: two or more, given per element */
+    int ndof_node;          /* DOFs per node the family uses (3: translations x, y, z) */
+    size_t props_size;      /* bytes of one element's properties (a multiple of 8) */
+    unsigned flags;         /* CTN_ELEM_* */
+    /* Check a new element record (nodes, section, parameters) before it is added:
+     * CTN_OK or a model error (ctn_model_error) naming what is wrong. */
+    int (*check)(const ctn_model *m, const ctn_element *e);
+    /* Properties of element e of the model into props (props_size bytes). */
+    void (*setup)(const ctn_model *m, size_t e, void *props);
     ctn_elem_eval_fn eval;
+    /* Optional: nodal loads that belong to element e (self-weight w l0 along g), ndof_node
+     * per node, added to f (3 per node in model node order). */
+    void (*load)(const ctn_model *m, size_t e, double *f);
+    /* Stiffness scale of the tangent (E A / l0, k), for shifts and tolerances. */
+    double (*stiffness)(const void *props);
+    /* Unstressed length of a flexible member (CTN_ELEM_FLEXIBLE), else NULL. */
+    double (*rest_length)(const void *props);
 } ctn_element_ops;
 
-#define CTN_EPACKED 21   /* packed upper triangle of a 6 x 6 element matrix */
+/* Entries of the packed upper triangle of an n x n matrix. */
+static inline int ctn_packed_size(int n) { return n * (n + 1) / 2; }
 
-/* Index of (i, j), i <= j < 6, in the packed upper triangle. */
-static inline int ctn_packed_index(int i, int j)
+/* Index of (i, j), i <= j < n, in the packed upper triangle of an n x n matrix. */
+static inline int ctn_packed_index(int n, int i, int j)
 {
-    return i * 6 - i * (i - 1) / 2 + (j - i);
+    return i * n - i * (i - 1) / 2 + (j - i);
 }
 
-/* The two-node total-Lagrangian cable element of shared/THEORY.md. */
+/* ---- registry (registry.c) ---- */
+/* Number of registered families; family i (0-based); NULL if out of range. */
+int ctn_element_family_count(void);
+const ctn_element_ops *ctn_element_family(int type);
+/* Family index of a name, -1 if none. */
+int ctn_element_family_find(const char *name);
+
+/* The families (one file each). */
 extern const ctn_element_ops ctn_cable2_ops;
-int ctn_cable2_eval(const void *props, const double *X, const double *u, double *f,
-                    double *K, ctn_elem_state *st);
+extern const ctn_element_ops ctn_spring2_ops;
+
+/* Properties of a two-node cable (truss) element (cable2.c). */
+typedef struct ctn_cable_props {
+    double EA;          /* axial rigidity [force] */
+    double l0;          /* unstressed length [length] */
+    double A;           /* area [length^2], for the stress */
+    int strain;         /* ctn_strain */
+    int tension_only;   /* 1: N = max(N, 0) */
+} ctn_cable_props;
+
+/* Properties of a two-node axial spring (spring2.c). */
+typedef struct ctn_spring_props {
+    double k;           /* stiffness [force/length] */
+    double l0;          /* free length [length] */
+} ctn_spring_props;
 
 #endif

@@ -1,5 +1,6 @@
 /* The directives of the .cable format (docs/format.md), one handler each. */
 #include "io/parse.h"
+#include "solve/problem.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -119,6 +120,28 @@ static int d_element(ctn_line *l)
     return rc ? rc : ctn_model_add_element(l->m, id, a, b, sec, l0);
 }
 
+static int d_spring(ctn_line *l)
+{
+    int id = 0, nodes[2] = { 0, 0 };
+    ctn_element_spec spec;
+    ctn_element_spec_init(&spec);
+    int rc = ctn_parse_positional(l, 3, "spring ID NODE1 NODE2 k=STIFFNESS [l0=LENGTH]");
+    if (!rc) rc = ctn_parse_int(l, "the element id", l->tok[1], &id);
+    for (int k = 0; k < 2 && !rc; k++) rc = ctn_parse_int(l, "a node id", l->tok[2 + k], &nodes[k]);
+    if (!rc) rc = ctn_parse_key_num(l, 4, "k", 1, &spec.k);
+    if (!rc && ctn_parse_key(l, 4, "l0")) {
+        rc = ctn_parse_key_num(l, 4, "l0", 1, &spec.l0);
+        if (!rc && !(spec.l0 > 0)) return ctn_parse_error(l, "spring %d: l0 must be positive (found %g)", id, spec.l0);
+    }
+    if (!rc && !(spec.k > 0)) return ctn_parse_error(l, "spring %d: k must be positive (found %g)", id, spec.k);
+    if (!rc) rc = ctn_parse_leftovers(l, 4, "spring");
+    spec.type = "spring";
+    spec.id = id;
+    spec.nnodes = 2;
+    spec.nodes = nodes;
+    return rc ? rc : ctn_model_add_element_spec(l->m, &spec);
+}
+
 static int cable_shape(ctn_line *l, ctn_cable_spec *spec)
 {
     const char *shape = ctn_parse_key(l, 3, "shape");
@@ -198,12 +221,9 @@ static int d_solve(ctn_line *l)
     static const char *const orderings[] = { "auto", "natural", "amd" };
     static const char *const methods[] = { "auto", "newton", "arclength" };
     static const char *const onoff[] = { "off", "on" };
-    ctn_solve_options opt;
-    int ord, method, ls;
-    ctn_model_solve_options(l->m, &opt);
-    ord = (int)opt.ordering;
-    method = (int)opt.method;
-    ls = opt.linesearch;
+    static const char *const solvers[] = { "cholmod", "cholmod-ldl" };
+    ctn_solve_options opt = *l->opt;
+    int ord = (int)opt.ordering, method = (int)opt.method, ls = opt.linesearch, lin = -1;
     int rc = ctn_parse_positional(l, 0, "solve [tol=T] [dtol=T] [maxit=N] [method=auto|newton|arclength] ...");
     if (!rc) rc = ctn_parse_key_num(l, 1, "tol", 0, &opt.tol);
     if (!rc) rc = ctn_parse_key_num(l, 1, "dtol", 0, &opt.dtol);
@@ -211,16 +231,22 @@ static int d_solve(ctn_line *l)
     if (!rc) rc = key_word(l, "ordering", orderings, 3, &ord);
     if (!rc) rc = key_word(l, "method", methods, 3, &method);
     if (!rc) rc = key_word(l, "linesearch", onoff, 2, &ls);
+    if (!rc) rc = key_word(l, "linear_solver", solvers, 2, &lin);
     if (!rc) rc = key_int(l, "steps", 1, 100000, &opt.steps);
     if (!rc) rc = key_int(l, "cutbacks", 0, 60, &opt.maxcuts);
     if (!rc) rc = ctn_parse_key_num(l, 1, "arclength", 0, &opt.arclength);
     if (!rc) rc = key_int(l, "arcsteps", 1, 1000000, &opt.arcsteps);
     if (!rc) rc = ctn_parse_key_num(l, 1, "lambda", 0, &opt.lambda_max);
     if (!rc) rc = ctn_parse_leftovers(l, 1, "solve");
+    if (rc) return rc;
     opt.ordering = (ctn_ordering)ord;
     opt.method = (ctn_method)method;
     opt.linesearch = ls;
-    return rc ? rc : ctn_model_set_solve_options(l->m, &opt);
+    if (lin >= 0) opt.linear_solver = solvers[lin];
+    char msg[256];
+    if (ctn_solve_options_fault(&opt, msg, sizeof msg)) return ctn_parse_error(l, "%s", msg);
+    *l->opt = opt;
+    return CTN_OK;
 }
 
 static int d_step(ctn_line *l)
@@ -260,6 +286,7 @@ static const directive directives[] = {
     { "section", d_section }, { "node", d_node },       { "element", d_element },
     { "cable", d_cable },     { "load", d_load },       { "hload", d_hload },
     { "solve", d_solve },     { "step", d_step },       { "displace", d_displace },
+    { "spring", d_spring },
 };
 
 int ctn_parse_directive(ctn_line *l)

@@ -99,7 +99,8 @@ static void add_elements(jb *b, cJSON *root, const ctn_model *m, const ctn_step_
         cJSON *o = item(b, a);
         if (!o) return;
         num(b, o, "id", e->id);
-        int ids[2] = { m->nodes.v[e->node[0]].id, m->nodes.v[e->node[1]].id };
+        const int *en = ctn_elem_nodes(m, i);
+        int ids[2] = { m->nodes.v[en[0]].id, m->nodes.v[en[e->nnodes - 1]].id };
         cJSON *nd = cJSON_CreateIntArray(ids, 2);
         if (!nd || !cJSON_AddItemToObject(o, "nodes", nd)) { cJSON_Delete(nd); b->ok = 0; return; }
         num(b, o, "l0", e->l0);
@@ -108,7 +109,7 @@ static void add_elements(jb *b, cJSON *root, const ctn_model *m, const ctn_step_
         num(b, o, "force", st->force);
         num(b, o, "stress", st->stress);
         if (m->mpa > 0) num(b, o, "stress_mpa", st->stress * m->mpa);
-        if (m->materials.v[m->sections.v[e->section].material].tension_only)
+        if (e->section >= 0 && m->materials.v[m->sections.v[e->section].material].tension_only)
             b->ok &= cJSON_AddBoolToObject(o, "slack", st->slack) != NULL;
     }
 }

@@ -4,11 +4,13 @@
 #define CTN_IO_PARSE_H
 
 #include "model/model.h"
+#include "catena/solve.h"
 
 #define CTN_MAX_TOKENS 64
 
 typedef struct ctn_line {
     ctn_model *m;
+    ctn_solve_options *opt;       /* where the `solve` line goes */
     const char *file;
     int line;
     char *tok[CTN_MAX_TOKENS];

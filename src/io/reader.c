@@ -26,11 +26,12 @@ static int tokenize(ctn_line *l, char *s)
     return CTN_OK;
 }
 
-static int parse_text(ctn_model *m, const char *name, char *text, size_t len)
+static int parse_text(ctn_model *m, ctn_solve_options *opt, const char *name, char *text, size_t len)
 {
     ctn_line l;
     memset(&l, 0, sizeof l);
     l.m = m;
+    l.opt = opt;
     l.file = name;
     size_t start = len >= 3 && !memcmp(text, "\xef\xbb\xbf", 3) ? 3 : 0;   /* UTF-8 BOM */
     for (l.line = 1; start < len || (start == len && l.line == 1); l.line++) {
@@ -57,11 +58,13 @@ static int parse_text(ctn_model *m, const char *name, char *text, size_t len)
     return CTN_OK;
 }
 
-int ctn_model_read_string(ctn_ctx *ctx, const char *name, const char *text, size_t len,
-                          ctn_model **out)
+int ctn_read_string(ctn_ctx *ctx, const char *name, const char *text, size_t len,
+                    ctn_model **out, ctn_solve_options *opt)
 {
-    if (!out || (!text && len)) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_model_read_string: bad arguments");
+    if (!out || (!text && len)) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_read_string: bad arguments");
     *out = NULL;
+    ctn_solve_options own;
+    ctn_solve_options_default(opt ? opt : &own);
     ctn_model *m = NULL;
     char *buf = ctn_malloc(ctx, len + 1, 1);
     if (!buf) return CTN_ERR_NOMEM;
@@ -71,7 +74,7 @@ int ctn_model_read_string(ctn_ctx *ctx, const char *name, const char *text, size
     if (!rc) {
         locale_t c = newlocale(LC_ALL_MASK, "C", (locale_t)0);
         locale_t old = c ? uselocale(c) : (locale_t)0;
-        rc = parse_text(m, name ? name : "<string>", buf, len);
+        rc = parse_text(m, opt ? opt : &own, name ? name : "<string>", buf, len);
         if (c) {
             uselocale(old);
             freelocale(c);
@@ -111,15 +114,26 @@ static int read_all(ctn_ctx *ctx, const char *path, char **data, size_t *len)
     return CTN_OK;
 }
 
-int ctn_model_read_file(ctn_ctx *ctx, const char *path, ctn_model **out)
+int ctn_model_read_string(ctn_ctx *ctx, const char *name, const char *text, size_t len,
+                          ctn_model **out)
 {
-    if (!path || !out) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_model_read_file: bad arguments");
+    return ctn_read_string(ctx, name, text, len, out, NULL);
+}
+
+int ctn_read_file(ctn_ctx *ctx, const char *path, ctn_model **out, ctn_solve_options *opt)
+{
+    if (!path || !out) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_read_file: bad arguments");
     *out = NULL;
     char *data = NULL;
     size_t len = 0;
     int rc = read_all(ctx, path, &data, &len);
     if (rc) return rc;
-    rc = ctn_model_read_string(ctx, path, data, len, out);
+    rc = ctn_read_string(ctx, path, data, len, out, opt);
     ctn_free(data);
     return rc;
+}
+
+int ctn_model_read_file(ctn_ctx *ctx, const char *path, ctn_model **out)
+{
+    return ctn_read_file(ctx, path, out, NULL);
 }

@@ -45,7 +45,7 @@ static void elements_csv(ctn_strbuf *b, const ctn_model *m, const ctn_solution *
         const ctn_element *e = &m->elements.v[i];
         const ctn_element_state *st = &s->steps[s->nsteps - 1].elem[i];
         ctn_sb_printf(b, "%d,%d,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%d\n", e->id,
-                      m->nodes.v[e->node[0]].id, m->nodes.v[e->node[1]].id, e->l0,
+                      m->nodes.v[ctn_elem_nodes(m, i)[0]].id, m->nodes.v[ctn_elem_nodes(m, i)[e->nnodes - 1]].id, e->l0,
                       st->length, st->strain, st->force, st->stress, st->slack);
     }
 }

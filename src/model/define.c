@@ -43,11 +43,55 @@ static int check_name(const ctn_model *m, const char *what, const char *name)
     return CTN_OK;
 }
 
+void ctn_material_spec_init(ctn_material_spec *s)
+{
+    if (!s) return;
+    memset(s, 0, sizeof *s);
+    s->size = sizeof *s;
+    s->strain = CTN_STRAIN_GREEN_LAGRANGE;
+}
+
+void ctn_section_spec_init(ctn_section_spec *s)
+{
+    if (!s) return;
+    memset(s, 0, sizeof *s);
+    s->size = sizeof *s;
+}
+
 int ctn_model_add_material(ctn_model *m, const char *name, double E, ctn_strain strain,
                            int tension_only)
 {
-    if (!m) return CTN_ERR_INVALID;
-    int rc = check_name(m, "material", name);
+    ctn_material_spec s;
+    ctn_material_spec_init(&s);
+    s.name = name;
+    s.E = E;
+    s.strain = strain;
+    s.tension_only = tension_only;
+    return ctn_model_add_material_spec(m, &s);
+}
+
+int ctn_model_add_section(ctn_model *m, const char *name, const char *material, double A,
+                          double w)
+{
+    ctn_section_spec s;
+    ctn_section_spec_init(&s);
+    s.name = name;
+    s.material = material;
+    s.A = A;
+    s.w = w;
+    return ctn_model_add_section_spec(m, &s);
+}
+
+int ctn_model_add_material_spec(ctn_model *m, const ctn_material_spec *spec)
+{
+    if (!m || !spec || spec->size < sizeof(size_t)) return CTN_ERR_INVALID;
+    ctn_material_spec s;
+    ctn_material_spec_init(&s);
+    ctn_spec_copy(&s, sizeof s, spec);
+    const char *name = s.name;
+    double E = s.E;
+    ctn_strain strain = s.strain;
+    int tension_only = s.tension_only, rc = check_name(m, "material", name);
     if (rc) return rc;
     if (ctn_model_find_material(m, name) >= 0)
         return ctn_model_error(m, CTN_ERR_MODEL, "duplicate material '%s'", name);
@@ -64,10 +108,14 @@ int ctn_model_add_material(ctn_model *m, const char *name, double E, ctn_strain 
     return CTN_OK;
 }
 
-int ctn_model_add_section(ctn_model *m, const char *name, const char *material, double A,
-                          double w)
+int ctn_model_add_section_spec(ctn_model *m, const ctn_section_spec *spec)
 {
-    if (!m) return CTN_ERR_INVALID;
+    if (!m || !spec || spec->size < sizeof(size_t)) return CTN_ERR_INVALID;
+    ctn_section_spec s;
+    ctn_section_spec_init(&s);
+    ctn_spec_copy(&s, sizeof s, spec);
+    const char *name = s.name, *material = s.material;
+    double A = s.A, w = s.w;
     int rc = check_name(m, "section", name);
     if (rc) return rc;
     if (ctn_model_find_section(m, name) >= 0)

@@ -1,25 +1,34 @@
 /* External nodal forces and whole-model validation. */
-#include "model/model.h"
+#include "element/element.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-/* Self-weight: w l0 g per element, half to each node (a dead load). */
-static void add_self_weight(const ctn_model *m, double *f)
+/* Loads that belong to the elements (self-weight), asked of each element's family. */
+static void add_element_loads(const ctn_model *m, double *f)
 {
     for (size_t i = 0; i < m->elements.n; i++) {
-        const ctn_element *e = &m->elements.v[i];
-        double W = 0.5 * m->sections.v[e->section].w * e->l0;
-        for (int k = 0; k < 3; k++) {
-            f[3 * e->node[0] + k] += W * m->gravity[k];
-            f[3 * e->node[1] + k] += W * m->gravity[k];
-        }
+        const ctn_element_ops *ops = ctn_element_family(m->elements.v[i].type);
+        if (ops->load) ops->load(m, i, f);
     }
 }
 
-/* Horizontal loads: q times the element's reference projection on the plane normal to
- * gravity, half to each node, along gravity's direction. */
+static void add_segment_hload(const ctn_model *m, double q, const double u[3], int p, int r, double *f)
+{
+    const double *a = m->nodes.v[p].X, *b = m->nodes.v[r].X;
+    double d[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
+    double along = d[0] * u[0] + d[1] * u[1] + d[2] * u[2];
+    double p2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - along * along;
+    double P = 0.5 * q * sqrt(p2 > 0 ? p2 : 0);
+    for (int k = 0; k < 3; k++) {
+        f[3 * (size_t)p + (size_t)k] += P * u[k];
+        f[3 * (size_t)r + (size_t)k] += P * u[k];
+    }
+}
+
+/* Horizontal loads: q times the reference projection of each segment of an element on
+ * the plane normal to gravity, half to each of its nodes, along gravity's direction. */
 static void add_hloads(const ctn_model *m, int step, double *f)
 {
     double g = sqrt(m->gravity[0] * m->gravity[0] + m->gravity[1] * m->gravity[1] +
@@ -32,15 +41,9 @@ static void add_hloads(const ctn_model *m, int step, double *f)
         for (size_t i = 0; i < m->elements.n; i++) {
             const ctn_element *e = &m->elements.v[i];
             if (e->id < hl->first || e->id > hl->last) continue;
-            const double *a = m->nodes.v[e->node[0]].X, *b = m->nodes.v[e->node[1]].X;
-            double d[3] = { b[0] - a[0], b[1] - a[1], b[2] - a[2] };
-            double along = d[0] * u[0] + d[1] * u[1] + d[2] * u[2];
-            double p2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - along * along;
-            double P = 0.5 * hl->q * sqrt(p2 > 0 ? p2 : 0);
-            for (int k = 0; k < 3; k++) {
-                f[3 * e->node[0] + k] += P * u[k];
-                f[3 * e->node[1] + k] += P * u[k];
-            }
+            const int *nd = ctn_elem_nodes(m, i);
+            for (int s = 0; s + 1 < e->nnodes; s++)
+                add_segment_hload(m, hl->q, u, nd[s], nd[s + 1], f);
         }
     }
 }
@@ -63,7 +66,7 @@ int ctn_model_step_loads(const ctn_model *m, size_t k, double *f, double *u)
         for (size_t i = 0; i < m->ploads.n; i++)
             for (int j = 0; j < 3 && m->ploads.v[i].step <= step; j++)
                 f[3 * (size_t)m->ploads.v[i].node + (size_t)j] += m->ploads.v[i].F[j];
-        add_self_weight(m, f);
+        add_element_loads(m, f);
         add_hloads(m, step, f);
     }
     if (u) {
@@ -132,7 +135,7 @@ static int check_unconnected(const ctn_model *m)
 {
     unsigned char *used = ctn_calloc(m->ctx, m->nodes.n, 1);
     if (!used) return CTN_ERR_NOMEM;
-    for (size_t e = 0; e < m->elements.n; e++) used[m->elements.v[e].node[0]] = used[m->elements.v[e].node[1]] = 1;
+    for (size_t k = 0; k < m->conn.n; k++) used[m->conn.v[k]] = 1;
     int rc = CTN_OK;
     for (size_t i = 0; i < m->nodes.n && !rc; i++) {
         const ctn_node *p = &m->nodes.v[i];

@@ -23,7 +23,6 @@ int ctn_model_create(ctn_ctx *ctx, ctn_model **out)
     *out = ctn_calloc(ctx, 1, sizeof(ctn_model));
     if (!*out) return CTN_ERR_NOMEM;
     (*out)->ctx = ctx;
-    ctn_solve_options_default(&(*out)->options);
     return CTN_OK;
 }
 
@@ -35,6 +34,7 @@ void ctn_model_destroy(ctn_model **m)
     ctn_free(p->materials.v);
     ctn_free(p->sections.v);
     ctn_free(p->elements.v);
+    ctn_free(p->conn.v);
     ctn_free(p->ploads.v);
     ctn_free(p->pdisps.v);
     ctn_free(p->steps.v);
@@ -77,4 +77,11 @@ int ctn_model_find_material(const ctn_model *m, const char *name)
     for (size_t i = 0; i < m->materials.n; i++)
         if (!strcmp(m->materials.v[i].name, name)) return (int)i;
     return -1;
+}
+
+void ctn_spec_copy(void *dst, size_t dst_size, const void *src)
+{
+    size_t n = *(const size_t *)src;        /* the caller's sizeof */
+    memcpy(dst, src, n < dst_size ? n : dst_size);
+    *(size_t *)dst = dst_size;
 }

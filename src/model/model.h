@@ -3,7 +3,6 @@
 #define CTN_MODEL_MODEL_H
 
 #include "catena/model.h"
-#include "catena/solve.h"
 #include "core/ctx.h"
 #include "model/idmap.h"
 
@@ -33,9 +32,12 @@ typedef struct ctn_section {
 
 typedef struct ctn_element {
     int id;
-    int node[2];     /* node indices */
-    int section;     /* section index */
-    double l0;
+    int type;        /* element family (element/registry.c) */
+    int nnodes;      /* number of nodes */
+    size_t conn;     /* its node indices are conn.v[conn .. conn + nnodes - 1] */
+    int section;     /* section index, -1 for families without one */
+    double l0;       /* unstressed (free) length */
+    double k;        /* spring stiffness [force/length], 0 for other families */
     int line;        /* defining line in the source, 0 if from the API */
 } ctn_element;
 
@@ -84,6 +86,7 @@ struct ctn_model {
     CTN_ARRAY(ctn_material) materials;
     CTN_ARRAY(ctn_section) sections;
     CTN_ARRAY(ctn_element) elements;
+    CTN_ARRAY(int) conn;            /* element connectivity (node indices) */
     CTN_ARRAY(ctn_pload) ploads;
     CTN_ARRAY(ctn_pdisp) pdisps;
     CTN_ARRAY(ctn_hload) hloads;
@@ -91,7 +94,6 @@ struct ctn_model {
     CTN_ARRAY(ctn_cable) cables;
     ctn_idmap node_ids, element_ids;
     int max_node_id, max_element_id;
-    ctn_solve_options options;      /* from the `solve` directive */
 };
 
 /* Make room for one more item in a CTN_ARRAY; 0 or CTN_ERR_NOMEM. */
@@ -102,6 +104,18 @@ int ctn_array_reserve(ctn_ctx *ctx, void **v, size_t *cap, size_t need, size_t s
 /* Report an error located at the model's current origin (file:line if known). */
 int ctn_model_error(const ctn_model *m, int code, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
+
+/* Node indices of element e. */
+static inline const int *ctn_elem_nodes(const ctn_model *m, size_t e)
+{
+    return m->conn.v + m->elements.v[e].conn;
+}
+
+/* Node index of user id, or a model error "undefined node ID". */
+int ctn_model_node_lookup(const ctn_model *m, int id, int *index);
+/* Copy a caller's versioned spec struct (its first field is its size) into dst, whose
+ * fields the library has defaulted: only the bytes the caller's struct has are taken. */
+void ctn_spec_copy(void *dst, size_t dst_size, const void *src);
 
 int ctn_model_find_section(const ctn_model *m, const char *name);
 int ctn_model_find_material(const ctn_model *m, const char *name);

@@ -1,5 +1,5 @@
 /* Read-only queries of a model. */
-#include "model/model.h"
+#include "element/element.h"
 
 #include <string.h>
 
@@ -22,12 +22,19 @@ int ctn_model_element(const ctn_model *m, size_t i, ctn_element_info *out)
 {
     if (!m || !out || i >= m->elements.n) return CTN_ERR_INVALID;
     const ctn_element *e = &m->elements.v[i];
+    memset(out, 0, sizeof *out);
+    out->id = e->id;
+    out->type = ctn_element_family(e->type)->name;
+    out->nnodes = e->nnodes;
+    out->nodes = ctn_elem_nodes(m, i);
+    out->node[0] = out->nodes[0];
+    out->node[1] = out->nodes[e->nnodes - 1];
+    out->l0 = e->l0;
+    out->k = e->k;
+    if (e->section < 0) return CTN_OK;
     const ctn_section *s = &m->sections.v[e->section];
     const ctn_material *mat = &m->materials.v[s->material];
-    out->id = e->id;
-    out->node[0] = e->node[0];
-    out->node[1] = e->node[1];
-    out->l0 = e->l0;
+    out->has_section = 1;
     out->A = s->A;
     out->E = mat->E;
     out->w = s->w;

@@ -1,4 +1,4 @@
-/* Model topology and loads: nodes, elements, concentrated and horizontal loads. */
+/* Model topology and loads: nodes, concentrated and horizontal loads. */
 #include "model/model.h"
 
 #include <math.h>
@@ -34,57 +34,10 @@ int ctn_model_add_node(ctn_model *m, int id, const double X[3], unsigned fix)
 }
 
 /* Node index of id or an "undefined node" error. */
-static int node_index(const ctn_model *m, int id, int *index)
+int ctn_model_node_lookup(const ctn_model *m, int id, int *index)
 {
     *index = ctn_idmap_get(&m->node_ids, id);
     if (*index < 0) return ctn_model_error(m, CTN_ERR_MODEL, "undefined node %d", id);
-    return CTN_OK;
-}
-
-static double distance(const double a[3], const double b[3])
-{
-    return sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
-                (b[2] - a[2]) * (b[2] - a[2]));
-}
-
-int ctn_model_add_element(ctn_model *m, int id, int n1, int n2, const char *section,
-                          double l0)
-{
-    if (!m) return CTN_ERR_INVALID;
-    if (id <= 0) return ctn_model_error(m, CTN_ERR_MODEL, "element id must be a positive integer (got %d)", id);
-    if (ctn_idmap_get(&m->element_ids, id) >= 0)
-        return ctn_model_error(m, CTN_ERR_MODEL, "duplicate element id %d", id);
-    int a, b, rc;
-    if ((rc = node_index(m, n1, &a)) || (rc = node_index(m, n2, &b))) return rc;
-    if (a == b) return ctn_model_error(m, CTN_ERR_MODEL, "element %d connects node %d to itself", id, n1);
-    if (m->steps.n) return ctn_model_error(m, CTN_ERR_MODEL, "elements must be defined before the first step");
-    int sec = section ? ctn_model_find_section(m, section) : -1;
-    if (sec < 0)
-        return ctn_model_error(m, CTN_ERR_MODEL, "element %d: undefined section '%s'", id, section ? section : "");
-    double d = distance(m->nodes.v[a].X, m->nodes.v[b].X);
-    if (!(d > 0)) return ctn_model_error(m, CTN_ERR_MODEL, "element %d has zero length (nodes %d and %d coincide)", id, n1, n2);
-    if (l0 == CTN_L0_DEFAULT) l0 = d;
-    if (!isfinite(l0) || l0 <= 0)
-        return ctn_model_error(m, CTN_ERR_MODEL, "element %d: l0 must be positive and finite (got %g)", id, l0);
-    const ctn_section *sp = &m->sections.v[sec];
-    double k = m->materials.v[sp->material].E * sp->A / l0;
-    if (!isfinite(k))
-        return ctn_model_error(m, CTN_ERR_MODEL, "element %d: axial stiffness E A / l0 overflows (l0 = %g)", id, l0);
-    if (m->elements.n >= (size_t)0x7fffffff)
-        return ctn_model_error(m, CTN_ERR_MODEL, "too many elements");
-    long lim = ctn_ctx_model_limit(m->ctx);
-    if (lim && m->elements.n >= (size_t)lim)
-        return ctn_model_error(m, CTN_ERR_MODEL, "model too large: more than %ld elements (the caller's limit)", lim);
-    if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->elements, 1))) return rc;
-    if ((rc = ctn_idmap_put(m->ctx, &m->element_ids, id, (int)m->elements.n))) return rc;
-    ctn_element *e = &m->elements.v[m->elements.n++];
-    e->id = id;
-    e->node[0] = a;
-    e->node[1] = b;
-    e->section = sec;
-    e->l0 = l0;
-    e->line = m->line;
-    if (id > m->max_element_id) m->max_element_id = id;
     return CTN_OK;
 }
 
@@ -92,7 +45,7 @@ int ctn_model_add_load(ctn_model *m, int node, const double F[3])
 {
     if (!m || !F) return CTN_ERR_INVALID;
     int a, rc;
-    if ((rc = node_index(m, node, &a))) return rc;
+    if ((rc = ctn_model_node_lookup(m, node, &a))) return rc;
     if (!finite3(F)) return ctn_model_error(m, CTN_ERR_MODEL, "load on node %d must be finite", node);
     if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->ploads, 1))) return rc;
     ctn_pload *p = &m->ploads.v[m->ploads.n++];
@@ -106,7 +59,7 @@ int ctn_model_add_displacement(ctn_model *m, int node, unsigned dofs, const doub
 {
     if (!m || !u) return CTN_ERR_INVALID;
     int a, rc;
-    if ((rc = node_index(m, node, &a))) return rc;
+    if ((rc = ctn_model_node_lookup(m, node, &a))) return rc;
     if (!finite3(u)) return ctn_model_error(m, CTN_ERR_MODEL, "displacement of node %d must be finite", node);
     for (int k = 0; k < 3; k++)
         if ((dofs >> k & 1u) && !(m->nodes.v[a].fix >> k & 1u))

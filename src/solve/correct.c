@@ -7,7 +7,7 @@
  *                              backtracking (Armijo) line search on the potential picks
  *                              the step. The residual is never modified, so the converged
  *                              equilibrium does not depend on mu or the path. */
-#include "solve/engine.h"
+#include "solve/problem.h"
 
 #include <float.h>
 #include <math.h>
@@ -19,20 +19,8 @@
 #define CTN_FLOOR (1e3 * DBL_EPSILON)  /* |dd| / (|d| + L_ref) below which the
                                          residual cannot fall further: round-off */
 
-int ctn_engine_record(ctn_engine *e, ctn_solution *s, double rnorm, double dnorm)
-{
-    int rc = ctn_solution_push_residual(s, rnorm);
-    if (!rc) rc = ctn_solution_push_increment(s, dnorm);
-    if (rc) return rc;
-    s->sum.iterations++;
-    s->sum.residual = rnorm;
-    s->sum.increment = dnorm;
-    if (e->opt.monitor) e->opt.monitor(e->opt.monitor_data, s->sum.iterations, rnorm, dnorm);
-    return CTN_OK;
-}
-
 typedef struct corrector {
-    ctn_engine *e;
+    ctn_problem *e;
     ctn_solution *s;
     double *d;
     double rn;          /* |r| at d */
@@ -46,20 +34,11 @@ typedef struct corrector {
                            test: |d| itself is computed only when the test can pass */
 } corrector;
 
-/* Largest diagonal entry of the assembled tangent (the last row of each column). */
-static double max_diag(const ctn_engine *e)
-{
-    const double *Kx = ctn_chol_values(e->ch);
-    double m = 0;
-    for (size_t c = 0; c < e->ndof; c++) m = fmax(m, Kx[e->a->colptr[c + 1] - 1]);
-    return m > 0 ? m : e->kscale;
-}
-
 /* Raise the shift after a failure (Nielsen: mu *= nu, nu *= 2). */
 static void raise_mu(corrector *c)
 {
     if (c->mu == 0) {
-        c->mu = 1e-6 * max_diag(c->e);
+        c->mu = 1e-6 * ctn_problem_max_diag(c->e);
         c->nu = 2;
     } else {
         c->mu *= c->nu;
@@ -72,11 +51,11 @@ static int factor(corrector *c, int *ok)
 {
     for (;;) {
         long col;
-        int rc = ctn_engine_factor(c->e, c->mu, ok, &col);
+        int rc = ctn_problem_factor(c->e, c->mu, ok, &col);
         if (rc || *ok) return rc;
         if (!c->globalized || c->mu > 1e12 * c->e->kscale) {
-            c->s->sum.fail_node = c->e->m->nodes.v[c->e->a->dof_node[col]].id;
-            c->s->sum.fail_dir = c->e->a->dof_dir[col];
+            c->s->sum.fail_node = c->e->m->nodes.v[c->e->a->map.dof_node[col]].id;
+            c->s->sum.fail_dir = c->e->a->map.dof_dir[col];
             return CTN_OK;
         }
         raise_mu(c);
@@ -87,12 +66,10 @@ static int factor(corrector *c, int *ok)
  * *ok = 0 if an element collapsed. d equals dsave on entry when fresh is set. */
 static int trial(corrector *c, double alpha, int fresh, double *rn, double *pi, int *ok)
 {
-    ctn_engine *e = c->e;
-    if (!fresh) memcpy(c->d, e->dsave, e->n3 * sizeof(double));
-    ctn_engine_axpy(e, c->d, alpha, e->dd);
-    int rc = ctn_engine_residual(e, c->d, 1, rn, pi);
-    *ok = rc != CTN_ERR_DOMAIN;
-    return rc == CTN_ERR_DOMAIN ? CTN_OK : rc;
+    ctn_problem *e = c->e;
+    if (!fresh) memcpy(c->d, e->dsave, e->ns * sizeof(double));
+    ctn_problem_axpy(e, c->d, alpha, e->dd);
+    return ctn_problem_residual(e, c->d, 1, rn, pi, ok);
 }
 
 /* Pure Newton, optionally with backtracking on |r|: the accepted alpha, or 0. */
@@ -130,9 +107,9 @@ static double reference(const corrector *c)
  * rise); mu follows Nielsen's rule on the monotone ratio. */
 static int lm_step(corrector *c, double *alpha, double *rn, double *pi)
 {
-    ctn_engine *e = c->e;
-    double dd2 = ctn_dot(e->dd, e->dd, e->ndof);
-    double pred = 0.5 * (ctn_dot(e->r, e->dd, e->ndof) + c->mu * dd2);
+    ctn_problem *e = c->e;
+    double dd2 = ctn_vec_dot(e->dd, e->dd, e->ndof);
+    double pred = 0.5 * (ctn_vec_dot(e->r, e->dd, e->ndof) + c->mu * dd2);
     int ok, rc = trial(c, 1.0, 1, rn, pi, &ok);
     *alpha = 0;
     if (rc || !ok) return rc;
@@ -153,34 +130,35 @@ static int lm_step(corrector *c, double *alpha, double *rn, double *pi)
 /* One Newton iteration: factor, solve, accept or reject. *why: 0 or a stop reason. */
 static int iteration(corrector *c, ctn_reason *why)
 {
-    ctn_engine *e = c->e;
+    ctn_problem *e = c->e;
     int ok, rc = factor(c, &ok);
     double alpha, rn = 0, pi = 0;
     *why = 0;
     c->accepted = 0;
     if (rc) return rc;
     if (!ok) { *why = CTN_DIVERGED_INDEFINITE; return CTN_OK; }
-    if ((rc = ctn_engine_solve(e, e->r, e->dd))) return rc;
-    if (!isfinite(ctn_norm(e->dd, e->ndof))) { *why = CTN_DIVERGED_NANORINF; return CTN_OK; }
+    if ((rc = ctn_problem_linsolve(e, e->r, e->dd))) return rc;
+    if (!isfinite(ctn_vec_norm(e->dd, e->ndof))) { *why = CTN_DIVERGED_NANORINF; return CTN_OK; }
     int keep = c->globalized || e->opt.linesearch;   /* a step may be rejected */
-    if (keep) memcpy(e->dsave, c->d, e->n3 * sizeof(double));
+    if (keep) memcpy(e->dsave, c->d, e->ns * sizeof(double));
     rc = c->globalized ? lm_step(c, &alpha, &rn, &pi) : newton_search(c, &alpha, &rn);
     if (rc) return rc;
     if (alpha == 0) {                            /* back to the start of the iteration */
-        if (keep) memcpy(c->d, e->dsave, e->n3 * sizeof(double));
-        else ctn_engine_axpy(e, c->d, -1.0, e->dd); /* pure Newton: undo the step */
-        if ((rc = ctn_engine_residual(e, c->d, 1, &c->rn, NULL))) return rc == CTN_ERR_DOMAIN ? CTN_OK : rc;
+        if (keep) memcpy(c->d, e->dsave, e->ns * sizeof(double));
+        else ctn_problem_axpy(e, c->d, -1.0, e->dd); /* pure Newton: undo the step */
+        int valid;
+        if ((rc = ctn_problem_residual(e, c->d, 1, &c->rn, NULL, &valid)) || !valid) return rc;
         if (!c->globalized) { *why = e->opt.linesearch ? CTN_DIVERGED_LINESEARCH : CTN_DIVERGED_NANORINF; return CTN_OK; }
         raise_mu(c);
-        return ctn_engine_record(e, c->s, c->rn, 0.0);
+        return ctn_problem_record(e, c->s, c->rn, 0.0);
     }
     c->rn = rn;
     c->pi = pi;
     c->accepted = 1;
-    return ctn_engine_record(e, c->s, rn, alpha * ctn_norm(e->dd, e->ndof));
+    return ctn_problem_record(e, c->s, rn, alpha * ctn_vec_norm(e->dd, e->ndof));
 }
 
-static int correct(ctn_engine *e, ctn_solution *s, double *d, ctn_reason *reason)
+static int correct(ctn_problem *e, ctn_solution *s, double *d, ctn_reason *reason)
 {
     corrector c;
     memset(&c, 0, sizeof c);
@@ -188,15 +166,15 @@ static int correct(ctn_engine *e, ctn_solution *s, double *d, ctn_reason *reason
     c.s = s;
     c.d = d;
     c.nu = 2;
-    c.globalized = e->opt.method == CTN_METHOD_AUTO;
+    c.globalized = e->strategy->globalized;
     *reason = CTN_DIVERGED_NANORINF;
-    int rc = ctn_engine_residual(e, d, 1, &c.rn, c.globalized ? &c.pi : NULL);
-    if (!rc && c.globalized) remember(&c, c.pi);
-    if (rc) return rc == CTN_ERR_DOMAIN ? CTN_OK : rc;
+    int valid, rc = ctn_problem_residual(e, d, 1, &c.rn, c.globalized ? &c.pi : NULL, &valid);
+    if (!rc && valid && c.globalized) remember(&c, c.pi);
+    if (rc || !valid) return rc;
     if ((rc = ctn_solution_push_residual(s, c.rn))) return rc;
     s->sum.residual = c.rn;
-    double fref = ctn_engine_fref(e);                /* once per increment */
-    c.dmax = ctn_norm(d, e->n3);
+    double fref = ctn_problem_fref(e);                /* once per increment */
+    c.dmax = ctn_vec_norm(d, e->ns);
     for (int it = 1; it <= e->opt.maxit; it++) {
         ctn_reason why;
         if ((rc = iteration(&c, &why))) return rc;
@@ -205,7 +183,7 @@ static int correct(ctn_engine *e, ctn_solution *s, double *d, ctn_reason *reason
         if (!c.accepted) continue;
         c.dmax += dnorm;                                 /* |d + a dd| <= |d| + |a dd| */
         if (dnorm > e->opt.dtol * (c.dmax + e->lref)) continue;
-        double size = ctn_norm(d, e->n3) + e->lref;     /* only when it can matter */
+        double size = ctn_vec_norm(d, e->ns) + e->lref;     /* only when it can matter */
         c.dmax = size - e->lref;
         int at_floor = dnorm <= CTN_FLOOR * size;        /* dd at coordinate resolution */
         if ((c.rn <= e->opt.tol * fref || at_floor) && dnorm <= e->opt.dtol * size) {
@@ -223,13 +201,13 @@ static int correct(ctn_engine *e, ctn_solution *s, double *d, ctn_reason *reason
  * compression energy barrier holds it on the chord; then the real materials take over
  * from that state. The final iterations use the true residual, so the equilibrium is
  * not biased by the first phase. */
-int ctn_newton_correct(ctn_engine *e, ctn_solution *s, double *d, ctn_reason *reason)
+int ctn_newton_correct(ctn_problem *e, ctn_solution *s, double *d, ctn_reason *reason)
 {
-    if (e->opt.method != CTN_METHOD_AUTO || !ctn_asm_count_compressed(e->a, d))
+    if (!e->strategy->globalized || !ctn_asm_count_compressed(e->a, d))
         return correct(e, s, d, reason);
-    ctn_asm_cut_compression(e->a, 1);
+    e->mode = CTN_EVAL_CUT_COMPRESSION;
     int rc = correct(e, s, d, reason);
-    ctn_asm_cut_compression(e->a, 0);
+    e->mode = 0;
     if (rc) return rc;
     s->sum.relaxed++;
     return correct(e, s, d, reason);

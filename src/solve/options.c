@@ -1,5 +1,7 @@
 /* Solver options, defaults and reason names. */
-#include "model/model.h"
+#include "solve/problem.h"
+
+#include <stdio.h>
 
 #include <math.h>
 
@@ -18,37 +20,39 @@ void ctn_solve_options_default(ctn_solve_options *opt)
     opt->lambda_max = 1;
     opt->monitor = NULL;
     opt->monitor_data = NULL;
+    opt->linear_solver = NULL;
 }
 
-void ctn_model_solve_options(const ctn_model *m, ctn_solve_options *opt)
+int ctn_solve_options_fault(const ctn_solve_options *opt, char *msg, size_t size)
 {
-    if (m) *opt = m->options;
-    else ctn_solve_options_default(opt);
-}
-
-int ctn_model_set_solve_options(ctn_model *m, const ctn_solve_options *opt)
-{
-    if (!m || !opt) return CTN_ERR_INVALID;
     if (!(opt->tol > 0) || !isfinite(opt->tol) || !(opt->dtol > 0) || !isfinite(opt->dtol))
-        return ctn_model_error(m, CTN_ERR_MODEL, "solve: tolerances must be positive and finite");
+        return snprintf(msg, size, "solve: tolerances must be positive and finite"), 1;
     if (opt->maxit < 1 || opt->maxit > 100000)
-        return ctn_model_error(m, CTN_ERR_MODEL, "solve: maxit must be between 1 and 100000 (got %d)", opt->maxit);
+        return snprintf(msg, size, "solve: maxit must be between 1 and 100000 (got %d)", opt->maxit), 1;
     if (opt->ordering < CTN_ORDER_AUTO || opt->ordering > CTN_ORDER_AMD)
-        return ctn_model_error(m, CTN_ERR_MODEL, "solve: unknown ordering");
-    if (opt->method < CTN_METHOD_AUTO || opt->method > CTN_METHOD_ARCLENGTH)
-        return ctn_model_error(m, CTN_ERR_MODEL, "solve: unknown method");
+        return snprintf(msg, size, "solve: unknown ordering"), 1;
+    if (!ctn_strategy_of(opt->method))
+        return snprintf(msg, size, "solve: unknown method"), 1;
     if (opt->steps < 1 || opt->steps > 100000)
-        return ctn_model_error(m, CTN_ERR_MODEL, "solve: steps must be between 1 and 100000 (got %d)", opt->steps);
+        return snprintf(msg, size, "solve: steps must be between 1 and 100000 (got %d)", opt->steps), 1;
     if (opt->maxcuts < -1 || opt->maxcuts > 60)
-        return ctn_model_error(m, CTN_ERR_MODEL, "solve: cutbacks must be between 0 and 60 (got %d)", opt->maxcuts);
+        return snprintf(msg, size, "solve: cutbacks must be between 0 and 60 (got %d)", opt->maxcuts), 1;
     if (!isfinite(opt->arclength) || opt->arclength < 0)
-        return ctn_model_error(m, CTN_ERR_MODEL, "solve: arclength must be >= 0 and finite");
+        return snprintf(msg, size, "solve: arclength must be >= 0 and finite"), 1;
     if (opt->arcsteps < 1 || opt->arcsteps > 1000000)
-        return ctn_model_error(m, CTN_ERR_MODEL, "solve: arcsteps must be between 1 and 1000000 (got %d)", opt->arcsteps);
+        return snprintf(msg, size, "solve: arcsteps must be between 1 and 1000000 (got %d)", opt->arcsteps), 1;
     if (!isfinite(opt->lambda_max) || opt->lambda_max == 0)
-        return ctn_model_error(m, CTN_ERR_MODEL, "solve: lambda must be finite and non-zero");
-    m->options = *opt;
-    return CTN_OK;
+        return snprintf(msg, size, "solve: lambda must be finite and non-zero"), 1;
+    if (opt->linear_solver && !ctn_linsolve_find(opt->linear_solver))
+        return snprintf(msg, size, "solve: unknown linear solver '%.40s' (expected cholmod or cholmod-ldl)", opt->linear_solver), 1;
+    return 0;
+}
+
+int ctn_solve_options_check(ctn_ctx *ctx, const ctn_solve_options *opt)
+{
+    char msg[256];
+    if (!opt) return ctn_error(ctx, CTN_ERR_INVALID, "solve options are NULL");
+    return ctn_solve_options_fault(opt, msg, sizeof msg) ? ctn_error(ctx, CTN_ERR_INVALID, "%s", msg) : CTN_OK;
 }
 
 const char *ctn_reason_name(ctn_reason r)

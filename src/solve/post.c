@@ -41,8 +41,8 @@ int ctn_solution_cable_sag(const ctn_model *m, const ctn_solution *s, size_t i, 
     *sag = 0;
     for (size_t e = c->first; e < c->first + c->count; e++) {
         double P[3], Q[3];
-        current(m, s, m->elements.v[e].node[0], P);
-        current(m, s, m->elements.v[e].node[1], Q);
+        current(m, s, ctn_elem_nodes(m, e)[0], P);
+        current(m, s, ctn_elem_nodes(m, e)[1], Q);
         double tp = dot3(P, h) - tm, tq = dot3(Q, h) - tm;
         if ((tp <= 0 && tq >= 0) || (tp >= 0 && tq <= 0)) {
             double t = tq != tp ? -tp / (tq - tp) : 0.5;

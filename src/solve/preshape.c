@@ -8,7 +8,7 @@
  * chain so that every member is stretched by CTN_PRESHAPE_STRAIN (the start `cable`
  * gives a generated cable). This changes only the start, not the equations. */
 #include "model/arc.h"
-#include "solve/engine.h"
+#include "solve/problem.h"
 
 #include <math.h>
 #include <string.h>
@@ -21,26 +21,39 @@ typedef struct chains {
     unsigned char *seen; /* per element */
 } chains;
 
-static int interior(const ctn_engine *e, const chains *c, int node)
+static int interior(const ctn_problem *e, const chains *c, int node)
 {
     return c->deg[node] == 2 && e->m->nodes.v[node].fix == 0;
 }
 
-static void current(const ctn_engine *e, const double *d, int node, double x[3])
+static void current(const ctn_problem *e, const double *d, int node, double x[3])
 {
-    for (int k = 0; k < 3; k++) x[k] = e->m->nodes.v[node].X[k] + d[3 * (size_t)node + (size_t)k];
+    const double *dn = d + ctn_dofmap_node(&e->a->map, (size_t)node);
+    for (int k = 0; k < 3; k++) x[k] = e->m->nodes.v[node].X[k] + dn[k];
+}
+
+static double rest_length(const ctn_problem *e, int el)
+{
+    return ctn_asm_block_of(e->a, (size_t)el)->ops->rest_length(ctn_asm_props(e->a, (size_t)el));
+}
+
+/* The node of two-node element el that is not node. */
+static int other_end(const ctn_model *m, int el, int node)
+{
+    const int *nd = ctn_elem_nodes(m, (size_t)el);
+    return nd[0] == node ? nd[1] : nd[0];
 }
 
 /* Collect the chain through element e0 into c->nodes / c->elems; node count. */
-static size_t walk(const ctn_engine *e, chains *c, int e0)
+static size_t walk(const ctn_problem *e, chains *c, int e0)
 {
-    const ctn_element *el = e->m->elements.v;
-    int head = el[e0].node[0], tail = el[e0].node[1], eh = e0;
+    const ctn_model *m = e->m;
+    int head = ctn_elem_nodes(m, (size_t)e0)[0], eh = e0;
     while (interior(e, c, head)) {                    /* back up to the first anchor */
         int nxt = c->inc[2 * head] == eh ? c->inc[2 * head + 1] : c->inc[2 * head];
         if (nxt == e0) return 0;                      /* a closed loop: no anchors */
         eh = nxt;
-        head = el[eh].node[0] == head ? el[eh].node[1] : el[eh].node[0];
+        head = other_end(m, eh, head);
     }
     size_t n = 0;
     int cur = head, ce = eh;
@@ -48,21 +61,20 @@ static size_t walk(const ctn_engine *e, chains *c, int e0)
     for (;;) {
         c->seen[ce] = 1;
         c->elems[n] = ce;
-        cur = el[ce].node[0] == cur ? el[ce].node[1] : el[ce].node[0];
+        cur = other_end(m, ce, cur);
         c->nodes[++n] = cur;
         if (!interior(e, c, cur)) break;
         ce = c->inc[2 * cur] == ce ? c->inc[2 * cur + 1] : c->inc[2 * cur];
     }
-    (void)tail;
     return n + 1;
 }
 
 /* Place one chain of n nodes on its arc if it is slack; 1 if placed. */
-static int place_chain(const ctn_engine *e, const chains *c, size_t n, double *d)
+static int place_chain(const ctn_problem *e, const chains *c, size_t n, double *d)
 {
     double S = 0, poly = 0, lmax = 0, a[3], b[3], x0[3], x1[3];
     for (size_t i = 0; i + 1 < n; i++) {
-        double l0 = e->a->props[c->elems[i]].l0;
+        double l0 = rest_length(e, c->elems[i]);
         S += l0;
         lmax = fmax(lmax, l0);
         current(e, d, c->nodes[i], x0);
@@ -79,15 +91,15 @@ static int place_chain(const ctn_engine *e, const chains *c, size_t n, double *d
     double s = 0;
     for (size_t i = 1; i + 1 < n; i++) {
         double X[3];
-        s += e->a->props[c->elems[i - 1]].l0;
+        s += rest_length(e, c->elems[i - 1]);
         ctn_arc_point(&start, s / S, X);
-        for (int k = 0; k < 3; k++)
-            d[3 * (size_t)c->nodes[i] + (size_t)k] = X[k] - e->m->nodes.v[c->nodes[i]].X[k];
+        double *dn = d + ctn_dofmap_node(&e->a->map, (size_t)c->nodes[i]);
+        for (int k = 0; k < 3; k++) dn[k] = X[k] - e->m->nodes.v[c->nodes[i]].X[k];
     }
     return 1;
 }
 
-static int incidence(const ctn_engine *e, chains *c)
+static int incidence(const ctn_problem *e, chains *c)
 {
     size_t nn = e->a->nn, ne = e->a->ne;
     ctn_ctx *ctx = e->ctx;
@@ -97,16 +109,21 @@ static int incidence(const ctn_engine *e, chains *c)
     c->elems = ctn_malloc(ctx, nn, sizeof(int));
     c->seen = ctn_calloc(ctx, ne, 1);
     if (!c->deg || !c->inc || !c->nodes || !c->elems || !c->seen) return CTN_ERR_NOMEM;
-    for (size_t i = 0; i < ne; i++)
-        for (int k = 0; k < 2; k++) {
-            int p = e->m->elements.v[i].node[k];
-            if (c->deg[p] < 2) c->inc[2 * p + c->deg[p]] = (int)i;
-            c->deg[p]++;
+    for (size_t i = 0; i < ne; i++) {
+        const ctn_asm_block *b = ctn_asm_block_of(e->a, i);
+        const int *nd = ctn_elem_nodes(e->m, i);
+        int chain = (b->ops->flags & CTN_ELEM_FLEXIBLE) && b->nnodes == 2;
+        if (!chain) c->seen[i] = 1;                /* other members make anchors */
+        for (int k = 0; k < b->nnodes; k++) {
+            int p = nd[k];
+            if (chain && c->deg[p] < 2) c->inc[2 * p + c->deg[p]] = (int)i;
+            c->deg[p] += chain ? 1 : 3;
         }
+    }
     return CTN_OK;
 }
 
-int ctn_preshape(ctn_engine *e, double *d, int *count)
+int ctn_preshape(ctn_problem *e, double *d, int *count)
 {
     chains c = { NULL, NULL, NULL, NULL, NULL };
     int rc = incidence(e, &c);

@@ -114,3 +114,12 @@ int ctn_solution_step_element(const ctn_solution *s, size_t k, size_t i, ctn_ele
     *out = s->steps[k].elem[i];
     return CTN_OK;
 }
+
+void ctn_solution_drop_step(ctn_solution *s)
+{
+    if (!s || !s->nsteps) return;
+    ctn_step_state *st = &s->steps[--s->nsteps];
+    ctn_free(st->d);
+    ctn_free(st->react);
+    ctn_free(st->elem);
+}

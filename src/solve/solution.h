@@ -28,6 +28,8 @@ struct ctn_solution {
 int ctn_solution_create(ctn_ctx *ctx, size_t nn, size_t ne, ctn_solution **out);
 /* Append a step state (arrays zeroed); *k gets its index. */
 int ctn_solution_add_step(ctn_solution *s, const char *name, size_t *k);
+/* Remove the last step (a strategy replaces it). */
+void ctn_solution_drop_step(ctn_solution *s);
 int ctn_solution_push_residual(ctn_solution *s, double r);
 int ctn_solution_push_increment(ctn_solution *s, double d);
 

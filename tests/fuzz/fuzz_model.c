@@ -30,13 +30,13 @@ static int affordable(const ctn_model *m)
     return sub <= 64;
 }
 
-static void solve_all(ctn_ctx *ctx, const ctn_model *m)
+static void solve_all(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options *file_opt)
 {
     if (!affordable(m)) return;
     for (int method = 0; method < 3; method++) {
         ctn_solve_options opt;
         ctn_solution *s = NULL;
-        ctn_model_solve_options(m, &opt);
+        opt = *file_opt;
         opt.method = (ctn_method)method;
         if (opt.maxit > 25) opt.maxit = 25;
         if (opt.steps > 8) opt.steps = 8;
@@ -65,8 +65,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     ctn_model *m = NULL;
     if (ctn_ctx_create(&ctx)) return 0;
     ctn_ctx_set_model_limit(ctx, 2000);
-    int rc = ctn_model_read_string(ctx, "fuzz.cable", (const char *)data, size, &m);
-    if (rc == CTN_OK) solve_all(ctx, m);
+    ctn_solve_options opt;
+    int rc = ctn_read_string(ctx, "fuzz.cable", (const char *)data, size, &m, &opt);
+    if (rc == CTN_OK) solve_all(ctx, m, &opt);
     else if (!*ctn_ctx_message(ctx)) __builtin_trap();
     ctn_model_destroy(&m);
     ctn_ctx_destroy(&ctx);

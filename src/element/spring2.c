@@ -1,0 +1,48 @@
+/* Two-node axial linear spring: N = k (l - l0), two-way, no section and no weight.
+ *   U = k (l - l0)^2 / 2,  dN/dl = k;  forces and tangent as any axial member. */
+#include "element/axial.h"
+
+#include <math.h>
+
+static int spring_eval(const void *props, unsigned mode, const double *X, const double *u,
+                       double *f, double *K, ctn_elem_state *out)
+{
+    const ctn_spring_props *p = props;
+    ctn_elem_state st = { 0, 0, 0, 0, 0, 0 };
+    double e[3];
+    (void)mode;                                        /* a spring is never cut */
+    if (ctn_axial_chord(X, u, e, &st.l)) return 1;
+    double ext = st.l - p->l0;
+    st.strain = ext / p->l0;                           /* engineering: (l - l0) / l0 */
+    st.N = p->k * ext;
+    st.energy = 0.5 * p->k * ext * ext;
+    ctn_axial_forces(e, st.N, f);
+    if (K) ctn_axial_tangent(e, st.l, st.N, p->k, K);
+    if (out) *out = st;
+    return 0;
+}
+
+static int spring_check(const ctn_model *m, const ctn_element *e)
+{
+    if (!isfinite(e->k) || e->k <= 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "spring %d: k must be positive and finite (got %g)", e->id, e->k);
+    if (!isfinite(e->l0) || e->l0 <= 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "spring %d: l0 must be positive and finite (got %g)", e->id, e->l0);
+    if (!isfinite(e->k * e->l0))
+        return ctn_model_error(m, CTN_ERR_MODEL, "spring %d: k l0 = %g * %g overflows", e->id, e->k, e->l0);
+    return CTN_OK;
+}
+
+static void spring_setup(const ctn_model *m, size_t e, void *props)
+{
+    ctn_spring_props *p = props;
+    p->k = m->elements.v[e].k;
+    p->l0 = m->elements.v[e].l0;
+}
+
+static double spring_stiffness(const void *props) { return ((const ctn_spring_props *)props)->k; }
+
+const ctn_element_ops ctn_spring2_ops = {
+    "spring", 2, 3, sizeof(ctn_spring_props), 0,
+    spring_check, spring_setup, spring_eval, NULL, spring_stiffness, NULL,
+};

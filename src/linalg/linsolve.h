@@ -1,0 +1,71 @@
+/* Internal: linear solvers for the symmetric tangent, as objects behind an ops table
+ * registered by name (like PETSc's KSP/PC types). A solver is set up once on a pattern
+ * (symbolic work: ordering, analysis), then factors values given in the pattern's order
+ * (with an optional diagonal shift) and solves, without allocation. The caller owns the
+ * values; nothing outside linalg/ sees a backend's storage.
+ *
+ *   "cholmod"      CHOLMOD LL' (supernodal or simplicial as CHOLMOD chooses): the
+ *                  factorization fails on a non-positive pivot, which is reported with
+ *                  its column: the matrix is not positive definite.
+ *   "cholmod-ldl"  CHOLMOD simplicial LDL' without pivoting: accepts indefinite
+ *                  matrices (fails only on a zero pivot) and gives their inertia. */
+#ifndef CTN_LINALG_LINSOLVE_H
+#define CTN_LINALG_LINSOLVE_H
+
+#include "catena/solve.h"
+#include "core/ctx.h"
+
+/* A symmetric matrix's upper triangle in compressed columns, rows sorted. */
+typedef struct ctn_pattern {
+    size_t n;                 /* order */
+    const int *colptr;        /* n + 1 */
+    const int *rowind;        /* colptr[n] */
+} ctn_pattern;
+
+/* Outcome of a numeric factorization (not a status). */
+typedef struct ctn_factor_info {
+    int ok;                   /* 1 if factored */
+    long fail_col;            /* not ok: the column (pattern order) of the failing pivot,
+                                 -1 if unknown */
+} ctn_factor_info;
+
+typedef struct ctn_linsolve_ops {
+    const char *name;
+    int indefinite;           /* 1: factors indefinite matrices and gives their inertia */
+    int (*create)(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, void **impl);
+    void (*destroy)(void *impl);
+    int (*factor)(void *impl, const double *Kx, double shift, ctn_factor_info *info);
+    int (*solve)(void *impl, const double *b, double *x);
+    /* Optional (NULL): pivots of the last factorization below -tol (negative) and within
+     * +-tol (zero), and the column (pattern order) of the first of either, -1 if none. */
+    int (*inertia)(void *impl, double tol, long *negative, long *zero, long *first);
+    ctn_ordering (*ordering)(const void *impl);    /* the ordering chosen */
+    size_t (*factor_nnz)(const void *impl);        /* non-zeros of the factor */
+} ctn_linsolve_ops;
+
+typedef struct ctn_linsolve ctn_linsolve;
+
+/* The registered solver of that name, NULL if none. */
+const ctn_linsolve_ops *ctn_linsolve_find(const char *name);
+/* Set up solver `name` on pattern p (symbolic work, done once). */
+int ctn_linsolve_create(ctn_ctx *ctx, const char *name, const ctn_pattern *p, ctn_ordering ord,
+                        ctn_linsolve **out);
+void ctn_linsolve_destroy(ctn_linsolve **s);
+const ctn_linsolve_ops *ctn_linsolve_type(const ctn_linsolve *s);
+/* Factor K + shift I from values Kx (pattern order). A failed pivot is an outcome in
+ * *info (status CTN_OK); a backend failure is a status (message in the context). */
+int ctn_linsolve_factor(ctn_linsolve *s, const double *Kx, double shift, ctn_factor_info *info);
+/* x = K \ b with the last factorization (x and b may alias). */
+int ctn_linsolve_solve(ctn_linsolve *s, const double *b, double *x);
+/* Inertia of the last factorization (pivots within +-tol count as zero; first: the
+ * column of the first non-positive one, -1 if none): CTN_ERR_INVALID if the solver
+ * cannot tell. */
+int ctn_linsolve_inertia(ctn_linsolve *s, double tol, long *negative, long *zero, long *first);
+ctn_ordering ctn_linsolve_ordering(const ctn_linsolve *s);
+size_t ctn_linsolve_factor_nnz(const ctn_linsolve *s);
+
+/* The backends (one file each). */
+extern const ctn_linsolve_ops ctn_cholmod_ll_ops;
+extern const ctn_linsolve_ops ctn_cholmod_ldl_ops;
+
+#endif

@@ -1,0 +1,181 @@
+/* The problem: setup once per model, residual and potential at a load parameter t,
+ * factorization with an optional shift, solves. */
+#include "solve/problem.h"
+
+#include <math.h>
+#include <string.h>
+
+/* Diagonal of the bounding box of the reference nodes. */
+static double model_size(const ctn_model *m)
+{
+    double lo[3], hi[3], s = 0;
+    for (int k = 0; k < 3; k++) lo[k] = hi[k] = m->nodes.v[0].X[k];
+    for (size_t i = 1; i < m->nodes.n; i++)
+        for (int k = 0; k < 3; k++) {
+            lo[k] = fmin(lo[k], m->nodes.v[i].X[k]);
+            hi[k] = fmax(hi[k], m->nodes.v[i].X[k]);
+        }
+    for (int k = 0; k < 3; k++) s += (hi[k] - lo[k]) * (hi[k] - lo[k]);
+    return sqrt(s);
+}
+
+static int alloc_vectors(ctn_problem *p)
+{
+    ctn_ctx *ctx = p->ctx;
+    double **vs[] = { &p->fint, &p->fext, &p->f0, &p->f1, &p->p0, &p->p1, &p->dsave, &p->react };
+    double **vn[] = { &p->r, &p->dd, &p->w };
+    for (size_t i = 0; i < sizeof vs / sizeof *vs; i++)
+        if (!(*vs[i] = ctn_calloc(ctx, p->ns, sizeof(double)))) return CTN_ERR_NOMEM;
+    for (size_t i = 0; i < sizeof vn / sizeof *vn; i++)
+        if (!(*vn[i] = ctn_calloc(ctx, p->ndof ? p->ndof : 1, sizeof(double)))) return CTN_ERR_NOMEM;
+    if (!(p->v3 = ctn_calloc(ctx, 3 * p->a->nn, sizeof(double)))) return CTN_ERR_NOMEM;
+    if (!(p->Kx = ctn_calloc(ctx, p->a->nnz ? p->a->nnz : 1, sizeof(double)))) return CTN_ERR_NOMEM;
+    return CTN_OK;
+}
+
+static int setup(ctn_problem *p)
+{
+    int rc = ctn_asm_create(p->ctx, p->m, &p->a);
+    if (rc) return rc;
+    p->ns = p->a->map.nstate;
+    p->ndof = p->a->ndof;
+    if (p->ndof == 0) return ctn_error(p->ctx, CTN_ERR_MODEL, "%s: the model has no free degree of freedom", p->m->file);
+    const char *name = p->opt.linear_solver ? p->opt.linear_solver : p->strategy->linear_solver;
+    ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
+    if ((rc = ctn_linsolve_create(p->ctx, name, &pat, p->opt.ordering, &p->ls))) return rc;
+    if ((rc = alloc_vectors(p))) return rc;
+    p->lref = model_size(p->m);
+    p->kscale = p->a->kscale;
+    return CTN_OK;
+}
+
+int ctn_problem_create(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options *opt,
+                       ctn_problem **out)
+{
+    if (!out) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_problem_create: out is NULL");
+    *out = NULL;
+    if (!m) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_problem_create: model is NULL");
+    ctn_solve_options o;
+    if (opt) o = *opt;
+    else ctn_solve_options_default(&o);
+    int rc = ctn_solve_options_check(ctx, &o);
+    if (!rc) rc = ctn_model_validate(m);
+    if (rc) return rc;
+    double t0 = ctn_clock();
+    ctn_problem *p = ctn_calloc(ctx, 1, sizeof *p);
+    if (!p) return CTN_ERR_NOMEM;
+    p->ctx = ctx;
+    p->m = m;
+    p->opt = o;
+    p->strategy = ctn_strategy_of(o.method);
+    if (p->opt.steps < 1) p->opt.steps = 1;
+    if (p->opt.maxcuts < 0) p->opt.maxcuts = p->strategy->maxcuts;
+    if ((rc = setup(p))) {
+        ctn_problem_destroy(&p);
+        return rc;
+    }
+    p->t_setup = ctn_clock() - t0;
+    *out = p;
+    return CTN_OK;
+}
+
+void ctn_problem_destroy(ctn_problem **pp)
+{
+    if (!pp || !*pp) return;
+    ctn_problem *p = *pp;
+    ctn_asm_destroy(&p->a);
+    ctn_linsolve_destroy(&p->ls);
+    double *v[] = { p->fint, p->fext, p->f0, p->f1, p->p0, p->p1, p->dsave, p->react, p->r, p->dd, p->w, p->v3, p->Kx };
+    for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
+    ctn_free(p);
+    *pp = NULL;
+}
+
+void ctn_problem_set_t(ctn_problem *p, double t, double *d)
+{
+    const int *eq = p->a->map.eq;
+    for (size_t i = 0; i < p->ns; i++) {
+        p->fext[i] = p->f0[i] + t * (p->f1[i] - p->f0[i]);
+        if (eq[i] < 0) d[i] = p->p0[i] + t * (p->p1[i] - p->p0[i]);
+    }
+}
+
+void ctn_problem_step_loads(ctn_problem *p, size_t k)
+{
+    ctn_model_step_loads(p->m, k, p->v3, NULL);
+    ctn_dofmap_from3(&p->a->map, p->v3, p->f1);
+    ctn_model_step_loads(p->m, k, NULL, p->v3);
+    ctn_dofmap_from3(&p->a->map, p->v3, p->p1);
+}
+
+int ctn_problem_residual(ctn_problem *p, const double *d, int with_K, double *rnorm, double *pi,
+                         int *valid)
+{
+    double t0 = ctn_clock(), U = 0, work = 0;
+    const int *eq = p->a->map.eq;
+    *valid = !ctn_asm_eval(p->a, d, p->mode, p->fint, with_K ? p->Kx : NULL, pi ? &U : NULL, NULL);
+    if (*valid) {
+        double rr = 0;
+        for (size_t i = 0; i < p->ns; i++) {
+            int q = eq[i];
+            if (q < 0) continue;
+            double ri = p->fext[i] - p->fint[i];
+            p->r[q] = ri;
+            rr += ri * ri;
+            if (pi) work += p->fext[i] * d[i];
+        }
+        *rnorm = sqrt(rr);
+        if (pi) *pi = U - work;
+        *valid = isfinite(*rnorm) && (!pi || isfinite(*pi));
+    }
+    p->sum->t_assemble += ctn_clock() - t0;
+    return CTN_OK;
+}
+
+double ctn_problem_fref(const ctn_problem *p)
+{
+    double ff = 0, fr = 0;
+    const int *eq = p->a->map.eq;
+    for (size_t i = 0; i < p->ns; i++) {
+        if (eq[i] >= 0) ff += p->fext[i] * p->fext[i];
+        else fr += p->fint[i] * p->fint[i];
+    }
+    return ff > 0 ? sqrt(ff) : fr > 0 ? sqrt(fr) : 1.0;
+}
+
+int ctn_problem_factor(ctn_problem *p, double shift, int *posdef, long *fail_col)
+{
+    double t0 = ctn_clock();
+    ctn_factor_info info;
+    int rc = ctn_linsolve_factor(p->ls, p->Kx, shift, &info);
+    p->sum->t_factor += ctn_clock() - t0;
+    p->sum->factorizations++;
+    *posdef = info.ok;
+    *fail_col = info.fail_col;
+    return rc;
+}
+
+int ctn_problem_linsolve(ctn_problem *p, const double *b, double *x)
+{
+    double t0 = ctn_clock();
+    int rc = ctn_linsolve_solve(p->ls, b, x);
+    p->sum->t_solve += ctn_clock() - t0;
+    p->sum->solves++;
+    return rc;
+}
+
+double ctn_problem_max_diag(const ctn_problem *p)
+{
+    double m = 0;
+    for (size_t c = 0; c < p->ndof; c++) m = fmax(m, p->Kx[p->a->colptr[c + 1] - 1]);
+    return m > 0 ? m : p->kscale;
+}
+
+void ctn_problem_axpy(const ctn_problem *p, double *d, double alpha, const double *v)
+{
+    const int *eq = p->a->map.eq;
+    for (size_t i = 0; i < p->ns; i++) {
+        int q = eq[i];
+        if (q >= 0) d[i] += alpha * v[q];
+    }
+}

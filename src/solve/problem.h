@@ -1,0 +1,101 @@
+/* Internal: the problem of an analysis, shared by every strategy (pure and globalized
+ * Newton, load stepping, arc-length) and by the checks after a solve (stability, and
+ * later modal analysis). It owns the symbolic work done once per model (DOF map,
+ * pattern, scatter map, element properties, the linear solver's analysis), the tangent's
+ * values and the work vectors, so that no strategy allocates inside its iteration loop,
+ * and it outlives one solve.
+ *
+ * Vectors named "state" hold every DOF of every node (ctn_dofmap); "ndof" vectors hold
+ * the free DOFs (equations). Within one load step the external state is parametrized by
+ * t in [0, 1]:  f_ext(t) = f0 + t (f1 - f0),  d_fixed(t) = p0 + t (p1 - p0). */
+#ifndef CTN_SOLVE_PROBLEM_H
+#define CTN_SOLVE_PROBLEM_H
+
+#include "assemble/asm.h"
+#include "linalg/linsolve.h"
+#include "solve/solution.h"
+
+/* A solution strategy (static analysis), registered by its ctn_method. */
+typedef struct ctn_strategy_ops {
+    const char *name;          /* "auto", "newton", "arclength" */
+    const char *linear_solver; /* the linear solver it needs */
+    int globalized;            /* corrector: Levenberg-Marquardt shift, acceptance on the
+                                  potential, relaxation of compressed starts */
+    int preshape;              /* place slack chains on arcs before the first step */
+    int maxcuts;               /* default halvings of a failed increment */
+    int (*run)(ctn_problem *p, ctn_solution *s, double *d);
+} ctn_strategy_ops;
+
+extern const ctn_strategy_ops ctn_strategy_auto, ctn_strategy_newton, ctn_strategy_arclength;
+/* The strategy of a method, NULL if none. */
+const ctn_strategy_ops *ctn_strategy_of(ctn_method method);
+
+struct ctn_problem {
+    ctn_ctx *ctx;
+    const ctn_model *m;
+    ctn_solve_options opt;
+    const ctn_strategy_ops *strategy;
+    ctn_asm *a;
+    ctn_linsolve *ls;
+    double *Kx;                /* nnz: the tangent's values, pattern order */
+    size_t ns, ndof;           /* state length, equations */
+    unsigned mode;             /* CTN_EVAL_* passed to the elements */
+    double *fint;              /* state: internal forces at the last residual() */
+    double *fext;              /* state: external forces at the current t */
+    double *f0, *f1, *p0, *p1; /* state: step start and end loads / prescribed displacements */
+    double *r, *dd, *w;        /* ndof: residual, increment, work */
+    double *dsave;             /* state: saved state for line searches and cut-backs */
+    double *react;             /* state: reactions being stored */
+    double *v3;                /* 3 nn: model-side scratch (loads, results) */
+    double lref;               /* bounding-box diagonal of the reference geometry */
+    double kscale;             /* largest element stiffness scale */
+    double t_setup;            /* wall seconds of the setup */
+    ctn_solve_summary *sum;    /* where timings accumulate (the current solution's) */
+};
+
+/* Set t: fext and the fixed entries of d. */
+void ctn_problem_set_t(ctn_problem *p, double t, double *d);
+/* Load the totals of model step k into f1 / p1 (state layout). */
+void ctn_problem_step_loads(ctn_problem *p, size_t k);
+/* f_int (and K if with_K) at d; r = f_ext - f_int on free DOFs, |r| in *rnorm; if pi is
+ * not NULL, the total potential (stored energy - f_ext . d over free DOFs) from the same
+ * pass. *valid = 0 if an element collapsed or a result is not finite (an outcome). */
+int ctn_problem_residual(ctn_problem *p, const double *d, int with_K, double *rnorm, double *pi,
+                         int *valid);
+/* Force scale of the residual test: |f_ext| on free DOFs, or where that is zero (pure
+ * prescribed displacement) |f_int| on fixed DOFs, or 1. */
+double ctn_problem_fref(const ctn_problem *p);
+/* Factorize K + shift I; *posdef = 0 when the factorization failed on a pivot, with its
+ * equation in *fail_col. */
+int ctn_problem_factor(ctn_problem *p, double shift, int *posdef, long *fail_col);
+/* x = K \ b (ndof vectors). */
+int ctn_problem_linsolve(ctn_problem *p, const double *b, double *x);
+/* Largest diagonal entry of the assembled tangent. */
+double ctn_problem_max_diag(const ctn_problem *p);
+/* d (state) += alpha * v (ndof) on free DOFs. */
+void ctn_problem_axpy(const ctn_problem *p, double *d, double alpha, const double *v);
+/* Store d, its reactions (f_int - f_ext at the current f_ext) and element states in step
+ * k of the solution. */
+int ctn_problem_fill_step(ctn_problem *p, ctn_solution *s, size_t k, const double *d);
+/* Record an iteration in the solution's history (grows it; CTN_ERR_NOMEM). */
+int ctn_problem_record(ctn_problem *p, ctn_solution *s, double rnorm, double dnorm);
+
+/* Newton corrector at fixed t from d (modified in place). On return *reason is
+ * CTN_CONVERGED or why it stopped; the state d is the last accepted iterate. */
+int ctn_newton_correct(ctn_problem *p, ctn_solution *s, double *d, ctn_reason *reason);
+/* Crisfield's cylindrical arc-length continuation (single load pattern). */
+int ctn_arclength_run(ctn_problem *p, ctn_solution *s, double *d);
+/* Place slack chains on the arc of their unstressed length (see preshape.c); *count
+ * gets the number of chains placed. */
+int ctn_preshape(ctn_problem *p, double *d, int *count);
+
+/* 1 with a message if an option is out of range, else 0 (options.c). */
+int ctn_solve_options_fault(const ctn_solve_options *opt, char *msg, size_t size);
+
+/* Small vector helpers (vec.c). */
+double ctn_vec_norm(const double *v, size_t n);
+double ctn_vec_dot(const double *a, const double *b, size_t n);
+/* Monotonic wall clock in seconds. */
+double ctn_clock(void);
+
+#endif

@@ -1,0 +1,42 @@
+/* What a strategy keeps: iteration histories and the state of each step. */
+#include "solve/problem.h"
+
+#include <math.h>
+#include <string.h>
+
+int ctn_problem_record(ctn_problem *p, ctn_solution *s, double rnorm, double dnorm)
+{
+    int rc = ctn_solution_push_residual(s, rnorm);
+    if (!rc) rc = ctn_solution_push_increment(s, dnorm);
+    if (rc) return rc;
+    s->sum.iterations++;
+    s->sum.residual = rnorm;
+    s->sum.increment = dnorm;
+    if (p->opt.monitor) p->opt.monitor(p->opt.monitor_data, s->sum.iterations, rnorm, dnorm);
+    return CTN_OK;
+}
+
+/* Element states into a step (the one element loop's visitor). */
+static void state_visit(void *data, const ctn_asm *a, const ctn_asm_elem *el)
+{
+    ctn_element_state *out = (ctn_element_state *)data + el->e;
+    (void)a;
+    out->length = el->st->l;
+    out->strain = el->st->strain;
+    out->force = el->st->N;
+    out->stress = el->st->stress;
+    out->slack = el->st->slack;
+}
+
+/* Reactions and element states at d (fext at the step's reached t) into step k. */
+int ctn_problem_fill_step(ctn_problem *p, ctn_solution *s, size_t k, const double *d)
+{
+    ctn_step_state *st = &s->steps[k];
+    const int *eq = p->a->map.eq;
+    ctn_dofmap_to3(&p->a->map, d, st->d);
+    if (ctn_asm_eval(p->a, d, 0, p->fint, NULL, NULL, NULL)) return CTN_OK;   /* collapsed: zeros stay */
+    for (size_t i = 0; i < p->ns; i++) p->react[i] = eq[i] < 0 ? p->fint[i] - p->fext[i] : 0.0;
+    ctn_dofmap_to3(&p->a->map, p->react, st->react);
+    ctn_asm_loop(p->a, d, 0, 0, state_visit, st->elem, NULL);
+    return CTN_OK;
+}

@@ -1,0 +1,72 @@
+/* Stability of an equilibrium: the inertia of the tangent at a solution's state.
+ * A Cholesky attempt (LL') says whether the tangent is positive definite; if not, an
+ * LDL' factorization on the same pattern counts the negative and zero pivots (by
+ * Sylvester's law of inertia, the negative and zero eigenvalues), with zero meaning
+ * within 1e-12 of the largest diagonal entry. */
+#include "solve/problem.h"
+
+#include <string.h>
+
+/* The tangent's values at the state of the solution's last step. */
+static int tangent_at(ctn_problem *p, const ctn_solution *s, double *d)
+{
+    const double *d3 = ctn_solution_displacements(s);
+    if (!d3 || s->nn != p->m->nodes.n) return ctn_error(p->ctx, CTN_ERR_INVALID, "ctn_problem_stability: the solution is not of this problem's model");
+    ctn_dofmap_from3(&p->a->map, d3, d);
+    if (ctn_asm_eval(p->a, d, 0, p->fint, p->Kx, NULL, NULL))
+        return ctn_error(p->ctx, CTN_ERR_INVALID, "ctn_problem_stability: an element has zero length in that state");
+    return CTN_OK;
+}
+
+static void locate(const ctn_problem *p, long col, ctn_stability *out)
+{
+    if (col < 0) return;
+    out->node = p->m->nodes.v[p->a->map.dof_node[col]].id;
+    out->dir = p->a->map.dof_dir[col];
+}
+
+/* Not definite: count the inertia with LDL'. */
+static int inertia(ctn_problem *p, ctn_stability *out)
+{
+    ctn_linsolve *ldl = NULL;
+    ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
+    ctn_factor_info info;
+    long zero = 0, first = -1;
+    int rc = ctn_linsolve_create(p->ctx, "cholmod-ldl", &pat, CTN_ORDER_AUTO, &ldl);
+    if (!rc) rc = ctn_linsolve_factor(ldl, p->Kx, 0.0, &info);
+    if (!rc && info.ok) {
+        rc = ctn_linsolve_inertia(ldl, 1e-12 * ctn_problem_max_diag(p), &out->negative, &zero, &first);
+        out->semidefinite = !rc && out->negative == 0 && zero > 0;
+        locate(p, first, out);
+    } else if (!rc) {
+        out->semidefinite = 1;                      /* an exactly zero pivot */
+        locate(p, info.fail_col, out);
+    }
+    ctn_linsolve_destroy(&ldl);
+    return rc;
+}
+
+int ctn_problem_stability(ctn_problem *p, const ctn_solution *s, ctn_stability *out)
+{
+    if (!p || !s || !out) return p ? ctn_error(p->ctx, CTN_ERR_INVALID, "ctn_problem_stability: bad arguments") : CTN_ERR_INVALID;
+    memset(out, 0, sizeof *out);
+    out->dir = -1;
+    ctn_solve_summary scratch;
+    memset(&scratch, 0, sizeof scratch);
+    double *d = ctn_calloc(p->ctx, p->ns, sizeof(double));
+    if (!d) return CTN_ERR_NOMEM;
+    p->sum = &scratch;
+    int ok = 0, rc = tangent_at(p, s, d);
+    long col = -1;
+    if (!rc) rc = ctn_problem_factor(p, 0.0, &ok, &col);
+    int definite_only = !ctn_linsolve_type(p->ls)->indefinite;   /* LL': ok = definite */
+    if (!rc && ok && definite_only) out->stable = 1;
+    else if (!rc) {
+        locate(p, col, out);
+        rc = inertia(p, out);
+        out->stable = !rc && !out->semidefinite && out->negative == 0 && out->node == 0;
+    }
+    p->sum = NULL;
+    ctn_free(d);
+    return rc;
+}

@@ -1,0 +1,21 @@
+/* Small vector helpers and the clock of the solver's timings. */
+#include "solve/problem.h"
+
+#include <math.h>
+#include <time.h>
+
+double ctn_clock(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+double ctn_vec_dot(const double *a, const double *b, size_t n)
+{
+    double s = 0;
+    for (size_t i = 0; i < n; i++) s += a[i] * b[i];
+    return s;
+}
+
+double ctn_vec_norm(const double *v, size_t n) { return sqrt(ctn_vec_dot(v, v, n)); }
