@@ -36,6 +36,10 @@ static void print_element_line(FILE *out, const char *label, const ctn_model *m,
     ctn_model_element(m, e, &info);
     ctn_solution_element(s, e, &st);
     double mpa = ctn_model_mpa_factor(m);
+    if (!info.has_section) {                        /* a spring: a force, no stress */
+        fprintf(out, "%s tension %12.6g %-3s (%s %d)\n", label, st.force, ctn_model_force_unit(m), info.type, info.id);
+        return;
+    }
     fprintf(out, "%s tension %12.6g %-3s stress %12.6g %s (element %d)\n", label, st.force,
             ctn_model_force_unit(m), mpa > 0 ? st.stress * mpa : st.stress,
             mpa > 0 ? "MPa" : "(model units)", info.id);

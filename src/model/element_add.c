@@ -12,10 +12,10 @@ void ctn_element_spec_init(ctn_element_spec *s)
     s->l0 = CTN_L0_DEFAULT;
 }
 
+/* |b - a| without overflow of the squares. */
 static double distance(const double a[3], const double b[3])
 {
-    return sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
-                (b[2] - a[2]) * (b[2] - a[2]));
+    return hypot(hypot(b[0] - a[0], b[1] - a[1]), b[2] - a[2]);
 }
 
 static int check_room(const ctn_model *m)
