@@ -39,8 +39,8 @@ void ctn_asm_destroy(ctn_asm **a)
 
 /* Reference coordinates X (3 per node) and state entries u (ndof_node per node) of an
  * element's nodes. */
-static void gather(const ctn_asm *a, const int *nd, int nnodes, int ndn, const double *d,
-                   double *X, double *u)
+static inline void gather(const ctn_asm *a, const int *nd, int nnodes, int ndn, const double *d,
+                          double *X, double *u)
 {
     for (int k = 0; k < nnodes; k++) {
         const double *Xk = a->m->nodes.v[nd[k]].X, *dk = d + ctn_dofmap_node(&a->map, (size_t)nd[k]);
@@ -49,34 +49,45 @@ static void gather(const ctn_asm *a, const int *nd, int nnodes, int ndn, const d
     }
 }
 
+/* The loop over the elements of one block (see ctn_asm_loop). Inline, so that the
+ * assembly's visitor and the common shape (2 nodes of 3 DOFs) are compiled into it. */
+static inline int block_loop(const ctn_asm *a, const ctn_asm_block *b, const double *d, unsigned mode,
+                             int with_K, ctn_asm_visit_fn visit, void *data, size_t *bad)
+{
+    double *u = a->work, *fe = u + a->maxdof, *Ke = fe + a->maxdof, *X = Ke + ctn_packed_size(a->maxdof);
+    const ctn_element_ops *ops = b->ops;
+    const int *conn = ctn_elem_nodes(a->m, b->e0);
+    const unsigned char *props = a->props + b->props0;
+    int two3 = b->nnodes == 2 && ops->ndof_node == 3;
+    ctn_elem_state st;
+    ctn_asm_elem el = { 0, b, NULL, fe, with_K ? Ke : NULL, &st, NULL };
+    for (size_t i = 0; i < b->count; i++) {
+        el.e = b->e0 + i;
+        el.nodes = conn + i * (size_t)b->nnodes;
+        el.slot = a->slot + b->slot0 + i * (size_t)b->nslots;
+        if (two3) gather(a, el.nodes, 2, 3, d, X, u);
+        else gather(a, el.nodes, b->nnodes, ops->ndof_node, d, X, u);
+        if (ops->eval(props + i * ops->props_size, mode, X, u, fe, with_K ? Ke : NULL, &st)) {
+            if (bad) *bad = el.e;
+            return 1;
+        }
+        visit(data, a, &el);
+    }
+    return 0;
+}
+
+static inline int loop(const ctn_asm *a, const double *d, unsigned mode, int with_K,
+                       ctn_asm_visit_fn visit, void *data, size_t *bad)
+{
+    for (size_t k = 0; k < a->nblocks; k++)
+        if (block_loop(a, &a->blocks[k], d, mode, with_K, visit, data, bad)) return 1;
+    return 0;
+}
+
 int ctn_asm_loop(const ctn_asm *a, const double *d, unsigned mode, int with_K,
                  ctn_asm_visit_fn visit, void *data, size_t *bad)
 {
-    double *u = a->work, *fe = u + a->maxdof, *Ke = fe + a->maxdof, *X = Ke + ctn_packed_size(a->maxdof);
-    ctn_elem_state st;
-    ctn_asm_elem el;
-    for (size_t k = 0; k < a->nblocks; k++) {
-        const ctn_asm_block *b = &a->blocks[k];
-        const ctn_element_ops *ops = b->ops;
-        const int *conn = ctn_elem_nodes(a->m, b->e0);
-        const unsigned char *props = a->props + b->props0;
-        el.b = b;
-        el.fe = fe;
-        el.Ke = with_K ? Ke : NULL;
-        el.st = &st;
-        for (size_t i = 0; i < b->count; i++) {
-            el.e = b->e0 + i;
-            el.nodes = conn + i * (size_t)b->nnodes;
-            el.slot = a->slot + b->slot0 + i * (size_t)b->nslots;
-            gather(a, el.nodes, b->nnodes, ops->ndof_node, d, X, u);
-            if (ops->eval(props + i * ops->props_size, mode, X, u, fe, with_K ? Ke : NULL, &st)) {
-                if (bad) *bad = el.e;
-                return 1;
-            }
-            visit(data, a, &el);
-        }
-    }
-    return 0;
+    return loop(a, d, mode, with_K, visit, data, bad);
 }
 
 typedef struct assembly {
@@ -84,7 +95,7 @@ typedef struct assembly {
 } assembly;
 
 /* Add (or, for an entry's first element, assign) an element's packed upper triangle. */
-static void scatter_K(const int *slot, int n, const double *Ke, double *Kx)
+static inline void scatter_K(const int *slot, int n, const double *Ke, double *Kx)
 {
     for (int t = 0; t < n; t++) {
         int s = slot[t];
@@ -93,15 +104,24 @@ static void scatter_K(const int *slot, int n, const double *Ke, double *Kx)
     }
 }
 
+static inline void scatter_f(const ctn_asm *a, const int *nd, int nnodes, int ndn, const double *fe, double *f)
+{
+    for (int k = 0; k < nnodes; k++) {
+        double *fk = f + ctn_dofmap_node(&a->map, (size_t)nd[k]);
+        for (int j = 0; j < ndn; j++) fk[j] += fe[ndn * k + j];
+    }
+}
+
 static void assemble_visit(void *data, const ctn_asm *a, const ctn_asm_elem *el)
 {
     assembly *as = data;
-    int ndn = el->b->ops->ndof_node;
     as->U += el->st->energy;
-    for (int k = 0; k < el->b->nnodes; k++) {
-        double *fk = as->f + ctn_dofmap_node(&a->map, (size_t)el->nodes[k]);
-        for (int j = 0; j < ndn; j++) fk[j] += el->fe[ndn * k + j];
+    if (el->b->nslots == 21) {                      /* two nodes of three DOFs */
+        scatter_f(a, el->nodes, 2, 3, el->fe, as->f);
+        if (as->Kx) scatter_K(el->slot, 21, el->Ke, as->Kx);
+        return;
     }
+    scatter_f(a, el->nodes, el->b->nnodes, el->b->ops->ndof_node, el->fe, as->f);
     if (as->Kx) scatter_K(el->slot, el->b->nslots, el->Ke, as->Kx);
 }
 
@@ -110,7 +130,7 @@ int ctn_asm_eval(const ctn_asm *a, const double *d, unsigned mode, double *f, do
 {
     assembly as = { f, Kx, 0.0 };
     memset(f, 0, a->map.nstate * sizeof(double));
-    int collapsed = ctn_asm_loop(a, d, mode, Kx != NULL, assemble_visit, &as, bad);
+    int collapsed = loop(a, d, mode, Kx != NULL, assemble_visit, &as, bad);
     if (U) *U = as.U;
     return collapsed;
 }

@@ -27,6 +27,19 @@ static void each_pair(const ctn_asm *a, int *ptr, int *fill, int *adj)
     for (size_t k = 0; k < a->nblocks; k++) {
         const ctn_asm_block *b = &a->blocks[k];
         const int *conn = ctn_elem_nodes(a->m, b->e0);
+        if (b->nnodes == 2) {                           /* the common shape */
+            for (size_t i = 0; i < 2 * b->count; i += 2) {
+                int p = conn[i], q = conn[i + 1];
+                if (adj) {
+                    adj[fill[p]++] = q;
+                    adj[fill[q]++] = p;
+                } else {
+                    ptr[p + 1]++;
+                    ptr[q + 1]++;
+                }
+            }
+            continue;
+        }
         for (size_t i = 0; i < b->count; i++, conn += b->nnodes)
             for (int s = 0; s < b->nnodes; s++)
                 for (int t = 0; t < b->nnodes; t++) {
@@ -72,18 +85,21 @@ fail:
     return CTN_ERR_NOMEM;
 }
 
-/* Walk column structure: count (rowind == NULL) or fill. Returns the entry count. */
-static size_t walk_columns(const ctn_asm *a, const int *ptr, const int *adj, int *rowind)
+/* Walk column structure: count (rowind == NULL) or fill. Returns the entry count.
+ * u = the DOFs of every node when uniform (a constant the compiler unrolls), else 0. */
+static inline size_t walk(const ctn_asm *a, const int *ptr, const int *adj, int *rowind, int u)
 {
     const ctn_dofmap *map = &a->map;
     size_t nz = 0;
-    for (size_t q = 0; q < a->nn; q++)
-        for (int k = 0; k < ctn_dofmap_count(map, q); k++) {
-            int c = map->eq[ctn_dofmap_node(map, q) + (size_t)k];
+    for (size_t q = 0; q < a->nn; q++) {
+        int nq = u ? u : ctn_dofmap_count(map, q);
+        for (int k = 0; k < nq; k++) {
+            int c = map->eq[(u ? (size_t)u * q : ctn_dofmap_node(map, q)) + (size_t)k];
             if (c < 0) continue;
             for (int t = ptr[q]; t < ptr[q + 1] && adj[t] <= (int)q; t++) {
-                size_t s = ctn_dofmap_node(map, (size_t)adj[t]);
-                for (int j = 0; j < ctn_dofmap_count(map, (size_t)adj[t]); j++) {
+                size_t p = (size_t)adj[t], s = u ? (size_t)u * p : ctn_dofmap_node(map, p);
+                int np = u ? u : ctn_dofmap_count(map, p);
+                for (int j = 0; j < np; j++) {
                     int r = map->eq[s + (size_t)j];
                     if (r < 0 || r > c) continue;
                     if (rowind) rowind[nz] = r;
@@ -92,7 +108,13 @@ static size_t walk_columns(const ctn_asm *a, const int *ptr, const int *adj, int
             }
             if (rowind) a->colptr[c + 1] = (int)nz;
         }
+    }
     return nz;
+}
+
+static size_t walk_columns(const ctn_asm *a, const int *ptr, const int *adj, int *rowind)
+{
+    return a->map.uniform == 3 ? walk(a, ptr, adj, rowind, 3) : walk(a, ptr, adj, rowind, 0);
 }
 
 int ctn_asm_pattern(ctn_ctx *ctx, ctn_asm *a)

@@ -5,12 +5,44 @@
 
 #include "element/element.h"
 
+#include <math.h>
+
+/* Inline: they are the inner loop of every axial kernel. */
+
 /* Unit chord e and length l of the current configuration X + u (3 per node, 2 nodes);
  * 1 if the element has collapsed (l not positive and finite), else 0. */
-int ctn_axial_chord(const double *X, const double *u, double e[3], double *l);
+static inline int ctn_axial_chord(const double *X, const double *u, double e[3], double *l)
+{
+    double a[3];
+    for (int i = 0; i < 3; i++) a[i] = (X[3 + i] - X[i]) + (u[3 + i] - u[i]);
+    *l = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    if (!(*l > 0) || !isfinite(*l)) return 1;
+    for (int i = 0; i < 3; i++) e[i] = a[i] / *l;
+    return 0;
+}
+
 /* f1 = -N e, f2 = N e. */
-void ctn_axial_forces(const double e[3], double N, double *f);
+static inline void ctn_axial_forces(const double e[3], double N, double *f)
+{
+    for (int i = 0; i < 3; i++) {
+        f[i] = -N * e[i];
+        f[3 + i] = N * e[i];
+    }
+}
+
 /* Packed upper triangle of K = [[k, -k], [-k, k]], k = dN/dl e e^T + N/l (I - e e^T). */
-void ctn_axial_tangent(const double e[3], double l, double N, double dNdl, double *K);
+static inline void ctn_axial_tangent(const double e[3], double l, double N, double dNdl, double *K)
+{
+    double s = N / l, k[3][3];
+    for (int i = 0; i < 3; i++)
+        for (int j = i; j < 3; j++) k[i][j] = k[j][i] = (dNdl - s) * e[i] * e[j] + (i == j ? s : 0.0);
+    int t = 0;
+    for (int i = 0; i < 3; i++) {
+        for (int j = i; j < 3; j++) K[t++] = k[i][j];          /* node 1 - node 1 */
+        for (int j = 0; j < 3; j++) K[t++] = -k[i][j];         /* node 1 - node 2 */
+    }
+    for (int i = 0; i < 3; i++)
+        for (int j = i; j < 3; j++) K[t++] = k[i][j];          /* node 2 - node 2 */
+}
 
 #endif
