@@ -122,9 +122,19 @@ static void print_notes(FILE *out, const ctn_model *m, const ctn_solve_summary *
     if (sum->relaxed)
         fprintf(out, "start: %d increment(s) began with compression cut off (relaxation)\n", sum->relaxed);
     if (sum->cuts) fprintf(out, "load increments cut back %d time(s)\n", sum->cuts);
-    if (sum->floor)
-        fprintf(out, "note: converged with the residual at its round-off floor (|dd| at the resolution "
-                     "of the coordinates), above tol |f_ext|\n");
+    if (sum->floor) {
+        const char *name = ctn_model_step_name(m, sum->floor_step);
+        fprintf(out, "note: step %zu%s%s%s converged with the residual at its round-off floor "
+                     "(|dd| at the resolution of the coordinates, |r| within the computed floor %.3e, "
+                     "above tol |f_ext|)\n", sum->floor_step + 1, *name ? " (" : "", name, *name ? ")" : "",
+                sum->residual_floor);
+    }
+    if (sum->reason == CTN_DIVERGED_ROUNDOFF)
+        fprintf(out, "the residual cannot fall below its round-off floor %.3e (%.3g of the forces meeting "
+                     "at the nodes, %.3g |f_ext|): the stiffness is too large for these loads to be "
+                     "resolved in double precision\n", sum->residual_floor,
+                sum->force_scale > 0 ? sum->residual_floor / sum->force_scale : INFINITY,
+                sum->residual_floor / sum->fext_norm);
     if (sum->reason != CTN_CONVERGED) {
         const char *name = ctn_model_step_name(m, sum->step);
         fprintf(out, "last converged state: load factor %.6g of step %zu%s%s%s (written as the result)\n",

@@ -87,8 +87,14 @@ typedef enum ctn_reason {
     CTN_DIVERGED_INDEFINITE = -3,   /* tangent not positive definite (compressed or
                                        unrestrained DOF); see fail_node, fail_dir */
     CTN_DIVERGED_LINESEARCH = -4,   /* no step lowered the potential or the residual */
-    CTN_DIVERGED_ARCLENGTH = -5     /* arc-length: no real root for the load factor after
+    CTN_DIVERGED_ARCLENGTH = -5,    /* arc-length: no real root for the load factor after
                                        cutting the arc */
+    CTN_DIVERGED_ROUNDOFF = -6      /* the Newton correction reached the resolution of the
+                                       coordinates with the residual above its round-off
+                                       floor, or that floor is above 1e-4 of the forces
+                                       meeting at the nodes: the stiffness is too large for
+                                       the loads to be resolved in double precision (see
+                                       residual_floor, force_scale) */
 } ctn_reason;
 
 /* Name of a reason, e.g. "converged", "tangent not positive definite". */
@@ -113,6 +119,14 @@ typedef struct ctn_solve_summary {
     int cuts;             /* increment halvings over the run */
     int floor;            /* 1 if convergence was declared with the residual at its
                              round-off floor, above tol |f_ext| (see dtol) */
+    double residual_floor;/* the computed round-off floor of the residual [force] where
+                             it was needed (floor, CTN_DIVERGED_ROUNDOFF), else 0: the
+                             bound of the force errors of the elements at a node, from
+                             the resolution of their chords, over the free DOFs */
+    double force_scale;   /* with residual_floor: the force that meets at the nodes (norm
+                             over the free DOFs of the sum of the members' |N| and |f_ext|);
+                             a floor above 1e-4 of it resolves no equilibrium */
+    size_t floor_step;    /* floor: the load step (0-based) where it was declared */
     int preshaped;        /* slack chains placed on the arc of their unstressed length
                              before the first step (CTN_METHOD_AUTO) */
     int relaxed;          /* increments that began with a compression-free relaxation

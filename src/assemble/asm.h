@@ -50,6 +50,7 @@ typedef struct ctn_asm_elem {
     size_t e;
     const ctn_asm_block *b;
     const int *nodes;          /* node indices */
+    const void *props;         /* its properties */
     const double *fe, *Ke;
     const ctn_elem_state *st;
     const int *slot;           /* its scatter slots */

@@ -17,7 +17,10 @@
 #define ARMIJO 1e-4
 #define CTN_NONMONOTONE 8   /* memory of the non-monotone acceptance test */
 #define CTN_FLOOR (1e3 * DBL_EPSILON)  /* |dd| / (|d| + L_ref) below which the
-                                         residual cannot fall further: round-off */
+                                         correction is at the coordinates' resolution */
+#define CTN_FLOOR_MAX 1e-4             /* largest round-off floor accepted, relative to
+                                         the force that meets at the nodes */
+#define CTN_STALLS 3                   /* iterations at resolution above the floor */
 
 typedef struct corrector {
     ctn_problem *e;
@@ -158,6 +161,29 @@ static int iteration(corrector *c, ctn_reason *why)
     return ctn_problem_record(e, c->s, rn, alpha * ctn_vec_norm(e->dd, e->ndof));
 }
 
+/* The Newton correction is at the resolution of the coordinates with |r| above tol |f_ext|:
+ * converged if |r| is within the computed round-off floor and that floor resolves the
+ * forces that meet at the nodes (at most CTN_FLOOR_MAX of them); else, after CTN_STALLS
+ * such iterations, the residual will not fall: CTN_DIVERGED_ROUNDOFF. 1 when decided. */
+static int at_floor(ctn_problem *e, ctn_solution *s, const double *d, double rn, int *stalls,
+                    ctn_reason *reason)
+{
+    double scale, F = ctn_problem_residual_floor(e, d, &scale);
+    s->sum.residual_floor = F;
+    s->sum.force_scale = scale;
+    if (rn <= F && F <= CTN_FLOOR_MAX * scale) {
+        *reason = CTN_CONVERGED;
+        s->sum.floor = 1;
+        s->sum.floor_step = s->nsteps ? s->nsteps - 1 : 0;
+        return 1;
+    }
+    if (F > CTN_FLOOR_MAX * scale || ++*stalls >= CTN_STALLS) {
+        *reason = CTN_DIVERGED_ROUNDOFF;
+        return 1;
+    }
+    return 0;
+}
+
 static int correct(ctn_problem *e, ctn_solution *s, double *d, ctn_reason *reason)
 {
     corrector c;
@@ -174,6 +200,7 @@ static int correct(ctn_problem *e, ctn_solution *s, double *d, ctn_reason *reaso
     if ((rc = ctn_solution_push_residual(s, c.rn))) return rc;
     s->sum.residual = c.rn;
     double fref = ctn_problem_fref(e);                /* once per increment */
+    int stalls = 0;
     c.dmax = ctn_vec_norm(d, e->ns);
     for (int it = 1; it <= e->opt.maxit; it++) {
         ctn_reason why;
@@ -185,12 +212,13 @@ static int correct(ctn_problem *e, ctn_solution *s, double *d, ctn_reason *reaso
         if (dnorm > e->opt.dtol * (c.dmax + e->lref)) continue;
         double size = ctn_vec_norm(d, e->ns) + e->lref;     /* only when it can matter */
         c.dmax = size - e->lref;
-        int at_floor = dnorm <= CTN_FLOOR * size;        /* dd at coordinate resolution */
-        if ((c.rn <= e->opt.tol * fref || at_floor) && dnorm <= e->opt.dtol * size) {
+        if (dnorm > e->opt.dtol * size) continue;
+        if (c.rn <= e->opt.tol * fref) {
             *reason = CTN_CONVERGED;
-            if (c.rn > e->opt.tol * fref) s->sum.floor = 1;
             return CTN_OK;
         }
+        if (dnorm > CTN_FLOOR * size) continue;          /* dd above coordinate resolution */
+        if (at_floor(e, s, d, c.rn, &stalls, reason)) return CTN_OK;
     }
     *reason = CTN_DIVERGED_MAXIT;
     return CTN_OK;

@@ -26,7 +26,8 @@ static int run_step(ctn_problem *p, ctn_solution *s, size_t k, double *d, double
             continue;
         }
         memcpy(d, dstep, p->ns * sizeof(double));
-        if (cuts >= p->opt.maxcuts) break;
+        if (cuts >= p->opt.maxcuts || why == CTN_DIVERGED_ROUNDOFF) break;   /* smaller loads
+                                                          cannot lift them above round-off */
         cuts++;
         s->sum.cuts++;
         dt *= 0.5;
@@ -36,6 +37,15 @@ static int run_step(ctn_problem *p, ctn_solution *s, size_t k, double *d, double
     st->reason = why;
     st->iterations = s->sum.iterations - it0;
     return rc ? rc : ctn_problem_fill_step(p, s, k, d);
+}
+
+/* |f_ext| on the free DOFs at the end of the step being solved (f1). */
+static double step_load_norm(const ctn_problem *p)
+{
+    double s = 0;
+    for (size_t i = 0; i < p->ns; i++)
+        if (p->a->map.eq[i] >= 0) s += p->f1[i] * p->f1[i];
+    return sqrt(s);
 }
 
 /* The load-step strategies (auto, newton). */
@@ -51,8 +61,10 @@ static int run_steps(ctn_problem *p, ctn_solution *s, double *d)
         memcpy(p->f0, p->f1, p->ns * sizeof(double));
         memcpy(p->p0, p->p1, p->ns * sizeof(double));
         ctn_problem_step_loads(p, k);
+        double target = step_load_norm(p);
         if ((rc = run_step(p, s, idx, d, dstep))) break;
         s->sum.step = k;
+        s->sum.fext_norm = s->steps[idx].reason == CTN_CONVERGED || !(target > 0) ? ctn_problem_fref(p) : target;
         s->sum.reason = s->steps[idx].reason;
         s->sum.load_factor = s->steps[idx].t;
         if (s->sum.reason != CTN_CONVERGED) break;
@@ -122,7 +134,7 @@ int ctn_problem_solve(ctn_problem *p, ctn_solution **out)
         if (p->strategy->preshape) rc = ctn_preshape(p, d, &s->sum.preshaped);
         if (!rc) rc = check_start(p, d);
         if (!rc) rc = p->strategy->run(p, s, d);
-        s->sum.fext_norm = ctn_problem_fref(p);
+        if (!s->sum.fext_norm) s->sum.fext_norm = ctn_problem_fref(p);
         s->sum.ordering = ctn_linsolve_ordering(p->ls);
         s->sum.ndof = p->ndof;
         s->sum.nnz_factor = ctn_linsolve_factor_nnz(p->ls);

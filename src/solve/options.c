@@ -64,6 +64,7 @@ const char *ctn_reason_name(ctn_reason r)
     case CTN_DIVERGED_INDEFINITE: return "tangent not positive definite";
     case CTN_DIVERGED_LINESEARCH: return "line search failed";
     case CTN_DIVERGED_ARCLENGTH: return "arc-length step failed";
+    case CTN_DIVERGED_ROUNDOFF: return "residual above its round-off floor";
     default: return "not solved";
     }
 }

@@ -83,6 +83,9 @@ int ctn_problem_record(ctn_problem *p, ctn_solution *s, double rnorm, double dno
 /* Newton corrector at fixed t from d (modified in place). On return *reason is
  * CTN_CONVERGED or why it stopped; the state d is the last accepted iterate. */
 int ctn_newton_correct(ctn_problem *p, ctn_solution *s, double *d, ctn_reason *reason);
+/* The round-off floor of |f_ext - f_int| at state d (floor.c), and in *scale the force
+ * that meets at the nodes it is judged against; INFINITY if an element collapsed. */
+double ctn_problem_residual_floor(ctn_problem *p, const double *d, double *scale);
 /* Crisfield's cylindrical arc-length continuation (single load pattern). */
 int ctn_arclength_run(ctn_problem *p, ctn_solution *s, double *d);
 /* Place slack chains on the arc of their unstressed length (see preshape.c); *count
