@@ -3,11 +3,14 @@
 #   make run    install missing packages, build, run the paper's study
 #   make test   install missing packages, build and run every test (plain and ASan+UBSan)
 #               and a 30 s smoke of the libFuzzer harness
+#   make install PREFIX=/usr/local   build, then install headers, libcatena.a, libcatena.so,
+#               the catena command and lib/pkgconfig/catena.pc (DESTDIR=... stages them)
 BUILD ?= build
 ASAN_BUILD ?= build-asan
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+PREFIX ?= /usr/local
 
-.PHONY: all deps run test test-plain test-asan test-fuzz fuzz valgrind bench clean
+.PHONY: all deps run install test test-plain test-asan test-fuzz fuzz valgrind bench clean
 
 all: deps
 	@cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -18,6 +21,9 @@ deps:
 
 run: all
 	@bash scripts/paper.sh $(BUILD)/catena
+
+install: all
+	DESTDIR="$(DESTDIR)" cmake --install $(BUILD) --prefix "$(PREFIX)"
 
 test: test-plain test-asan test-fuzz
 

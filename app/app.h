@@ -6,7 +6,7 @@
 
 #include "catena.h"
 
-/* Exit codes of the catena command (docs/cli.md). */
+/* Exit codes of the catena command (docs/format.md, "The command line"; README.md). */
 enum {
     CTN_EXIT_OK = 0,         /* converged / success */
     CTN_EXIT_USAGE = 1,      /* bad command line */
@@ -16,6 +16,24 @@ enum {
 };
 
 int ctn_cmd_solve(int argc, char **argv);
+
+/* The commands (help.c): one table of name, entry point and help text. */
+typedef struct ctn_app_command {
+    const char *name;                    /* "solve" */
+    int (*run)(int argc, char **argv);   /* argv[0] is the command name; exit code */
+    const char *synopsis;                /* the arguments, after "catena NAME " */
+    const char *args;                    /* the arguments, short, for `catena help` */
+    const char *summary;                 /* one line for `catena help` */
+    const char *help;                    /* description, one line per option, exit codes */
+} ctn_app_command;
+/* The command called name; NULL if there is none. */
+const ctn_app_command *ctn_app_command_find(const char *name);
+/* `catena help`: every command, how to get the help of one, the exit codes. */
+void ctn_app_usage(FILE *f);
+/* `catena COMMAND --help`: "usage: catena NAME SYNOPSIS" and the help text. */
+void ctn_app_command_help(FILE *f, const ctn_app_command *c);
+/* 1 if argv[1..argc-1] holds --help or -h. */
+int ctn_app_wants_help(int argc, char **argv);
 
 /* MODEL [--json] [-o DIR] [-q], as `solve` and `compare` take them (args.c). 0, or 1
  * after printing a usage message naming cmd. */

@@ -1,22 +1,7 @@
-/* catena: command-line entry, dispatch to sub-commands. */
+/* catena: command-line entry, dispatch to sub-commands (the table is in help.c). */
 #include "app.h"
 
 #include <string.h>
-
-static void usage(FILE *f)
-{
-    fprintf(f,
-            "usage: catena COMMAND [options]\n"
-            "\n"
-            "commands:\n"
-            "  solve MODEL [--json] [-o DIR] [-q]   solve a .cable model (docs/format.md)\n"
-            "  compare MODEL [--json] [-o DIR] [-q] FEA of a single span against the closed forms\n"
-            "  study MODEL... [options]              FEA against the catenary over cable lengths\n"
-            "  convergence MODEL [--n LIST] [...]    mesh convergence to the elastic catenary\n"
-            "  help                                  this text\n"
-            "\n"
-            "exit codes: 0 converged, 1 usage, 2 bad model, 3 not converged, 4 I/O error\n");
-}
 
 int ctn_app_fail(ctn_ctx *ctx, int status)
 {
@@ -26,21 +11,46 @@ int ctn_app_fail(ctn_ctx *ctx, int status)
     return CTN_EXIT_IO;
 }
 
+/* catena help [COMMAND] */
+static int help(int argc, char **argv)
+{
+    if (argc < 3) {
+        ctn_app_usage(stdout);
+        return CTN_EXIT_OK;
+    }
+    const ctn_app_command *c = ctn_app_command_find(argv[2]);
+    if (!c) {
+        fprintf(stderr, "catena help: unknown command '%s'\n", argv[2]);
+        ctn_app_usage(stderr);
+        return CTN_EXIT_USAGE;
+    }
+    ctn_app_command_help(stdout, c);
+    return CTN_EXIT_OK;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2) {
-        usage(stderr);
+        ctn_app_usage(stderr);
         return CTN_EXIT_USAGE;
     }
-    if (!strcmp(argv[1], "solve")) return ctn_cmd_solve(argc - 1, argv + 1);
-    if (!strcmp(argv[1], "compare")) return ctn_cmd_compare(argc - 1, argv + 1);
-    if (!strcmp(argv[1], "study")) return ctn_cmd_study(argc - 1, argv + 1);
-    if (!strcmp(argv[1], "convergence")) return ctn_cmd_convergence(argc - 1, argv + 1);
-    if (!strcmp(argv[1], "help") || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) {
-        usage(stdout);
+    const char *name = argv[1];
+    if (!strcmp(name, "help") || !strcmp(name, "--help") || !strcmp(name, "-h")) return help(argc, argv);
+    if (!strcmp(name, "version") || !strcmp(name, "--version")) {
+        printf("catena %s\n", ctn_version());
         return CTN_EXIT_OK;
     }
-    fprintf(stderr, "catena: unknown command '%s'\n", argv[1]);
-    usage(stderr);
-    return CTN_EXIT_USAGE;
+    const ctn_app_command *c = ctn_app_command_find(name);
+    if (!c) {
+        fprintf(stderr, "catena: unknown command '%s'\n", name);
+        ctn_app_usage(stderr);
+        return CTN_EXIT_USAGE;
+    }
+    if (ctn_app_wants_help(argc - 1, argv + 1)) {
+        ctn_app_command_help(stdout, c);
+        return CTN_EXIT_OK;
+    }
+    int code = c->run(argc - 1, argv + 1);
+    if (code == CTN_EXIT_USAGE) fprintf(stderr, "catena: 'catena %s --help' lists the options\n", name);
+    return code;
 }

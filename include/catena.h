@@ -1,15 +1,76 @@
 /*
  * catena.h - geometrically non-linear static analysis of 3D cable structures.
  *
- * The public API, by module:
- *   catena/core.h      context, status codes, errors
- *   catena/model.h     building a model (nodes, materials, sections, elements, loads)
- *   catena/io.h        reading .cable model files, writing results
- *   catena/solve.h     Newton-Raphson solution and its results
+ * This header is the entry point of the library: include it and nothing else. It
+ * includes every module header; each documents its own functions, and the comment of
+ * each function says what it returns, what it writes and who owns what.
+ *
+ * The public API, by module (include/catena/):
+ *   catena/export.h    CTN_API_BEGIN / CTN_API_END: what the shared library exports
+ *   catena/version.h   CATENA_VERSION_* macros (the headers) and ctn_version() (the library)
+ *   catena/core.h      the context (ctn_ctx), status codes (CTN_OK, CTN_ERR_*), errors,
+ *                      model size limits and an allocation-failure hook for tests
+ *   catena/model.h     building a model: nodes, materials, sections, elements, generated
+ *                      cables, supports, loads and load steps; queries on a model
+ *   catena/io.h        reading .cable model files (docs/format.md), writing the results
+ *                      as JSON and CSV, atomic file writes
+ *   catena/solve.h     the solution: options, Newton-Raphson / globalized Newton /
+ *                      arc-length, convergence reasons, displacements, reactions,
+ *                      element forces, per-step results
+ *   catena/analytic.h  closed forms of a single cable: catenary, elastic catenary,
+ *                      parabola, funicular polygon (reference solutions)
+ *   catena/compare.h   a model's single span against those closed forms; the length
+ *                      study and the mesh-convergence study
+ *   catena/plot.h      figures as gnuplot scripts and data files
+ *
+ * How to use it:
+ *
+ *   ctn_ctx *ctx = NULL;                 context: one per thread, holds the last error
+ *   ctn_model *m = NULL;                 the model (nodes, elements, loads, options)
+ *   ctn_solution *s = NULL;              the result of one solve
+ *   ctn_solve_summary sum;
+ *   if (ctn_ctx_create(&ctx)) return out_of_memory;
+ *   int rc = ctn_model_read_file(ctx, "bridge.cable", &m);    or ctn_model_create +
+ *   if (!rc) rc = ctn_solve(ctx, m, NULL, &s);                   ctn_model_add_*
+ *   if (rc) fprintf(stderr, "%s\n", ctn_ctx_message(ctx));
+ *   else {
+ *       ctn_solution_summary(s, &sum);   sum.reason == CTN_CONVERGED, or why not
+ *       const double *d = ctn_solution_displacements(s);        3 per node
+ *   }
+ *   ctn_solution_destroy(&s);            each destroy accepts NULL and sets it to NULL
+ *   ctn_model_destroy(&m);
+ *   ctn_ctx_destroy(&ctx);
+ *
+ * Context. Every call that can fail takes a ctn_ctx (or an object bound to one, such as
+ * a model) and records the error there: ctn_ctx_code() and ctn_ctx_message(), which for
+ * model input starts with "file:line: ". A context is not thread-safe: use one per
+ * thread. The library never prints, never exits and keeps no global state.
+ *
+ * Errors. Every function that can fail returns an int status: CTN_OK (0) or a
+ * CTN_ERR_* code (catena/core.h; ctn_strerror() names it); results come back through
+ * out-parameters (a call that creates an object sets *out to NULL when it fails).
+ *
+ * Solving. ctn_solve() takes the model's own solver options (the `solve` directive)
+ * when opt is NULL, or a ctn_solve_options filled by ctn_solve_options_default() and
+ * changed. Non-convergence is an outcome, not an error: ctn_solve() returns CTN_OK and
+ * a solution whose summary's reason says why it stopped (positive: converged,
+ * negative: diverged, with the last converged state kept).
+ *
+ * Ownership. Objects come in create/destroy pairs (ctn_ctx, ctn_model, ctn_solution,
+ * ctn_compare, ctn_study, ctn_convergence); destroy(&p) accepts NULL and sets p to
+ * NULL. A model is bound to the context it was created with, which must outlive it.
+ * Arrays returned by const pointer (displacements, reactions, histories) belong to the
+ * object they came from and live as long as it; strings allocated for the caller say
+ * how to free them (ctn_json_free). Input arrays are copied or only read during the
+ * call.
+ *
+ * Linking: cc app.c $(pkg-config --cflags --libs catena), see README.md.
  */
 #ifndef CATENA_H
 #define CATENA_H
 
+#include "catena/export.h"
+#include "catena/version.h"
 #include "catena/core.h"
 #include "catena/model.h"
 #include "catena/io.h"

@@ -39,6 +39,7 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+CTN_API_BEGIN
 
 /* ---------------------------------------------------------------------------------------
  * Summary shared by every solution.
@@ -218,6 +219,7 @@ int ctn_funicular_y(size_t n, const double *xy, double x, double *y);
 /* Tension [N] at abscissa x: N of the first segment whose x-range contains x. */
 int ctn_funicular_tension(size_t n, const double *xy, const double *N, double x, double *T);
 
+CTN_API_END
 #ifdef __cplusplus
 }
 #endif

@@ -62,6 +62,7 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+CTN_API_BEGIN
 
 /* The solutions compared. */
 typedef enum ctn_form {
@@ -278,6 +279,7 @@ int ctn_convergence_order(const ctn_convergence *c, int column, double *order);
  * into dir (created if missing). */
 int ctn_convergence_write_figures(ctn_ctx *ctx, const ctn_convergence *c, const char *dir);
 
+CTN_API_END
 #ifdef __cplusplus
 }
 #endif

@@ -11,9 +11,12 @@
 
 #include <stddef.h>
 
+#include "catena/export.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
+CTN_API_BEGIN
 
 /* Result codes (function return values). */
 typedef enum ctn_status {
@@ -58,6 +61,7 @@ void ctn_ctx_fail_alloc_at(ctn_ctx *ctx, long n);
 /* Number of allocations made through this context so far. */
 long ctn_ctx_alloc_count(const ctn_ctx *ctx);
 
+CTN_API_END
 #ifdef __cplusplus
 }
 #endif

@@ -19,6 +19,7 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+CTN_API_BEGIN
 
 /* Read a model file. On success *out owns a new model (ctn_model_destroy) and, when opt
  * is not NULL, *opt holds the options of the file's `solve` line (the defaults where it
@@ -47,6 +48,7 @@ int ctn_write_results(ctn_ctx *ctx, const char *dir, const ctn_model *m,
 /* Write len bytes atomically to path (temporary file + rename). */
 int ctn_write_file_atomic(ctn_ctx *ctx, const char *path, const char *data, size_t len);
 
+CTN_API_END
 #ifdef __cplusplus
 }
 #endif

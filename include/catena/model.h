@@ -15,6 +15,7 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+CTN_API_BEGIN
 
 typedef struct ctn_model ctn_model;
 
@@ -219,6 +220,7 @@ int ctn_model_external_forces(const ctn_model *m, double *f);
  * at least one support, ... */
 int ctn_model_validate(const ctn_model *m);
 
+CTN_API_END
 #ifdef __cplusplus
 }
 #endif

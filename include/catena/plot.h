@@ -24,6 +24,7 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+CTN_API_BEGIN
 
 /* How a curve is drawn. */
 typedef enum ctn_plot_style {
@@ -75,6 +76,7 @@ int ctn_plot_mkdir(ctn_ctx *ctx, const char *dir);
  * can be overridden by the environment variable CATENA_GNUPLOT (a program name or path). */
 int ctn_plot_render(ctn_ctx *ctx, const char *dir, const char *name, int *rendered);
 
+CTN_API_END
 #ifdef __cplusplus
 }
 #endif

@@ -23,6 +23,7 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
+CTN_API_BEGIN
 
 /* Fill-reducing ordering of the tangent's factorization. */
 typedef enum ctn_ordering {
@@ -217,6 +218,7 @@ int ctn_solution_step_element(const ctn_solution *s, size_t k, size_t i, ctn_ele
  * vertical chord, the point is the one at mid-chord along the chord. */
 int ctn_solution_cable_sag(const ctn_model *m, const ctn_solution *s, size_t i, double *sag);
 
+CTN_API_END
 #ifdef __cplusplus
 }
 #endif

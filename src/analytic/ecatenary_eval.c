@@ -48,7 +48,8 @@ int ctn_ecatenary_s_at(const ctn_ecatenary *cat, double x, double *s)
     x_target t = {cat, x};
     double L0 = cat->in.L0, f, df;
     if (x == 0.0) { *s = 0.0; return CTN_OK; }
-    x_equation(&t, L0, &f, &df);
+    int st = x_equation(&t, L0, &f, &df);
+    if (st != CTN_OK) return st;
     if (f <= 0.0) { *s = L0; return CTN_OK; }          /* x = l up to rounding */
     return ctn_an_root(x_equation, &t, 0.0, L0, L0 * x / cat->in.l, s);
 }

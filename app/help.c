@@ -1,0 +1,119 @@
+/* The table of catena's commands: name, entry point, synopsis and help text, and the
+ * `catena help` / `catena COMMAND --help` printers built from it. */
+#include "app.h"
+
+#include <string.h>
+
+#define EXIT_CODES_NOTE "exit codes: 0 converged, 1 usage, 2 bad model, 3 not converged, 4 I/O or other error\n"
+
+static const ctn_app_command commands[] = {
+    { "solve", ctn_cmd_solve, "MODEL [--json] [-o DIR] [-q]", "MODEL [--json] [-o DIR] [-q]", "solve a .cable model (docs/format.md)",
+      "Solve a .cable model (docs/format.md) with the options of its `solve` directive and\n"
+      "print the Newton iteration log and a summary of the result.\n"
+      "\n"
+      "options (in any order):\n"
+      "  MODEL          the model file\n"
+      "  --json         print the result as JSON on stdout instead of the log and summary\n"
+      "  -o DIR         write result.json, nodes.csv and elements.csv into DIR (created if missing)\n"
+      "  -q, --quiet    print nothing on stdout (--json still prints the JSON)\n"
+      "  -h, --help     print this help and exit\n"
+      "\n"
+      "exit codes: 0 converged, 1 usage, 2 bad model (the message names file:line),\n"
+      "            3 not converged (the last converged state is still written), 4 I/O or other error\n" },
+    { "compare", ctn_cmd_compare, "MODEL [--json] [-o DIR] [-q]", "MODEL [--json] [-o DIR] [-q]", "FEA of a single span against the closed forms",
+      "Solve a single-span model (a `cable` directive or a chain of elements between two\n"
+      "fully fixed nodes) with its own solver options and compare the FEA with the closed\n"
+      "forms that apply: catenaries and parabolas, funicular polygons (docs/validation.md).\n"
+      "\n"
+      "options (in any order):\n"
+      "  MODEL          the model file: one span\n"
+      "  --json         print the compared values as JSON on stdout instead of the table\n"
+      "  -o DIR         write the figures compare_shape, compare_stress into DIR (gnuplot scripts,\n"
+      "                 data, and SVG when gnuplot is installed)\n"
+      "  -q, --quiet    print nothing on stdout (--json still prints the JSON)\n"
+      "  -h, --help     print this help and exit\n"
+      "\n"
+      "exit codes: 0 compared, 1 usage, 2 bad model or not a single span, 3 the FEA did not\n"
+      "            converge, 4 I/O or other error\n" },
+    { "study", ctn_cmd_study,
+      "MODEL... [--lengths LIST] [--sweep N] [--from L] [--to L] [--levels LIST]\n"
+      "                    [--claims S:E,...] [--claims-title TEXT] [--json] [-o DIR] [-q]",
+      "MODEL... [options]", "FEA against the catenary over cable lengths",
+      "The founding paper's study: the span of the first MODEL re-solved over a sweep of\n"
+      "unstressed lengths L0, FEA against the inextensible catenary; the lengths of every\n"
+      "MODEL and of --lengths are marked (docs/validation.md). LIST: numbers separated by ','.\n"
+      "\n"
+      "options (in any order):\n"
+      "  MODEL...             models of one span (only the cable length may differ)\n"
+      "  --lengths LIST       more marked unstressed lengths [model length unit]\n"
+      "  --sweep N            number of sweep lengths, geometric in L0 - chord (default 64; 0: none)\n"
+      "  --from L             smallest sweep length, above the chord (default 1.0002 chord)\n"
+      "  --to L               largest sweep length (default 1.5 chord)\n"
+      "  --levels LIST        stress levels of the error table in MPa (default 50,100,...,300)\n"
+      "  --claims S:E,...     reference points, stress level S [MPa] : error E [%], on the table and figure\n"
+      "  --claims-title TEXT  legend of the reference points (default \"reference points\")\n"
+      "  --json               print the study as JSON on stdout instead of the tables\n"
+      "  -o DIR               write the figures study_stress_max, study_stress_min, study_sag and\n"
+      "                       study_error into DIR (gnuplot scripts, data, SVG when gnuplot is installed)\n"
+      "  -q, --quiet          print nothing on stdout (--json still prints the JSON)\n"
+      "  -h, --help           print this help and exit\n"
+      "\n"
+      "exit codes: 0 done (lengths that do not converge are rows, not failures), 1 usage (also a\n"
+      "            bad length or sweep), 2 bad model or not the same span, 4 I/O or other error\n" },
+    { "convergence", ctn_cmd_convergence, "MODEL [--n LIST] [--json] [-o DIR] [-q]",
+      "MODEL [--n LIST] [...]", "mesh convergence to the elastic catenary",
+      "The span of MODEL (loaded by its self-weight only) meshed with n elements, engineering\n"
+      "strain, solved for each n and compared with the elastic catenary: errors of the sag,\n"
+      "the support tension and H, and their observed orders (docs/validation.md).\n"
+      "\n"
+      "options (in any order):\n"
+      "  MODEL          the model file: one span\n"
+      "  --n LIST       element counts, integers 2 to 50000000 separated by ','\n"
+      "                 (default 10,20,50,100,200,500,1000,2000,5000,10000)\n"
+      "  --json         print the table as JSON on stdout instead\n"
+      "  -o DIR         write the figure convergence into DIR (gnuplot script, data, SVG when\n"
+      "                 gnuplot is installed)\n"
+      "  -q, --quiet    print nothing on stdout (--json still prints the JSON)\n"
+      "  -h, --help     print this help and exit\n"
+      "\n"
+      "exit codes: 0 every n converged, 1 usage, 2 bad model or not a span under self-weight,\n"
+      "            3 some n did not converge, 4 I/O or other error\n" },
+};
+
+const ctn_app_command *ctn_app_command_find(const char *name)
+{
+    for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
+        if (!strcmp(commands[i].name, name)) return &commands[i];
+    return NULL;
+}
+
+/* One line of the command list: "  NAME ARGS" padded, then the summary. */
+static void list_line(FILE *f, const char *name, const char *args, const char *summary)
+{
+    int n = fprintf(f, "  %s%s%s", name, *args ? " " : "", args);
+    fprintf(f, "%*s %s\n", n < 40 ? 40 - n : 0, "", summary);
+}
+
+void ctn_app_usage(FILE *f)
+{
+    fprintf(f, "usage: catena COMMAND [options]\n\ncommands:\n");
+    for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
+        list_line(f, commands[i].name, commands[i].args, commands[i].summary);
+    list_line(f, "help", "[COMMAND]", "this text, or the help of COMMAND");
+    list_line(f, "version", "", "print the version (also: catena --version)");
+    fprintf(f, "\n'catena COMMAND --help' (or -h) prints the options and exit codes of COMMAND;\n"
+               "'catena --version' prints the version.\n"
+               "\n" EXIT_CODES_NOTE);
+}
+
+void ctn_app_command_help(FILE *f, const ctn_app_command *c)
+{
+    fprintf(f, "usage: catena %s %s\n\n%s", c->name, c->synopsis, c->help);
+}
+
+int ctn_app_wants_help(int argc, char **argv)
+{
+    for (int i = 1; i < argc; i++)
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) return 1;
+    return 0;
+}
