@@ -10,13 +10,15 @@
  *   catena/version.h   CATENA_VERSION_* macros (the headers) and ctn_version() (the library)
  *   catena/core.h      the context (ctn_ctx), status codes (CTN_OK, CTN_ERR_*), errors,
  *                      model size limits and an allocation-failure hook for tests
- *   catena/model.h     building a model: nodes, materials, sections, elements, generated
- *                      cables, supports, loads and load steps; queries on a model
- *   catena/io.h        reading .cable model files (docs/format.md), writing the results
- *                      as JSON and CSV, atomic file writes
- *   catena/solve.h     the solution: options, Newton-Raphson / globalized Newton /
- *                      arc-length, convergence reasons, displacements, reactions,
- *                      element forces, per-step results
+ *   catena/model.h     building a model: nodes, materials, sections, elements of any
+ *                      family (cable, spring; versioned spec structs), generated cables,
+ *                      supports, loads and load steps; queries on a model
+ *   catena/io.h        reading .cable model files (docs/format.md) with their solve
+ *                      options, writing the results as JSON and CSV, atomic file writes
+ *   catena/solve.h     the analysis: options, the problem object (set up once, solved,
+ *                      then asked for the stability of its solution), Newton-Raphson /
+ *                      globalized Newton / arc-length, convergence reasons,
+ *                      displacements, reactions, element forces, per-step results
  *   catena/analytic.h  closed forms of a single cable: catenary, elastic catenary,
  *                      parabola, funicular polygon (reference solutions)
  *   catena/compare.h   a model's single span against those closed forms; the length
@@ -26,12 +28,13 @@
  * How to use it:
  *
  *   ctn_ctx *ctx = NULL;                 context: one per thread, holds the last error
- *   ctn_model *m = NULL;                 the model (nodes, elements, loads, options)
+ *   ctn_model *m = NULL;                 the model (nodes, elements, loads)
  *   ctn_solution *s = NULL;              the result of one solve
+ *   ctn_solve_options opt;               options belong to the solve, not the model
  *   ctn_solve_summary sum;
  *   if (ctn_ctx_create(&ctx)) return out_of_memory;
- *   int rc = ctn_model_read_file(ctx, "bridge.cable", &m);    or ctn_model_create +
- *   if (!rc) rc = ctn_solve(ctx, m, NULL, &s);                   ctn_model_add_*
+ *   int rc = ctn_read_file(ctx, "bridge.cable", &m, &opt);    or ctn_model_create +
+ *   if (!rc) rc = ctn_solve(ctx, m, &opt, &s);                   ctn_model_add_*
  *   if (rc) fprintf(stderr, "%s\n", ctn_ctx_message(ctx));
  *   else {
  *       ctn_solution_summary(s, &sum);   sum.reason == CTN_CONVERGED, or why not
@@ -50,13 +53,15 @@
  * CTN_ERR_* code (catena/core.h; ctn_strerror() names it); results come back through
  * out-parameters (a call that creates an object sets *out to NULL when it fails).
  *
- * Solving. ctn_solve() takes the model's own solver options (the `solve` directive)
- * when opt is NULL, or a ctn_solve_options filled by ctn_solve_options_default() and
- * changed. Non-convergence is an outcome, not an error: ctn_solve() returns CTN_OK and
+ * Solving. ctn_solve() takes a ctn_solve_options filled by ctn_solve_options_default()
+ * (or read from a file's `solve` line by ctn_read_file) and changed; NULL means the
+ * defaults. ctn_problem_create() + ctn_problem_solve() do the same in two steps and keep
+ * the problem (DOF map, pattern, factorization) for what follows a solve, such as
+ * ctn_problem_stability(). Non-convergence is an outcome, not an error: ctn_solve() returns CTN_OK and
  * a solution whose summary's reason says why it stopped (positive: converged,
  * negative: diverged, with the last converged state kept).
  *
- * Ownership. Objects come in create/destroy pairs (ctn_ctx, ctn_model, ctn_solution,
+ * Ownership. Objects come in create/destroy pairs (ctn_ctx, ctn_model, ctn_problem, ctn_solution,
  * ctn_compare, ctn_study, ctn_convergence); destroy(&p) accepts NULL and sets p to
  * NULL. A model is bound to the context it was created with, which must outlive it.
  * Arrays returned by const pointer (displacements, reactions, histories) belong to the

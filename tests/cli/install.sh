@@ -87,8 +87,9 @@ int main(int argc, char **argv)
     ctn_solution *s = NULL;
     ctn_solve_summary sum;
     if (argc != 2 || ctn_ctx_create(&ctx)) return 2;
-    int rc = ctn_model_read_file(ctx, argv[1], &m);
-    if (!rc) rc = ctn_solve(ctx, m, NULL, &s);
+    ctn_solve_options opt;
+    int rc = ctn_read_file(ctx, argv[1], &m, &opt);
+    if (!rc) rc = ctn_solve(ctx, m, &opt, &s);
     if (rc) {
         fprintf(stderr, "app: %s\n", ctn_ctx_message(ctx));
     } else {
