@@ -46,6 +46,9 @@ int ctn_app_model_args(const char *cmd, int argc, char **argv, ctn_model_args *a
 /* Exit code for a failed library call, after printing its message to stderr. */
 int ctn_app_fail(ctn_ctx *ctx, int status);
 
+/* Warn (on out) when a converged solution is not stable: unstable (negative eigenvalues
+ * of the tangent) or semi-definite (a zero one), with the node and direction. */
+void ctn_print_stability(FILE *out, const char *model, const ctn_solution *s);
 /* Human-readable result summary. */
 void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s);
 /* Iteration log state: the monitor prints one line per Newton iteration with the

@@ -22,6 +22,11 @@ static int emit(ctn_ctx *ctx, const ctn_model_args *a, const ctn_model *m, const
     return rc;
 }
 
+static const char *method_title(ctn_method m)
+{
+    return m == CTN_METHOD_NEWTON ? "Newton-Raphson" : m == CTN_METHOD_ARCLENGTH ? "arc-length" : "Newton (auto)";
+}
+
 int ctn_cmd_solve(int argc, char **argv)
 {
     ctn_model_args a;
@@ -41,7 +46,7 @@ int ctn_cmd_solve(int argc, char **argv)
             opt.monitor = ctn_print_iteration;
             opt.monitor_data = &iters;
             printf("%s: %zu nodes, %zu elements\n", a.model, ctn_model_node_count(m), ctn_model_element_count(m));
-            printf("Newton-Raphson   it  |f_ext - f_int|   |dd|        order\n");
+            printf("%-16s it  |f_ext - f_int|   |dd|        order\n", method_title(opt.method));
         }
         rc = ctn_solve(ctx, m, &opt, &s);
     }
@@ -52,6 +57,7 @@ int ctn_cmd_solve(int argc, char **argv)
         ctn_solution_summary(s, &sum);
         code = sum.reason == CTN_CONVERGED ? CTN_EXIT_OK : CTN_EXIT_NOCONV;
         if (code) fprintf(stderr, "catena: %s: not converged: %s\n", a.model, ctn_reason_name(sum.reason));
+        else ctn_print_stability(stderr, a.model, s);
     }
     ctn_solution_destroy(&s);
     ctn_model_destroy(&m);

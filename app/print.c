@@ -165,3 +165,17 @@ void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s)
     print_cables(out, m, s);
     print_reactions(out, m, s);
 }
+
+void ctn_print_stability(FILE *out, const char *model, const ctn_solution *s)
+{
+    ctn_stability st;
+    if (ctn_solution_stability(s, &st) || st.stable) return;
+    char where[64] = "";
+    if (st.node) snprintf(where, sizeof where, " at node %d, direction %c", st.node, "xyz"[st.dir < 3 ? st.dir : 0]);
+    if (st.semidefinite)
+        fprintf(out, "catena: %s: warning: the equilibrium is not stable: the tangent stiffness is singular "
+                     "(semi-definite)%s: a node held only by slack members, or a mechanism\n", model, where);
+    else
+        fprintf(out, "catena: %s: warning: unstable equilibrium: the tangent stiffness has %ld negative "
+                     "eigenvalue(s); the weakest mode moves%s\n", model, st.negative, where);
+}

@@ -128,6 +128,9 @@ typedef struct ctn_solve_summary {
                              over the free DOFs of the sum of the members' |N| and |f_ext|);
                              a floor above 1e-4 of it resolves no equilibrium */
     size_t floor_step;    /* floor: the load step (0-based) where it was declared */
+    int stable;           /* converged: 1 if the tangent at the solution is positive
+                             definite, 0 if not (ctn_solution_stability says why); -1 when
+                             not checked (not converged) */
     int preshaped;        /* slack chains placed on the arc of their unstressed length
                              before the first step (CTN_METHOD_AUTO) */
     int relaxed;          /* increments that began with a compression-free relaxation
@@ -177,6 +180,10 @@ typedef struct ctn_stability {
     int dir;              /* its direction 0 = x, 1 = y, 2 = z, -1 if none */
 } ctn_stability;
 int ctn_problem_stability(ctn_problem *p, const ctn_solution *s, ctn_stability *out);
+/* The stability of a converged solution, checked by ctn_problem_solve (free when the
+ * last Newton iteration's LL' factorization succeeded, else by ctn_problem_stability).
+ * CTN_ERR_INVALID when not checked (the solve did not converge). */
+int ctn_solution_stability(const ctn_solution *s, ctn_stability *out);
 
 /* Solve the model: ctn_problem_create + ctn_problem_solve + destroy. opt NULL: defaults. */
 int ctn_solve(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options *opt,

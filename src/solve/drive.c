@@ -117,6 +117,26 @@ static void start_state(ctn_problem *p, double *d)
         if (p->a->map.eq[i] < 0) d[i] = 0.0;
 }
 
+/* The stability of the converged state. The last Newton iteration factored the tangent a
+ * correction away from it: if that was LL' of K itself and it succeeded, the state is
+ * stable at no cost (the tangents differ by the round-off of the last correction);
+ * otherwise the problem checks it. */
+static int check_stability(ctn_problem *p, ctn_solution *s)
+{
+    s->sum.stable = 1;
+    if (p->last_definite) {
+        memset(&s->stability, 0, sizeof s->stability);
+        s->stability.stable = 1;
+        s->stability.dir = -1;
+        return CTN_OK;
+    }
+    ctn_solve_summary *keep = p->sum;
+    int rc = ctn_problem_stability(p, s, &s->stability);
+    p->sum = keep;
+    s->sum.stable = s->stability.stable;
+    return rc;
+}
+
 int ctn_problem_solve(ctn_problem *p, ctn_solution **out)
 {
     if (!p || !out) return p ? ctn_error(p->ctx, CTN_ERR_INVALID, "ctn_problem_solve: out is NULL") : CTN_ERR_INVALID;
@@ -134,6 +154,7 @@ int ctn_problem_solve(ctn_problem *p, ctn_solution **out)
         if (p->strategy->preshape) rc = ctn_preshape(p, d, &s->sum.preshaped);
         if (!rc) rc = check_start(p, d);
         if (!rc) rc = p->strategy->run(p, s, d);
+        if (!rc && s->sum.reason == CTN_CONVERGED) rc = check_stability(p, s);
         if (!s->sum.fext_norm) s->sum.fext_norm = ctn_problem_fref(p);
         s->sum.ordering = ctn_linsolve_ordering(p->ls);
         s->sum.ndof = p->ndof;

@@ -152,6 +152,7 @@ int ctn_problem_factor(ctn_problem *p, double shift, int *posdef, long *fail_col
     p->sum->factorizations++;
     *posdef = info.ok;
     *fail_col = info.fail_col;
+    p->last_definite = info.ok && shift == 0 && !ctn_linsolve_type(p->ls)->indefinite;
     return rc;
 }
 

@@ -50,6 +50,8 @@ struct ctn_problem {
     double lref;               /* bounding-box diagonal of the reference geometry */
     double kscale;             /* largest element stiffness scale */
     double t_setup;            /* wall seconds of the setup */
+    int last_definite;         /* the last factorization was LL' of K itself (no shift)
+                                  and succeeded: K was positive definite there */
     ctn_solve_summary *sum;    /* where timings accumulate (the current solution's) */
 };
 

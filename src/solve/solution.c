@@ -13,6 +13,8 @@ int ctn_solution_create(ctn_ctx *ctx, size_t nn, size_t ne, ctn_solution **out)
     (*out)->nn = nn;
     (*out)->ne = ne;
     (*out)->sum.fail_dir = -1;
+    (*out)->sum.stable = -1;
+    (*out)->stability.dir = -1;
     return CTN_OK;
 }
 
@@ -122,4 +124,11 @@ void ctn_solution_drop_step(ctn_solution *s)
     ctn_free(st->d);
     ctn_free(st->react);
     ctn_free(st->elem);
+}
+
+int ctn_solution_stability(const ctn_solution *s, ctn_stability *out)
+{
+    if (!s || !out || s->sum.stable < 0) return CTN_ERR_INVALID;
+    *out = s->stability;
+    return CTN_OK;
 }

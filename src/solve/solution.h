@@ -21,6 +21,7 @@ struct ctn_solution {
     size_t nn, ne;
     ctn_step_state *steps;
     size_t nsteps, capsteps;
+    ctn_stability stability;   /* of the last step's state, when checked */
     double *rhist, *dhist;     /* residual and increment norms */
     size_t nr, nd, capr, capd;
 };

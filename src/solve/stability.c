@@ -5,6 +5,7 @@
  * within 1e-12 of the largest diagonal entry. */
 #include "solve/problem.h"
 
+#include <math.h>
 #include <string.h>
 
 /* The tangent's values at the state of the solution's last step. */
@@ -25,6 +26,43 @@ static void locate(const ctn_problem *p, long col, ctn_stability *out)
     out->dir = p->a->map.dof_dir[col];
 }
 
+/* y = K x with K's upper triangle (pattern order). */
+static void matvec(const ctn_problem *p, const double *x, double *y)
+{
+    const int *cp = p->a->colptr, *ri = p->a->rowind;
+    memset(y, 0, p->ndof * sizeof(double));
+    for (size_t c = 0; c < p->ndof; c++)
+        for (int k = cp[c]; k < cp[c + 1]; k++) {
+            size_t r = (size_t)ri[k];
+            y[r] += p->Kx[k] * x[c];
+            if (r != c) y[c] += p->Kx[k] * x[r];
+        }
+}
+
+/* The weakest mode: inverse iteration x <- K^-1 x (LDL' factor) converges to the
+ * eigenvector of the eigenvalue of least magnitude. When that eigenvalue (its Rayleigh
+ * quotient) is negative, its largest component names the node and direction that fall;
+ * otherwise the first negative pivot stays the report. */
+static int weakest_mode(ctn_problem *p, ctn_linsolve *ldl, ctn_stability *out)
+{
+    double *x = p->r, *y = p->w;                    /* ndof scratch, free after a solve */
+    for (size_t i = 0; i < p->ndof; i++) x[i] = 1.0 + 1e-3 * (double)(i % 7);
+    for (int it = 0; it < 30; it++) {
+        int rc = ctn_linsolve_solve(ldl, x, x);
+        if (rc) return rc;
+        double n = ctn_vec_norm(x, p->ndof);
+        if (!(n > 0) || !isfinite(n)) return CTN_OK;
+        for (size_t i = 0; i < p->ndof; i++) x[i] /= n;
+    }
+    matvec(p, x, y);
+    if (!(ctn_vec_dot(x, y, p->ndof) < 0)) return CTN_OK;
+    size_t imax = 0;
+    for (size_t i = 1; i < p->ndof; i++)
+        if (fabs(x[i]) > fabs(x[imax])) imax = i;
+    locate(p, (long)imax, out);
+    return CTN_OK;
+}
+
 /* Not definite: count the inertia with LDL'. */
 static int inertia(ctn_problem *p, ctn_stability *out)
 {
@@ -38,6 +76,7 @@ static int inertia(ctn_problem *p, ctn_stability *out)
         rc = ctn_linsolve_inertia(ldl, 1e-12 * ctn_problem_max_diag(p), &out->negative, &zero, &first);
         out->semidefinite = !rc && out->negative == 0 && zero > 0;
         locate(p, first, out);
+        if (!rc && out->negative > 0) rc = weakest_mode(p, ldl, out);
     } else if (!rc) {
         out->semidefinite = 1;                      /* an exactly zero pivot */
         locate(p, info.fail_col, out);

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# tests/cli/trust.sh CATENA: answers that can be trusted (issue 7), end to end.
+#   - an unstable equilibrium (a mast held by two guys in one plane) exits 0 with a
+#     warning on stderr containing "unstable", the node and the direction, and JSON
+#     "stable": false when the JSON has the key; a stable one warns nothing;
+#   - a semi-definite one (a node held only by slack members) is "not stable" with its
+#     own wording and the node;
+#   - near-rigid members (E = 2e22) never exit 0: exit 3 with the round-off reason.
+# Prints "N passed, N failed"; exit 1 on any failure.
+set -u
+
+. "$(dirname "$0")/lib/common.sh"
+cli_init trust "${1:-}"
+M=tests/models/trust
+
+"$BIN" solve "$M/mast_two_guys.cable" -q 2>"$T/err"; rc=$?
+[ $rc -eq 0 ] || WHY+=("exit $rc, expected 0")
+grep -q "unstable" "$T/err" || WHY+=("no 'unstable' warning: $(cat "$T/err")")
+grep -q "node 2, direction y" "$T/err" || WHY+=("the warning does not name node 2, direction y")
+finish "unstable mast warns"
+
+"$BIN" solve "$M/mast_two_guys.cable" --json >"$T/out.json" 2>/dev/null
+if grep -q '"stable"' "$T/out.json"; then
+    grep -q '"stable":[[:space:]]*false' "$T/out.json" || WHY+=("JSON stable is not false")
+fi
+finish "unstable mast JSON"
+
+"$BIN" solve "$M/mast_four_guys.cable" -q 2>"$T/err"; rc=$?
+[ $rc -eq 0 ] || WHY+=("exit $rc")
+[ -s "$T/err" ] && WHY+=("a stable mast warned: $(cat "$T/err")")
+finish "stable mast is quiet"
+
+"$BIN" solve "$M/slack_held_node.cable" -q 2>"$T/err"; rc=$?
+[ $rc -eq 0 ] || WHY+=("exit $rc, expected 0")
+grep -q "not stable" "$T/err" || WHY+=("no 'not stable' warning: $(cat "$T/err")")
+grep -q "semi-definite" "$T/err" || WHY+=("the warning does not say semi-definite")
+grep -q "node 4" "$T/err" || WHY+=("the warning does not name node 4")
+finish "slack-held node"
+
+for f in paper_E2e22 mast_rigid_strut; do
+    "$BIN" solve "$M/$f.cable" -q 2>"$T/err"; rc=$?
+    [ $rc -eq 3 ] || WHY+=("exit $rc, expected 3")
+    grep -q "not converged" "$T/err" || WHY+=("no 'not converged': $(cat "$T/err")")
+    finish "near-rigid $f"
+done
+"$BIN" solve "$M/paper_E2e22.cable" 2>/dev/null | grep -q "round-off floor" || WHY+=("the summary does not explain the round-off floor")
+finish "near-rigid summary"
+
+cli_summary
