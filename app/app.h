@@ -57,7 +57,7 @@ typedef struct ctn_iter_log {
     FILE *out;
     double r[2];   /* the two previous residual norms, 0 if none */
 } ctn_iter_log;
-void ctn_print_iteration(void *data, int it, double rnorm, double dnorm);
+void ctn_print_iteration(void *data, const ctn_iterate *it);
 
 /* ---- compare, study, convergence (cmd_compare.c, cmd_study.c, cmd_convergence.c) ---- */
 #include <cjson/cJSON.h>

@@ -3,15 +3,19 @@
 
 #include <math.h>
 
-void ctn_print_iteration(void *data, int it, double rnorm, double dnorm)
+void ctn_print_iteration(void *data, const ctn_iterate *it)
 {
     ctn_iter_log *lg = data;
-    fprintf(lg->out, "               %3d  %-16.6e  %-10.3e", it, rnorm, dnorm);
-    if (lg->r[0] > 0 && lg->r[1] > 0 && rnorm > 0 && lg->r[0] != lg->r[1])
-        fprintf(lg->out, "  %.2f", log(rnorm / lg->r[0]) / log(lg->r[0] / lg->r[1]));
+    fprintf(lg->out, "               %3d  %-16.6e  %-10.3e", it->iteration, it->residual, it->increment);
+    if (it->rejected) {                             /* the state stays: no order */
+        fprintf(lg->out, "  rejected (shift %.3g)\n", it->shift);
+        return;
+    }
+    if (lg->r[0] > 0 && lg->r[1] > 0 && it->residual > 0 && lg->r[0] != lg->r[1])
+        fprintf(lg->out, "  %.2f", log(it->residual / lg->r[0]) / log(lg->r[0] / lg->r[1]));
     fputc('\n', lg->out);
     lg->r[1] = lg->r[0];
-    lg->r[0] = rnorm;
+    lg->r[0] = it->residual;
 }
 
 /* Largest and smallest element force; indices in *imax, *imin. */

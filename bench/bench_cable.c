@@ -245,12 +245,15 @@ static int fext_norm(const ctn_model *m, double *out)
 
 /* ---- the solve ---- */
 
-static void monitor(void *data, int it, double rnorm, double dnorm)
+static void monitor(void *data, const ctn_iterate *i)
 {
     stamps *s = data;
     double t = now() - s->t0;
+    int it = i->iteration;
     if (it >= 1 && it <= s->cap) s->t[it - 1] = t;
-    if (s->log) fprintf(stderr, "it %4d  t %9.4f s  |r| %.6e  |dd| %.3e\n", it, t, rnorm, dnorm);
+    if (s->log)
+        fprintf(stderr, "it %4d  t %9.4f s  |r| %.6e  |dd| %.3e%s\n", it, t, i->residual, i->increment,
+                i->rejected ? "  rejected" : "");
 }
 
 static void solve_options(const bench_opts *o, stamps *st, ctn_solve_options *opt)

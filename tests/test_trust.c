@@ -107,8 +107,42 @@ static void test_stiff_resolvable(void)
     }
 }
 
+/* A single element between two fixed supports is determinate: solved, not refused. */
+static void test_determinate(void)
+{
+    const char *text = "material m E=1000 strain=engineering\n"
+                       "section s material=m A=2\n"
+                       "node 1 0 0 0 fix=xyz\n"
+                       "node 2 6 8 0 fix=xyz\n"
+                       "element 1 1 2 section=s l0=9.5\n";
+    ctn_ctx *ctx = NULL;
+    ctn_model *m = NULL;
+    ctn_solution *s = NULL;
+    ctn_ctx_create(&ctx);
+    CHECK(ctn_read_string(ctx, "bar", text, strlen(text), &m, NULL) == CTN_OK);
+    CHECK(m && ctn_solve(ctx, m, NULL, &s) == CTN_OK);
+    if (s) {
+        ctn_solve_summary sum;
+        ctn_element_state es;
+        ctn_stability st;
+        ctn_solution_summary(s, &sum);
+        CHECK(sum.reason == CTN_CONVERGED && sum.ndof == 0 && sum.stable == 1);
+        CHECK(ctn_solution_stability(s, &st) == CTN_OK && st.stable);
+        CHECK(ctn_solution_element(s, 0, &es) == CTN_OK);
+        double N = 2000 * (10 / 9.5 - 1);
+        CHECK_CLOSE(es.force, N, 1e-14, 0);
+        const double *r = ctn_solution_reactions(s);
+        CHECK_CLOSE(r[0], -0.6 * N, 1e-14, 0);
+        CHECK_CLOSE(r[4], 0.8 * N, 1e-14, 0);
+    }
+    ctn_solution_destroy(&s);
+    ctn_model_destroy(&m);
+    ctn_ctx_destroy(&ctx);
+}
+
 int main(void)
 {
+    test_determinate();
     test_near_rigid();
     test_stiff_resolvable();
     CHECK_DONE();

@@ -44,9 +44,19 @@ typedef enum ctn_method {
     CTN_METHOD_ARCLENGTH = 2  /* Crisfield's cylindrical arc-length: traces limit points */
 } ctn_method;
 
-/* Called after every Newton iteration (the iteration log). it = 1, 2, ...;
- * rnorm = |f_ext - f_int| after the step; dnorm = |dd| of the step. */
-typedef void (*ctn_monitor_fn)(void *data, int it, double rnorm, double dnorm);
+/* One Newton iteration, as the monitor sees it. */
+typedef struct ctn_iterate {
+    int iteration;        /* 1, 2, ... over the whole run */
+    double residual;      /* |f_ext - f_int| after the iteration (a rejected one: at the
+                             state kept, its start) [force] */
+    double increment;     /* |alpha dd| of the step taken; of the trial step when rejected
+                             [length] */
+    int rejected;         /* 1: the step was tried and not taken (globalized Newton raises
+                             its shift and tries again) */
+    double shift;         /* Levenberg-Marquardt shift of the tangent used (0: Newton's) */
+} ctn_iterate;
+/* Called after every Newton iteration (the iteration log). */
+typedef void (*ctn_monitor_fn)(void *data, const ctn_iterate *it);
 
 /* Solver options; ctn_solve_options_default() fills the defaults. */
 typedef struct ctn_solve_options {

@@ -146,19 +146,21 @@ static int iteration(corrector *c, ctn_reason *why)
     if (keep) memcpy(e->dsave, c->d, e->ns * sizeof(double));
     rc = c->globalized ? lm_step(c, &alpha, &rn, &pi) : newton_search(c, &alpha, &rn);
     if (rc) return rc;
+    double shift = c->mu;
     if (alpha == 0) {                            /* back to the start of the iteration */
+        double tried = ctn_vec_norm(e->dd, e->ndof);
         if (keep) memcpy(c->d, e->dsave, e->ns * sizeof(double));
         else ctn_problem_axpy(e, c->d, -1.0, e->dd); /* pure Newton: undo the step */
         int valid;
         if ((rc = ctn_problem_residual(e, c->d, 1, &c->rn, NULL, &valid)) || !valid) return rc;
         if (!c->globalized) { *why = e->opt.linesearch ? CTN_DIVERGED_LINESEARCH : CTN_DIVERGED_NANORINF; return CTN_OK; }
         raise_mu(c);
-        return ctn_problem_record(e, c->s, c->rn, 0.0);
+        return ctn_problem_record_ex(e, c->s, c->rn, tried, 1, shift);
     }
     c->rn = rn;
     c->pi = pi;
     c->accepted = 1;
-    return ctn_problem_record(e, c->s, rn, alpha * ctn_vec_norm(e->dd, e->ndof));
+    return ctn_problem_record_ex(e, c->s, rn, alpha * ctn_vec_norm(e->dd, e->ndof), 0, shift);
 }
 
 /* The Newton correction is at the resolution of the coordinates with |r| above tol |f_ext|:
@@ -199,6 +201,10 @@ static int correct(ctn_problem *e, ctn_solution *s, double *d, ctn_reason *reaso
     if (rc || !valid) return rc;
     if ((rc = ctn_solution_push_residual(s, c.rn))) return rc;
     s->sum.residual = c.rn;
+    if (e->ndof == 0) {                              /* determinate: nothing moves */
+        *reason = CTN_CONVERGED;
+        return CTN_OK;
+    }
     double fref = ctn_problem_fref(e);                /* once per increment */
     int stalls = 0;
     c.dmax = ctn_vec_norm(d, e->ns);

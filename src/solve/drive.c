@@ -124,7 +124,7 @@ static void start_state(ctn_problem *p, double *d)
 static int check_stability(ctn_problem *p, ctn_solution *s)
 {
     s->sum.stable = 1;
-    if (p->last_definite) {
+    if (p->last_definite || p->ndof == 0) {
         memset(&s->stability, 0, sizeof s->stability);
         s->stability.stable = 1;
         s->stability.dir = -1;
@@ -156,9 +156,9 @@ int ctn_problem_solve(ctn_problem *p, ctn_solution **out)
         if (!rc) rc = p->strategy->run(p, s, d);
         if (!rc && s->sum.reason == CTN_CONVERGED) rc = check_stability(p, s);
         if (!s->sum.fext_norm) s->sum.fext_norm = ctn_problem_fref(p);
-        s->sum.ordering = ctn_linsolve_ordering(p->ls);
+        s->sum.ordering = p->ls ? ctn_linsolve_ordering(p->ls) : CTN_ORDER_NATURAL;
         s->sum.ndof = p->ndof;
-        s->sum.nnz_factor = ctn_linsolve_factor_nnz(p->ls);
+        s->sum.nnz_factor = p->ls ? ctn_linsolve_factor_nnz(p->ls) : 0;
     }
     ctn_free(d);
     p->sum = NULL;

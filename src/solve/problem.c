@@ -39,14 +39,13 @@ static int setup(ctn_problem *p)
     if (rc) return rc;
     p->ns = p->a->map.nstate;
     p->ndof = p->a->ndof;
-    if (p->ndof == 0) return ctn_error(p->ctx, CTN_ERR_MODEL, "%s: the model has no free degree of freedom", p->m->file);
-    const char *name = p->opt.linear_solver ? p->opt.linear_solver : p->strategy->linear_solver;
-    ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
-    if ((rc = ctn_linsolve_create(p->ctx, name, &pat, p->opt.ordering, &p->ls))) return rc;
     if ((rc = alloc_vectors(p))) return rc;
     p->lref = model_size(p->m);
     p->kscale = p->a->kscale;
-    return CTN_OK;
+    if (p->ndof == 0) return CTN_OK;        /* statically determinate: nothing to factor */
+    const char *name = p->opt.linear_solver ? p->opt.linear_solver : p->strategy->linear_solver;
+    ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
+    return ctn_linsolve_create(p->ctx, name, &pat, p->opt.ordering, &p->ls);
 }
 
 int ctn_problem_create(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options *opt,
@@ -146,20 +145,20 @@ double ctn_problem_fref(const ctn_problem *p)
 int ctn_problem_factor(ctn_problem *p, double shift, int *posdef, long *fail_col)
 {
     double t0 = ctn_clock();
-    ctn_factor_info info;
-    int rc = ctn_linsolve_factor(p->ls, p->Kx, shift, &info);
+    ctn_factor_info info = { 1, -1 };
+    int rc = p->ls ? ctn_linsolve_factor(p->ls, p->Kx, shift, &info) : CTN_OK;
     p->sum->t_factor += ctn_clock() - t0;
     p->sum->factorizations++;
     *posdef = info.ok;
     *fail_col = info.fail_col;
-    p->last_definite = info.ok && shift == 0 && !ctn_linsolve_type(p->ls)->indefinite;
+    p->last_definite = info.ok && shift == 0 && (!p->ls || !ctn_linsolve_type(p->ls)->indefinite);
     return rc;
 }
 
 int ctn_problem_linsolve(ctn_problem *p, const double *b, double *x)
 {
     double t0 = ctn_clock();
-    int rc = ctn_linsolve_solve(p->ls, b, x);
+    int rc = p->ls ? ctn_linsolve_solve(p->ls, b, x) : CTN_OK;
     p->sum->t_solve += ctn_clock() - t0;
     p->sum->solves++;
     return rc;

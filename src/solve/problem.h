@@ -79,8 +79,12 @@ void ctn_problem_axpy(const ctn_problem *p, double *d, double alpha, const doubl
 /* Store d, its reactions (f_int - f_ext at the current f_ext) and element states in step
  * k of the solution. */
 int ctn_problem_fill_step(ctn_problem *p, ctn_solution *s, size_t k, const double *d);
-/* Record an iteration in the solution's history (grows it; CTN_ERR_NOMEM). */
+/* Record an iteration in the solution's history (grows it; CTN_ERR_NOMEM) and tell the
+ * monitor. _ex: a rejected trial step (dnorm its norm; the history keeps 0) and the
+ * tangent's shift. */
 int ctn_problem_record(ctn_problem *p, ctn_solution *s, double rnorm, double dnorm);
+int ctn_problem_record_ex(ctn_problem *p, ctn_solution *s, double rnorm, double dnorm, int rejected,
+                          double shift);
 
 /* Newton corrector at fixed t from d (modified in place). On return *reason is
  * CTN_CONVERGED or why it stopped; the state d is the last accepted iterate. */

@@ -6,13 +6,22 @@
 
 int ctn_problem_record(ctn_problem *p, ctn_solution *s, double rnorm, double dnorm)
 {
+    return ctn_problem_record_ex(p, s, rnorm, dnorm, 0, 0.0);
+}
+
+int ctn_problem_record_ex(ctn_problem *p, ctn_solution *s, double rnorm, double dnorm, int rejected,
+                          double shift)
+{
     int rc = ctn_solution_push_residual(s, rnorm);
-    if (!rc) rc = ctn_solution_push_increment(s, dnorm);
+    if (!rc) rc = ctn_solution_push_increment(s, rejected ? 0.0 : dnorm);
     if (rc) return rc;
     s->sum.iterations++;
     s->sum.residual = rnorm;
-    s->sum.increment = dnorm;
-    if (p->opt.monitor) p->opt.monitor(p->opt.monitor_data, s->sum.iterations, rnorm, dnorm);
+    s->sum.increment = rejected ? 0.0 : dnorm;
+    if (p->opt.monitor) {
+        ctn_iterate it = { s->sum.iterations, rnorm, dnorm, rejected, shift };
+        p->opt.monitor(p->opt.monitor_data, &it);
+    }
     return CTN_OK;
 }
 

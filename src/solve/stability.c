@@ -90,6 +90,10 @@ int ctn_problem_stability(ctn_problem *p, const ctn_solution *s, ctn_stability *
     if (!p || !s || !out) return p ? ctn_error(p->ctx, CTN_ERR_INVALID, "ctn_problem_stability: bad arguments") : CTN_ERR_INVALID;
     memset(out, 0, sizeof *out);
     out->dir = -1;
+    if (p->ndof == 0) {                            /* nothing can move */
+        out->stable = 1;
+        return CTN_OK;
+    }
     ctn_solve_summary scratch;
     memset(&scratch, 0, sizeof scratch);
     double *d = ctn_calloc(p->ctx, p->ns, sizeof(double));
