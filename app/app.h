@@ -49,6 +49,9 @@ int ctn_app_fail(ctn_ctx *ctx, int status);
 /* Warn (on out) when a converged solution is not stable: unstable (negative eigenvalues
  * of the tangent) or semi-definite (a zero one), with the node and direction. */
 void ctn_print_stability(FILE *out, const char *model, const ctn_solution *s);
+/* Warn (on out) about answers no cable gives: a strain above 10 %, a deformed model more
+ * than 10,000 km across (usually a unit or input error). */
+void ctn_print_warnings(FILE *out, const char *model, const ctn_model *m, const ctn_solution *s);
 /* Human-readable result summary. */
 void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s);
 /* Iteration log state: the monitor prints one line per Newton iteration with the

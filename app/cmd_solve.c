@@ -58,6 +58,7 @@ int ctn_cmd_solve(int argc, char **argv)
         code = sum.reason == CTN_CONVERGED ? CTN_EXIT_OK : CTN_EXIT_NOCONV;
         if (code) fprintf(stderr, "catena: %s: not converged: %s\n", a.model, ctn_reason_name(sum.reason));
         else ctn_print_stability(stderr, a.model, s);
+        ctn_print_warnings(stderr, a.model, m, s);
     }
     ctn_solution_destroy(&s);
     ctn_model_destroy(&m);

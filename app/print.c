@@ -2,6 +2,7 @@
 #include "app.h"
 
 #include <math.h>
+#include <string.h>
 
 void ctn_print_iteration(void *data, const ctn_iterate *it)
 {
@@ -182,4 +183,49 @@ void ctn_print_stability(FILE *out, const char *model, const ctn_solution *s)
     else
         fprintf(out, "catena: %s: warning: unstable equilibrium: the tangent stiffness has %ld negative "
                      "eigenvalue(s); the weakest mode moves%s\n", model, st.negative, where);
+}
+
+/* Largest |strain| of the members with a material, and its element index. */
+static double max_strain(const ctn_model *m, const ctn_solution *s, size_t *at)
+{
+    double best = 0;
+    *at = 0;
+    for (size_t e = 0; e < ctn_model_element_count(m); e++) {
+        ctn_element_info info;
+        ctn_element_state st;
+        if (ctn_model_element(m, e, &info) || !info.has_section || ctn_solution_element(s, e, &st)) continue;
+        if (fabs(st.strain) > best) {
+            best = fabs(st.strain);
+            *at = e;
+        }
+    }
+    return best;
+}
+
+/* Largest coordinate of the deformed model, in metres when the model has units. */
+static double max_extent(const ctn_model *m, const ctn_solution *s)
+{
+    const double *d = ctn_solution_displacements(s);
+    double big = 0, scale = !strcmp(ctn_model_length_unit(m), "mm") ? 1e-3 : 1.0;
+    for (size_t i = 0; i < ctn_model_node_count(m); i++) {
+        ctn_node_info n;
+        ctn_model_node(m, i, &n);
+        for (int k = 0; k < 3; k++) big = fmax(big, fabs(n.X[k] + d[3 * i + (size_t)k]));
+    }
+    return big * scale;
+}
+
+void ctn_print_warnings(FILE *out, const char *model, const ctn_model *m, const ctn_solution *s)
+{
+    size_t at;
+    double eps = max_strain(m, s, &at), big = max_extent(m, s);
+    if (eps > 0.1) {
+        ctn_element_info info;
+        ctn_model_element(m, at, &info);
+        fprintf(out, "catena: %s: warning: element %d has a strain of %.3g (above 10 %%): far beyond an elastic "
+                     "cable; check E, the loads and the units\n", model, info.id, eps);
+    }
+    if (big > 1e7)
+        fprintf(out, "catena: %s: warning: the deformed model reaches %.3g m from the origin (over 10,000 km); "
+                     "check the lengths, the loads and the units\n", model, big);
 }

@@ -46,4 +46,21 @@ done
 "$BIN" solve "$M/paper_E2e22.cable" 2>/dev/null | grep -q "round-off floor" || WHY+=("the summary does not explain the round-off floor")
 finish "near-rigid summary"
 
+"$BIN" solve "$M/strain_absurd.cable" -q 2>"$T/err"; rc=$?
+[ $rc -eq 0 ] || WHY+=("exit $rc")
+grep -q "warning: element 1 has a strain of 0.37" "$T/err" || WHY+=("no strain warning: $(cat "$T/err")")
+finish "absurd strain warns"
+
+"$BIN" solve "$M/span_2e36.cable" -q 2>"$T/err"
+grep -q "over 10,000 km" "$T/err" || WHY+=("no size warning: $(cat "$T/err")")
+finish "absurd size warns"
+
+"$BIN" solve "$M/determinate.cable" -q 2>"$T/err"; rc=$?
+[ $rc -eq 0 ] || WHY+=("exit $rc: $(cat "$T/err")")
+[ -s "$T/err" ] && WHY+=("stderr not empty: $(cat "$T/err")")
+finish "determinate model solved"
+
+"$BIN" solve "$M/paper_E2e14.cable" 2>/dev/null | grep -q "rejected (shift" || WHY+=("rejected steps not marked in the log")
+finish "rejected steps marked"
+
 cli_summary
