@@ -155,10 +155,18 @@ int ctn_model_step_substeps(const ctn_model *m, size_t k);
  * displacements u, 3 per node each (either may be NULL). Self-weight is in every step. */
 int ctn_model_step_loads(const ctn_model *m, size_t k, double *f, double *u);
 /* Uniform load q [force/length] per unit horizontal projection (the plane normal to
- * gravity) on elements with ids first..last, along gravity's direction. The projection
- * is taken in the reference geometry (a dead load, as from a deck hung at fixed
- * stations); half of each element's share goes to each of its nodes. */
-int ctn_model_add_hload(ctn_model *m, double q, int first, int last);
+ * gravity) on elements with ids first..last, along gravity's direction; half of each
+ * element's share goes to each of its nodes. The projection is the element's current
+ * one by default (CTN_PROJECT_DEFORMED: the load follows the geometry, as a deck's weight
+ * on a suspension cable whatever its start shape; its derivative is in the tangent), or
+ * the reference one (CTN_PROJECT_REFERENCE: a dead load, as from hangers at fixed
+ * stations). Belongs to the current step. */
+typedef enum ctn_projection {
+    CTN_PROJECT_DEFORMED = 0,
+    CTN_PROJECT_REFERENCE = 1
+} ctn_projection;
+int ctn_model_add_hload(ctn_model *m, double q, int first, int last);   /* deformed */
+int ctn_model_add_hload_projected(ctn_model *m, double q, int first, int last, ctn_projection proj);
 /* Reference "file:line" recorded with the next definitions, used in later validation
  * messages (the reader sets it; API users may ignore it). file is copied. */
 int ctn_model_set_origin(ctn_model *m, const char *file, int line);
@@ -214,7 +222,8 @@ const char *ctn_model_force_unit(const ctn_model *m);
 const char *ctn_model_length_unit(const ctn_model *m);
 double ctn_model_mpa_factor(const ctn_model *m);
 /* External nodal force vector at the end of the last step, 3 per node (concentrated
- * + self-weight + horizontal loads, lumped), written to f (length 3 * node count). */
+ * + self-weight + horizontal loads, lumped; hloads on the reference projection: on the
+ * deformed one they depend on the solution), written to f (length 3 * node count). */
 int ctn_model_external_forces(const ctn_model *m, double *f);
 /* Check the whole model (called by the solver): sections with weight need gravity,
  * at least one support, ... */

@@ -26,6 +26,9 @@ struct ctn_compare {
     double *poly[2];       /* [3 n + 2] funicular polygons (inextensible, elastic):
                               joints x0 y0 ... xn yn, then the n segment tensions */
     double *fea;           /* [3 n + 2] FEA: node positions, then element forces */
+    int follow;            /* the hload is on the deformed projection: the polygons take
+                              the loads of the FEA's geometry (follow_loads.c) */
+    double *Pref;          /* [2 (n + 1)] then: P on the reference geometry */
 };
 
 /* Span detection (span.c): fills span.n, support, generated, node, elem, l0, EA and
@@ -33,6 +36,9 @@ struct ctn_compare {
 int ctn_cmp_find_span(ctn_compare *c, const ctn_model *m);
 /* Geometry and loads (span_loads.c): plane, l, h, w, q, loads flags, P, W. */
 int ctn_cmp_span_loads(ctn_compare *c, const ctn_model *m);
+/* An hload on the deformed projection: P at the deformed positions x (3 per model node)
+ * of the FEA, and the polygons solved again with them (follow_loads.c). */
+int ctn_cmp_follow_loads(ctn_compare *c, const double *d);
 /* Closed forms (forms.c): every form that applies, into has / v / cat ... poly. */
 int ctn_cmp_solve_forms(ctn_compare *c);
 /* Values of a polyline of n segments (xy [2 (n + 1)], forces N [n]) in the span's

@@ -1,5 +1,6 @@
 /* The comparison object: creation, access, names of the forms. */
 #include "compare/cmp.h"
+#include "model/model.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -30,6 +31,7 @@ int ctn_compare_create(ctn_ctx *ctx, const ctn_model *m, ctn_compare **out)
     if (!c) return CTN_ERR_NOMEM;
     c->ctx = ctx;
     units(&c->span, m);
+    for (size_t h = 0; h < m->hloads.n; h++) c->follow |= !m->hloads.v[h].reference;
     int rc = ctn_cmp_find_span(c, m);
     if (!rc) rc = ctn_cmp_span_loads(c, m);
     if (!rc) rc = ctn_cmp_solve_forms(c);
@@ -48,6 +50,7 @@ void ctn_compare_destroy(ctn_compare **c)
     ctn_free(p->EA);
     ctn_free(p->Xref);
     ctn_free(p->P);
+    ctn_free(p->Pref);
     ctn_free(p->poly[0]);
     ctn_free(p->poly[1]);
     ctn_free(p->fea);

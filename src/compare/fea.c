@@ -18,6 +18,8 @@ int ctn_compare_set_fea(ctn_compare *c, const ctn_solution *s)
     c->has &= ~(1u << CTN_FORM_FEA);
     if (!c->fea && !(c->fea = ctn_malloc(c->ctx, 3 * n + 2, sizeof(double)))) return CTN_ERR_NOMEM;
     const double *d = ctn_solution_displacements(s), *react = ctn_solution_reactions(s);
+    int rc = c->follow && (c->span.loads & CTN_SPAN_HLOAD) ? ctn_cmp_follow_loads(c, d) : CTN_OK;
+    if (rc) return rc;
     double *xy = c->fea, *N = xy + 2 * (n + 1);
     for (size_t j = 0; j <= n; j++) {
         double p[3];

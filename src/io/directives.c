@@ -209,11 +209,14 @@ static int d_hload(ctn_line *l)
 {
     double q = 0;
     int first = 0, last = 0;
-    int rc = ctn_parse_positional(l, 0, "hload q=LOAD [elements=FIRST-LAST|ID|all]");
+    static const char *const projections[] = { "deformed", "reference" };
+    int proj = CTN_PROJECT_DEFORMED;
+    int rc = ctn_parse_positional(l, 0, "hload q=LOAD [elements=FIRST-LAST|ID|all] [projection=deformed|reference]");
     if (!rc) rc = ctn_parse_key_num(l, 1, "q", 1, &q);
     if (!rc) rc = parse_range(l, ctn_parse_key(l, 1, "elements"), &first, &last);
+    if (!rc) rc = key_word(l, "projection", projections, 2, &proj);
     if (!rc) rc = ctn_parse_leftovers(l, 1, "hload");
-    return rc ? rc : ctn_model_add_hload(l->m, q, first, last);
+    return rc ? rc : ctn_model_add_hload_projected(l->m, q, first, last, (ctn_projection)proj);
 }
 
 static int d_solve(ctn_line *l)

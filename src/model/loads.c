@@ -29,7 +29,7 @@ static void add_segment_hload(const ctn_model *m, double q, const double u[3], i
 
 /* Horizontal loads: q times the reference projection of each segment of an element on
  * the plane normal to gravity, half to each of its nodes, along gravity's direction. */
-static void add_hloads(const ctn_model *m, int step, double *f)
+static void add_hloads(const ctn_model *m, int step, int dead_only, double *f)
 {
     double g = sqrt(m->gravity[0] * m->gravity[0] + m->gravity[1] * m->gravity[1] +
                     m->gravity[2] * m->gravity[2]);
@@ -37,7 +37,7 @@ static void add_hloads(const ctn_model *m, int step, double *f)
     double u[3] = { m->gravity[0] / g, m->gravity[1] / g, m->gravity[2] / g };
     for (size_t h = 0; h < m->hloads.n; h++) {
         const ctn_hload *hl = &m->hloads.v[h];
-        if (hl->step > step) continue;
+        if (hl->step > step || (dead_only && !hl->reference)) continue;
         for (size_t i = 0; i < m->elements.n; i++) {
             const ctn_element *e = &m->elements.v[i];
             if (e->id < hl->first || e->id > hl->last) continue;
@@ -58,6 +58,11 @@ const char *ctn_model_step_name(const ctn_model *m, size_t k)
 
 int ctn_model_step_loads(const ctn_model *m, size_t k, double *f, double *u)
 {
+    return ctn_model_step_loads_ex(m, k, 0, f, u);
+}
+
+int ctn_model_step_loads_ex(const ctn_model *m, size_t k, int dead_only, double *f, double *u)
+{
     if (!m || k >= ctn_model_step_count(m)) return CTN_ERR_INVALID;
     int step = (int)k + 1;                        /* records of steps <= k + 1 (0: base) */
     size_t n3 = 3 * m->nodes.n;
@@ -67,7 +72,7 @@ int ctn_model_step_loads(const ctn_model *m, size_t k, double *f, double *u)
             for (int j = 0; j < 3 && m->ploads.v[i].step <= step; j++)
                 f[3 * (size_t)m->ploads.v[i].node + (size_t)j] += m->ploads.v[i].F[j];
         add_element_loads(m, f);
-        add_hloads(m, step, f);
+        add_hloads(m, step, dead_only, f);
     }
     if (u) {
         memset(u, 0, n3 * sizeof(double));

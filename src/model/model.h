@@ -43,6 +43,7 @@ typedef struct ctn_element {
 
 typedef struct ctn_hload {
     double q;
+    int reference;   /* 1: on the reference projection (a dead load); 0: the deformed one */
     int first, last; /* element ids, inclusive */
     int line;
     int step;        /* 0: before any step directive, else the step number */
@@ -111,6 +112,9 @@ static inline const int *ctn_elem_nodes(const ctn_model *m, size_t e)
     return m->conn.v + m->elements.v[e].conn;
 }
 
+/* ctn_model_step_loads; dead_only: without the hloads on the deformed projection (the
+ * solver adds those at each state). */
+int ctn_model_step_loads_ex(const ctn_model *m, size_t k, int dead_only, double *f, double *u);
 /* Node index of user id, or a model error "undefined node ID". */
 int ctn_model_node_lookup(const ctn_model *m, int id, int *index);
 /* Copy a caller's versioned spec struct (its first field is its size) into dst, whose

@@ -74,13 +74,21 @@ int ctn_model_add_displacement(ctn_model *m, int node, unsigned dofs, const doub
 
 int ctn_model_add_hload(ctn_model *m, double q, int first, int last)
 {
+    return ctn_model_add_hload_projected(m, q, first, last, CTN_PROJECT_DEFORMED);
+}
+
+int ctn_model_add_hload_projected(ctn_model *m, double q, int first, int last, ctn_projection proj)
+{
     if (!m) return CTN_ERR_INVALID;
+    if (proj != CTN_PROJECT_DEFORMED && proj != CTN_PROJECT_REFERENCE)
+        return ctn_model_error(m, CTN_ERR_MODEL, "hload: unknown projection");
     if (!isfinite(q)) return ctn_model_error(m, CTN_ERR_MODEL, "horizontal load q must be finite");
     if (first > last) return ctn_model_error(m, CTN_ERR_MODEL, "element range %d-%d is empty", first, last);
     int rc = CTN_ARRAY_RESERVE(m->ctx, m->hloads, 1);
     if (rc) return rc;
     ctn_hload *h = &m->hloads.v[m->hloads.n++];
     h->q = q;
+    h->reference = proj == CTN_PROJECT_REFERENCE;
     h->first = first;
     h->last = last;
     h->line = m->line;

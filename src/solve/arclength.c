@@ -117,6 +117,9 @@ static size_t node_of(const ctn_dofmap *map, size_t i)
 static int check_model(const ctn_problem *e)
 {
     const ctn_dofmap *map = &e->a->map;
+    if (e->fl)
+        return ctn_error(e->ctx, CTN_ERR_MODEL, "%s: arc-length traces a dead load pattern: give hload "
+                         "projection=reference, or use another method", e->m->file);
     if (ctn_model_step_count(e->m) > 1)
         return ctn_error(e->ctx, CTN_ERR_MODEL, "%s: arc-length traces one load pattern; the model has %zu steps", e->m->file, ctn_model_step_count(e->m));
     for (size_t i = 0; i < e->ns; i++)

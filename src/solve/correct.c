@@ -72,7 +72,9 @@ static int trial(corrector *c, double alpha, int fresh, double *rn, double *pi, 
     ctn_problem *e = c->e;
     if (!fresh) memcpy(c->d, e->dsave, e->ns * sizeof(double));
     ctn_problem_axpy(e, c->d, alpha, e->dd);
-    return ctn_problem_residual(e, c->d, 1, rn, pi, ok);
+    int rc = ctn_problem_residual(e, c->d, 1, rn, pi, ok);
+    if (pi && e->fl) *pi = 0.5 * *rn * *rn;          /* no potential: the residual's merit */
+    return rc;
 }
 
 /* Pure Newton, optionally with backtracking on |r|: the accepted alpha, or 0. */
@@ -112,7 +114,8 @@ static int lm_step(corrector *c, double *alpha, double *rn, double *pi)
 {
     ctn_problem *e = c->e;
     double dd2 = ctn_vec_dot(e->dd, e->dd, e->ndof);
-    double pred = 0.5 * (ctn_vec_dot(e->r, e->dd, e->ndof) + c->mu * dd2);
+    double pred = e->fl ? 0.5 * (c->rn * c->rn - c->mu * c->mu * dd2)       /* |r|^2 / 2 */
+                        : 0.5 * (ctn_vec_dot(e->r, e->dd, e->ndof) + c->mu * dd2);
     int ok, rc = trial(c, 1.0, 1, rn, pi, &ok);
     *alpha = 0;
     if (rc || !ok) return rc;
@@ -197,6 +200,7 @@ static int correct(ctn_problem *e, ctn_solution *s, double *d, ctn_reason *reaso
     c.globalized = e->strategy->globalized;
     *reason = CTN_DIVERGED_NANORINF;
     int valid, rc = ctn_problem_residual(e, d, 1, &c.rn, c.globalized ? &c.pi : NULL, &valid);
+    if (c.globalized && e->fl) c.pi = 0.5 * c.rn * c.rn;
     if (!rc && valid && c.globalized) remember(&c, c.pi);
     if (rc || !valid) return rc;
     if ((rc = ctn_solution_push_residual(s, c.rn))) return rc;

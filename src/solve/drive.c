@@ -55,6 +55,7 @@ static int run_steps(ctn_problem *p, ctn_solution *s, double *d)
     int rc = dstep ? CTN_OK : CTN_ERR_NOMEM;
     memset(p->f1, 0, p->ns * sizeof(double));
     memset(p->p1, 0, p->ns * sizeof(double));
+    ctn_follow_reset(p);
     for (size_t k = 0; !rc && k < ctn_model_step_count(p->m); k++) {
         size_t idx;
         if ((rc = ctn_solution_add_step(s, ctn_model_step_name(p->m, k), &idx))) break;

@@ -42,6 +42,7 @@ static int setup(ctn_problem *p)
     if ((rc = alloc_vectors(p))) return rc;
     p->lref = model_size(p->m);
     p->kscale = p->a->kscale;
+    if ((rc = ctn_follow_create(p))) return rc;
     if (p->ndof == 0) return CTN_OK;        /* statically determinate: nothing to factor */
     const char *name = p->opt.linear_solver ? p->opt.linear_solver : p->strategy->linear_solver;
     ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
@@ -84,6 +85,7 @@ void ctn_problem_destroy(ctn_problem **pp)
     ctn_problem *p = *pp;
     ctn_asm_destroy(&p->a);
     ctn_linsolve_destroy(&p->ls);
+    ctn_follow_destroy(&p->fl);
     double *v[] = { p->fint, p->fext, p->f0, p->f1, p->p0, p->p1, p->dsave, p->react, p->r, p->dd, p->w, p->v3, p->Kx };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
     ctn_free(p);
@@ -92,6 +94,7 @@ void ctn_problem_destroy(ctn_problem **pp)
 
 void ctn_problem_set_t(ctn_problem *p, double t, double *d)
 {
+    ctn_follow_set_t(p, t);
     const int *eq = p->a->map.eq;
     for (size_t i = 0; i < p->ns; i++) {
         p->fext[i] = p->f0[i] + t * (p->f1[i] - p->f0[i]);
@@ -101,9 +104,10 @@ void ctn_problem_set_t(ctn_problem *p, double t, double *d)
 
 void ctn_problem_step_loads(ctn_problem *p, size_t k)
 {
-    ctn_model_step_loads(p->m, k, p->v3, NULL);
+    ctn_model_step_loads_ex(p->m, k, 1, p->v3, NULL);
     ctn_dofmap_from3(&p->a->map, p->v3, p->f1);
-    ctn_model_step_loads(p->m, k, NULL, p->v3);
+    ctn_model_step_loads_ex(p->m, k, 1, NULL, p->v3);
+    ctn_follow_step(p, k);
     ctn_dofmap_from3(&p->a->map, p->v3, p->p1);
 }
 
@@ -114,14 +118,15 @@ int ctn_problem_residual(ctn_problem *p, const double *d, int with_K, double *rn
     const int *eq = p->a->map.eq;
     *valid = !ctn_asm_eval(p->a, d, p->mode, p->fint, with_K ? p->Kx : NULL, pi ? &U : NULL, NULL);
     if (*valid) {
+        const double *fh = p->fl ? ctn_follow_forces(p, d) : NULL;
         double rr = 0;
         for (size_t i = 0; i < p->ns; i++) {
             int q = eq[i];
             if (q < 0) continue;
-            double ri = p->fext[i] - p->fint[i];
+            double fe = fh ? p->fext[i] + fh[i] : p->fext[i], ri = fe - p->fint[i];
             p->r[q] = ri;
             rr += ri * ri;
-            if (pi) work += p->fext[i] * d[i];
+            if (pi) work += fe * d[i];
         }
         *rnorm = sqrt(rr);
         if (pi) *pi = U - work;
@@ -135,8 +140,10 @@ double ctn_problem_fref(const ctn_problem *p)
 {
     double ff = 0, fr = 0;
     const int *eq = p->a->map.eq;
+    const double *fh = p->fl ? ctn_follow_loads(p->fl) : NULL;
     for (size_t i = 0; i < p->ns; i++) {
-        if (eq[i] >= 0) ff += p->fext[i] * p->fext[i];
+        double fe = fh ? p->fext[i] + fh[i] : p->fext[i];
+        if (eq[i] >= 0) ff += fe * fe;
         else fr += p->fint[i] * p->fint[i];
     }
     return ff > 0 ? sqrt(ff) : fr > 0 ? sqrt(fr) : 1.0;
@@ -151,6 +158,7 @@ int ctn_problem_factor(ctn_problem *p, double shift, int *posdef, long *fail_col
     p->sum->factorizations++;
     *posdef = info.ok;
     *fail_col = info.fail_col;
+    p->shift = shift;
     p->last_definite = info.ok && shift == 0 && (!p->ls || !ctn_linsolve_type(p->ls)->indefinite);
     return rc;
 }
@@ -158,7 +166,7 @@ int ctn_problem_factor(ctn_problem *p, double shift, int *posdef, long *fail_col
 int ctn_problem_linsolve(ctn_problem *p, const double *b, double *x)
 {
     double t0 = ctn_clock();
-    int rc = p->ls ? ctn_linsolve_solve(p->ls, b, x) : CTN_OK;
+    int rc = !p->ls ? CTN_OK : p->fl ? ctn_follow_solve(p, b, x) : ctn_linsolve_solve(p->ls, b, x);
     p->sum->t_solve += ctn_clock() - t0;
     p->sum->solves++;
     return rc;

@@ -12,6 +12,7 @@
 #define CTN_SOLVE_PROBLEM_H
 
 #include "assemble/asm.h"
+#include "linalg/gmres.h"
 #include "linalg/linsolve.h"
 #include "solve/solution.h"
 
@@ -25,6 +26,9 @@ typedef struct ctn_strategy_ops {
     int maxcuts;               /* default halvings of a failed increment */
     int (*run)(ctn_problem *p, ctn_solution *s, double *d);
 } ctn_strategy_ops;
+
+/* Loads that follow the geometry (follow.c): hload on the deformed projection. */
+typedef struct ctn_follow ctn_follow;
 
 extern const ctn_strategy_ops ctn_strategy_auto, ctn_strategy_newton, ctn_strategy_arclength;
 /* The strategy of a method, NULL if none. */
@@ -52,6 +56,8 @@ struct ctn_problem {
     double t_setup;            /* wall seconds of the setup */
     int last_definite;         /* the last factorization was LL' of K itself (no shift)
                                   and succeeded: K was positive definite there */
+    double shift;              /* of the last factorization */
+    ctn_follow *fl;            /* loads that follow the geometry, NULL if none */
     ctn_solve_summary *sum;    /* where timings accumulate (the current solution's) */
 };
 
@@ -100,6 +106,22 @@ int ctn_preshape(ctn_problem *p, double *d, int *count);
 
 /* 1 with a message if an option is out of range, else 0 (options.c). */
 int ctn_solve_options_fault(const ctn_solve_options *opt, char *msg, size_t size);
+
+/* Follower loads (follow.c). create: NULL p->fl when the model has none. step: the q of
+ * model step k becomes the target (the previous one the start); reset: before the first
+ * step; set_t: q at t; forces: the loads (state layout) at d, kept for the tangent;
+ * solve: x = (K + shift I - L)^-1 b by GMRES preconditioned by the factorization. */
+int ctn_follow_create(ctn_problem *p);
+void ctn_follow_destroy(ctn_follow **f);
+void ctn_follow_reset(ctn_problem *p);
+void ctn_follow_step(ctn_problem *p, size_t k);
+void ctn_follow_set_t(ctn_problem *p, double t);
+const double *ctn_follow_forces(ctn_problem *p, const double *d);
+/* The loads of the last ctn_follow_forces (state layout). */
+const double *ctn_follow_loads(const ctn_follow *f);
+int ctn_follow_solve(ctn_problem *p, const double *b, double *x);
+/* y = (K + shift I - L) x: the operator GMRES solves with. */
+int ctn_follow_apply(ctn_problem *p, const double *x, double *y);
 
 /* Small vector helpers (vec.c). */
 double ctn_vec_norm(const double *v, size_t n);

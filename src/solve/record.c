@@ -44,7 +44,9 @@ int ctn_problem_fill_step(ctn_problem *p, ctn_solution *s, size_t k, const doubl
     const int *eq = p->a->map.eq;
     ctn_dofmap_to3(&p->a->map, d, st->d);
     if (ctn_asm_eval(p->a, d, 0, p->fint, NULL, NULL, NULL)) return CTN_OK;   /* collapsed: zeros stay */
-    for (size_t i = 0; i < p->ns; i++) p->react[i] = eq[i] < 0 ? p->fint[i] - p->fext[i] : 0.0;
+    const double *fh = p->fl ? ctn_follow_forces(p, d) : NULL;
+    for (size_t i = 0; i < p->ns; i++)
+        p->react[i] = eq[i] < 0 ? p->fint[i] - p->fext[i] - (fh ? fh[i] : 0.0) : 0.0;
     ctn_dofmap_to3(&p->a->map, p->react, st->react);
     ctn_asm_loop(p->a, d, 0, 0, state_visit, st->elem, NULL);
     return CTN_OK;
