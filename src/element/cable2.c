@@ -24,7 +24,9 @@ static void axial_law(const ctn_cable_props *p, unsigned mode, double l, ctn_ele
     }
     st->energy = 0.5 * p->EA * p->l0 * st->strain * st->strain;   /* U = EA l0 eps^2 / 2 */
     st->slack = 0;
-    if ((p->tension_only || (mode & CTN_EVAL_CUT_COMPRESSION)) && st->N <= 0) {
+    /* Slack below zero force; at exactly zero (an unstressed start) the member keeps its
+     * tension-side stiffness, so a straight start is not a matrix of zeros. */
+    if ((p->tension_only || (mode & CTN_EVAL_CUT_COMPRESSION)) && st->N < 0) {
         st->N = 0;
         st->energy = 0;
         *dNdl = 0;

@@ -155,7 +155,10 @@ static int initial_radius(arc *a)
     int ok = 0, valid, rc = place(a, 0.0, &rn, &valid);
     if (!rc && valid) rc = solve_rhs(a, a->F, a->ut, &ok);
     if (rc) return rc;
-    if (!ok) return ctn_error(a->e->ctx, CTN_ERR_MODEL, "%s: arc-length: the initial tangent is singular", a->e->m->file);
+    if (!ok) {                                  /* an outcome, not a model error */
+        a->s->sum.reason = CTN_DIVERGED_INDEFINITE;
+        return CTN_OK;
+    }
     a->ds = fabs(a->e->opt.lambda_max) * ctn_vec_norm(a->ut, a->e->ndof) / a->e->opt.steps;
     return CTN_OK;
 }
@@ -234,7 +237,11 @@ int ctn_arclength_run(ctn_problem *e, ctn_solution *s, double *d)
         if (!(a.fref > 0)) rc = ctn_error(e->ctx, CTN_ERR_MODEL, "%s: arc-length needs a load on free DOFs", e->m->file);
     }
     if (!rc) rc = initial_radius(&a);
-    if (!rc) rc = trace(&a);
+    if (!rc && s->sum.reason == CTN_DIVERGED_INDEFINITE) {  /* singular start: keep it */
+        if (!(rc = record_state(&a, 0))) s->steps[s->nsteps - 1].reason = CTN_DIVERGED_INDEFINITE;
+    } else if (!rc) {
+        rc = trace(&a);
+    }
     free_arc(&a);
     return rc;
 }

@@ -69,6 +69,39 @@ static size_t walk(const ctn_problem *e, chains *c, int e0)
     return n + 1;
 }
 
+/* A free tip: a node of one flexible member and no support. */
+static int tip(const ctn_problem *e, const chains *c, int node)
+{
+    return c->deg[node] == 1 && e->m->nodes.v[node].fix == 0;
+}
+
+/* A dangling chain (an anchor, then free nodes to a free tip) hangs, whatever its start,
+ * along the resultant of its loads: a pendulum. Place it there, each member stretched by
+ * CTN_PRESHAPE_STRAIN, so Newton starts next to the hanging state instead of swinging
+ * the whole chain through a large rigid rotation. 1 if placed. */
+static int place_dangling(const ctn_problem *e, const chains *c, size_t n, const double *loads, double *d)
+{
+    int flip = tip(e, c, c->nodes[0]);
+    if (n < 2 || !(flip || tip(e, c, c->nodes[n - 1]))) return 0;
+    double R[3] = { 0, 0, 0 }, a[3], rn = 0;
+    for (size_t i = 1; i < n; i++) {
+        int node = c->nodes[flip ? n - 1 - i : i];
+        for (int k = 0; k < 3; k++) R[k] += loads[3 * (size_t)node + (size_t)k];
+    }
+    rn = sqrt(R[0] * R[0] + R[1] * R[1] + R[2] * R[2]);
+    if (!(rn > 0)) return 0;
+    current(e, d, c->nodes[flip ? n - 1 : 0], a);
+    double s = 0;
+    for (size_t i = 1; i < n; i++) {
+        size_t j = flip ? n - 1 - i : i;
+        int node = c->nodes[j];
+        s += rest_length(e, c->elems[flip ? j : j - 1]) * (1 + CTN_PRESHAPE_STRAIN);
+        double *dn = d + ctn_dofmap_node(&e->a->map, (size_t)node);
+        for (int k = 0; k < 3; k++) dn[k] = a[k] + s * R[k] / rn - e->m->nodes.v[node].X[k];
+    }
+    return 1;
+}
+
 /* Place one chain of n nodes on its arc if it is slack; 1 if placed. */
 static int place_chain(const ctn_problem *e, const chains *c, size_t n, double *d)
 {
@@ -127,12 +160,14 @@ int ctn_preshape(ctn_problem *e, double *d, int *count)
 {
     chains c = { NULL, NULL, NULL, NULL, NULL };
     int rc = incidence(e, &c);
+    double *loads = e->v3;                         /* the first step's dead loads */
     *count = 0;
+    if (!rc) ctn_model_step_loads_ex(e->m, 0, 1, loads, NULL);
     for (size_t i = 0; !rc && i < e->a->ne; i++) {
         if (c.seen[i]) continue;
         size_t n = walk(e, &c, (int)i);
         c.seen[i] = 1;
-        if (n) *count += place_chain(e, &c, n, d);
+        if (n) *count += place_dangling(e, &c, n, loads, d) || place_chain(e, &c, n, d);
     }
     ctn_free(c.deg);
     ctn_free(c.inc);

@@ -63,4 +63,8 @@ finish "determinate model solved"
 "$BIN" solve "$M/paper_E2e14.cable" 2>/dev/null | grep -q "rejected (shift" || WHY+=("rejected steps not marked in the log")
 finish "rejected steps marked"
 
+"$BIN" solve "$M/arclength_singular_start.cable" -q 2>"$T/err"; rc=$?
+[ $rc -eq 3 ] || WHY+=("exit $rc, expected 3 (a solver condition, not a bad model): $(cat "$T/err")")
+finish "arc-length singular start exits 3"
+
 cli_summary
