@@ -177,8 +177,28 @@ static void test_hard_starts(void)
         CHECK_MSG(sum.reason != CTN_CONVERGED, "arc-length from a singular start: %s", ctn_reason_name(sum.reason));
 }
 
+/* Inclined spans start as well as level ones: a few iterations at any inclination. */
+static void test_inclined(void)
+{
+    static const char *fmt = "units kN m\nmaterial m E=2e8 strain=engineering\n"
+                             "section s material=m A=1e-3 w=0.05\ngravity 0 0 -1\n"
+                             "node 1 0 0 0 fix=xyz\nnode 2 %s fix=xyz\ncable 1 2 section=s n=40 length=%s\n%%s%%s\n";
+    const char *spans[3][2] = { { "89.9 0 59.2", "125" }, { "100 0 50", "140" }, { "100 0 0", "140" } };
+    for (int k = 0; k < 3; k++) {
+        char model[512];
+        snprintf(model, sizeof model, fmt, spans[k][0], spans[k][1]);
+        ctn_solve_summary sum;
+        double R[3];
+        if (solve(model, "", "", &sum, R)) continue;
+        CHECK_MSG(sum.reason == CTN_CONVERGED && sum.iterations <= 6, "span %s: %s after %d iterations", spans[k][0],
+                  ctn_reason_name(sum.reason), sum.iterations);
+        CHECK_CLOSE(R[2], 0.05 * atof(spans[k][1]), 1e-9, 0);
+    }
+}
+
 int main(void)
 {
+    test_inclined();
     test_hard_starts();
     test_determinate();
     test_near_rigid();

@@ -31,6 +31,11 @@ typedef enum ctn_strain {
 /* Where Newton starts for a generated cable. */
 typedef enum ctn_cable_start {
     CTN_START_ARC = 0,      /* the stretched arc through the ends (the paper's; default) */
+    CTN_START_AUTO = 2,     /* the arc's guesses, which the default method (CTN_METHOD_AUTO)
+                               replaces by the elastic catenary's where there is one: the
+                               paper's pure Newton keeps the paper's start, the default
+                               method starts a few iterations from the answer at any
+                               inclination (the model file's default) */
     CTN_START_CATENARY = 1  /* Irvine's elastic catenary of the cable under its self-weight
                                (engineering strain), in the plane of chord and gravity; the
                                arc when the cable has no weight or a vertical chord */
@@ -54,7 +59,7 @@ typedef struct ctn_cable_spec {
     double guess_strain; /* arc shape: the Newton start is the stretched arc through the
                             same ends on which every element has this strain (default
                             1e-3, see docs/theory.md); 0 starts from the arc itself */
-    ctn_cable_start start;  /* CTN_START_ARC (zero-initialized default) or _CATENARY */
+    ctn_cable_start start;  /* CTN_START_ARC (zero-initialized default), _CATENARY or _AUTO */
 } ctn_cable_spec;
 
 /* Create an empty model bound to ctx (errors are recorded there; ctx must outlive it). */

@@ -150,8 +150,8 @@ static int cable_shape(ctn_line *l, ctn_cable_spec *spec)
     else if (shape && strcmp(shape, "arc"))
         return ctn_parse_error(l, "unknown cable shape '%.40s' (expected arc or straight)", shape);
     spec->guess_strain = 1e-3;
-    static const char *const starts[] = { "arc", "catenary" };
-    int start = CTN_START_ARC, rc = key_word(l, "start", starts, 2, &start);
+    static const char *const starts[] = { "arc", "catenary", "auto" };
+    int start = CTN_START_AUTO, rc = key_word(l, "start", starts, 3, &start);
     spec->start = (ctn_cable_start)start;
     return rc ? rc : ctn_parse_key_num(l, 3, "guess", 0, &spec->guess_strain);
 }

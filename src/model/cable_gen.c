@@ -24,6 +24,8 @@ static int check_spec(const ctn_model *m, const ctn_cable_spec *s, double chord)
         return ctn_model_error(m, CTN_ERR_MODEL, "cable: guess strain must be in [0, 1) (got %g)", s->guess_strain);
     if (s->shape != CTN_SHAPE_ARC && s->shape != CTN_SHAPE_STRAIGHT)
         return ctn_model_error(m, CTN_ERR_MODEL, "cable: unknown shape");
+    if (s->start != CTN_START_ARC && s->start != CTN_START_CATENARY && s->start != CTN_START_AUTO)
+        return ctn_model_error(m, CTN_ERR_MODEL, "cable: unknown start");
     return CTN_OK;
 }
 
@@ -97,6 +99,8 @@ int ctn_model_add_cable(ctn_model *m, int a, int b, const char *section,
     c->first = e0;
     c->count = (size_t)spec->n;
     c->length = spec->length;
+    c->start = (int)spec->start;
+    c->shape = (int)spec->shape;
     if (first_elem) *first_elem = first;
     if (last_elem) *last_elem = m->max_element_id;
     return CTN_OK;

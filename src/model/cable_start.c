@@ -25,13 +25,21 @@ static int frame(const double A[3], const double B[3], const double g[3], double
     return 0;
 }
 
-/* Smallest strain of the chords k S/n .. (k+1) S/n of the polygon on the curve. */
+/* Unstressed arc length of node k of n: k L0 / n, exactly L0 at the end (rounding must not
+ * step outside the curve). */
+static double node_s(const ctn_ecatenary *c, int k, int n)
+{
+    return k >= n ? c->in.L0 : fmin(c->in.L0 * k / n, c->in.L0);
+}
+
+/* Smallest strain of the chords k S/n .. (k+1) S/n of the polygon on the curve; -INFINITY
+ * if a point cannot be evaluated. */
 static double min_chord_strain(const ctn_ecatenary *c, double S, int n)
 {
     double m = INFINITY, x0, y0, x1, y1;
-    ctn_ecatenary_point(c, 0.0, &x0, &y0);
+    if (ctn_ecatenary_point(c, 0.0, &x0, &y0)) return -INFINITY;
     for (int k = 1; k <= n; k++, x0 = x1, y0 = y1) {
-        ctn_ecatenary_point(c, c->in.L0 * k / n, &x1, &y1);
+        if (ctn_ecatenary_point(c, node_s(c, k, n), &x1, &y1)) return -INFINITY;
         m = fmin(m, hypot(x1 - x0, y1 - y0) / (S / n) - 1);
     }
     return m;
@@ -54,6 +62,7 @@ int ctn_catenary_start(ctn_ctx *ctx, const double A[3], const double B[3], const
         }
         double m = min_chord_strain(&out->cat, S, n);
         if (m >= eps) return 0;
+        if (!isfinite(m) || m < -0.5) return -1;          /* no sensible polygon: the arc */
         in.L0 *= 1 + 1.5 * (eps - m);
     }
     return -1;
@@ -62,6 +71,6 @@ int ctn_catenary_start(ctn_ctx *ctx, const double A[3], const double B[3], const
 void ctn_catenary_start_point(const ctn_catenary_place *p, int k, double X[3])
 {
     double x, y;
-    ctn_ecatenary_point(&p->cat, p->cat.in.L0 * k / p->n, &x, &y);
+    if (ctn_ecatenary_point(&p->cat, node_s(&p->cat, k, p->n), &x, &y)) x = y = 0;   /* checked by the start */
     for (int j = 0; j < 3; j++) X[j] = p->A[j] + x * p->along[j] + y * p->up[j];
 }

@@ -70,6 +70,8 @@ typedef struct ctn_cable {
     int node[2];
     size_t first, count;
     double length;
+    int start;       /* ctn_cable_start as given */
+    int shape;       /* ctn_cable_shape */
 } ctn_cable;
 
 /* A growable array: data, count and capacity. */

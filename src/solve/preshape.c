@@ -8,6 +8,7 @@
  * chain so that every member is stretched by CTN_PRESHAPE_STRAIN (the start `cable`
  * gives a generated cable). This changes only the start, not the equations. */
 #include "model/arc.h"
+#include "model/cable_start.h"
 #include "solve/problem.h"
 
 #include <math.h>
@@ -156,6 +157,60 @@ static int incidence(const ctn_problem *e, chains *c)
     return CTN_OK;
 }
 
+/* The cable carries its own weight only: no load on its interior nodes but the halves of
+ * its elements' weights (first step), and no hload on its elements in any step. */
+static int weight_only(const ctn_problem *e, const ctn_cable *cb, const double *loads)
+{
+    const ctn_model *m = e->m;
+    const ctn_element *el = &m->elements.v[cb->first];
+    double W = m->sections.v[el->section].w * el->l0, scale = 0;
+    for (int k = 0; k < 3; k++) scale += W * m->gravity[k] * W * m->gravity[k];
+    scale = sqrt(scale);
+    for (size_t h = 0; h < m->hloads.n; h++)
+        for (size_t k = 0; k < cb->count; k++) {
+            int id = m->elements.v[cb->first + k].id;
+            if (id >= m->hloads.v[h].first && id <= m->hloads.v[h].last) return 0;
+        }
+    for (size_t k = 1; k < cb->count; k++) {
+        int node = ctn_elem_nodes(m, cb->first + k)[0];
+        double wa = 0.5 * m->sections.v[m->elements.v[cb->first + k - 1].section].w * m->elements.v[cb->first + k - 1].l0;
+        double wb = 0.5 * m->sections.v[m->elements.v[cb->first + k].section].w * m->elements.v[cb->first + k].l0;
+        for (int j = 0; j < 3; j++)
+            if (fabs(loads[3 * (size_t)node + (size_t)j] - (wa + wb) * m->gravity[j]) > 1e-9 * scale) return 0;
+    }
+    for (size_t i = 0; i < m->ploads.n; i++)            /* loads in later steps too */
+        for (size_t k = 1; k < cb->count; k++)
+            if (m->ploads.v[i].node == ctn_elem_nodes(m, cb->first + k)[0]) return 0;
+    return 1;
+}
+
+/* A generated arc cable with start=auto and a weight: its interior nodes on the elastic
+ * catenary of its span (model/cable_start.c), which Newton leaves in a few iterations at
+ * any inclination; its elements are then no chain to pre-shape. 1 if placed. */
+static int weight_only(const ctn_problem *e, const ctn_cable *cb, const double *loads);
+
+static int place_catenary(const ctn_problem *e, const ctn_cable *cb, chains *c, const double *loads, double *d)
+{
+    const ctn_model *m = e->m;
+    if (cb->start != CTN_START_AUTO || cb->shape != CTN_SHAPE_ARC || cb->count < 2) return 0;
+    if (!weight_only(e, cb, loads)) return 0;          /* the catenary of its weight is not its shape */
+    const ctn_element *el = &m->elements.v[cb->first];
+    if (el->section < 0) return 0;
+    const ctn_section *sec = &m->sections.v[el->section];
+    ctn_catenary_place cat;
+    if (ctn_catenary_start(e->ctx, m->nodes.v[cb->node[0]].X, m->nodes.v[cb->node[1]].X, m->gravity, sec->w,
+                           m->materials.v[sec->material].E * sec->A, cb->length, (int)cb->count, 1e-4, &cat))
+        return 0;
+    for (size_t k = 1; k < cb->count; k++) {
+        int node = ctn_elem_nodes(m, cb->first + k)[0];
+        double X[3], *dn = d + ctn_dofmap_node(&e->a->map, (size_t)node);
+        ctn_catenary_start_point(&cat, (int)k, X);
+        for (int j = 0; j < 3; j++) dn[j] = X[j] - m->nodes.v[node].X[j];
+    }
+    for (size_t k = 0; k < cb->count; k++) c->seen[cb->first + k] = 1;
+    return 1;
+}
+
 int ctn_preshape(ctn_problem *e, double *d, int *count)
 {
     chains c = { NULL, NULL, NULL, NULL, NULL };
@@ -163,6 +218,7 @@ int ctn_preshape(ctn_problem *e, double *d, int *count)
     double *loads = e->v3;                         /* the first step's dead loads */
     *count = 0;
     if (!rc) ctn_model_step_loads_ex(e->m, 0, 1, loads, NULL);
+    for (size_t i = 0; !rc && i < e->m->cables.n; i++) *count += place_catenary(e, &e->m->cables.v[i], &c, loads, d);
     for (size_t i = 0; !rc && i < e->a->ne; i++) {
         if (c.seen[i]) continue;
         size_t n = walk(e, &c, (int)i);
