@@ -103,6 +103,11 @@ int ctn_array_reserve(ctn_ctx *ctx, void **v, size_t *cap, size_t need, size_t s
 int ctn_model_error(const ctn_model *m, int code, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
 
+/* Every part of the model (a set of elements joined through shared nodes) must hold a
+ * node with at least one fixed DOF; else CTN_ERR_MODEL naming the part's elements, at
+ * the line of its first element (parts.c). Linear time. */
+int ctn_model_check_parts(const ctn_model *m);
+
 int ctn_model_find_section(const ctn_model *m, const char *name);
 int ctn_model_find_material(const ctn_model *m, const char *name);
 
