@@ -27,6 +27,9 @@ int ctn_app_model_args(const char *cmd, int argc, char **argv, ctn_model_args *a
 
 /* Exit code for a failed library call, after printing its message to stderr. */
 int ctn_app_fail(ctn_ctx *ctx, int status);
+/* The same for a failure about the model read from path: the message is printed with
+ * the "path:" prefix (added unless the library's message already starts with it). */
+int ctn_app_fail_model(ctn_ctx *ctx, int status, const char *path);
 
 /* Human-readable result summary. */
 void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s);

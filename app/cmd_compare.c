@@ -52,7 +52,7 @@ static int print_json(const char *path, const ctn_compare *c, const ctn_solve_su
 static int solve(ctn_ctx *ctx, const char *path, const ctn_model *m, ctn_solution **s, ctn_solve_summary *sum)
 {
     int rc = ctn_solve(ctx, m, NULL, s);
-    if (rc) return ctn_app_fail(ctx, rc);
+    if (rc) return ctn_app_fail_model(ctx, rc, path);
     ctn_solution_summary(*s, sum);
     if (sum->reason == CTN_CONVERGED) return CTN_EXIT_OK;
     fprintf(stderr, "catena: %s: the FEA did not converge (%s): nothing to compare\n", path, ctn_reason_name(sum->reason));
@@ -91,9 +91,9 @@ int ctn_cmd_compare(int argc, char **argv)
     }
     int rc = ctn_model_read_file(ctx, a.model, &m), code = CTN_EXIT_OK;
     if (!rc) rc = ctn_compare_create(ctx, m, &c);
-    if (rc) code = ctn_app_fail(ctx, rc);
+    if (rc) code = ctn_app_fail_model(ctx, rc, a.model);
     if (!code) code = solve(ctx, a.model, m, &s, &sum);
-    if (!code && (rc = ctn_compare_set_fea(c, s))) code = ctn_app_fail(ctx, rc);
+    if (!code && (rc = ctn_compare_set_fea(c, s))) code = ctn_app_fail_model(ctx, rc, a.model);
     if (!code) code = report(ctx, &a, c, &sum);
     ctn_compare_destroy(&c);
     ctn_solution_destroy(&s);

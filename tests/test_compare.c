@@ -240,6 +240,11 @@ static void test_refused(void)
     ctn_model *m = paper_model(ctx, 201, 4, CTN_STRAIN_GREEN_LAGRANGE, CTN_METHOD_AUTO);
     if (m) ctn_model_add_node(m, 99, P, CTN_FIX_ALL);
     expect_refused(ctx, m, "three supports");
+    /* the message names the model's file, as the model checks' do */
+    ctn_compare *c = NULL;
+    if (m) ctn_model_set_origin(m, "span.cable", 0);
+    CHECK(m && ctn_compare_create(ctx, m, &c) == CTN_ERR_MODEL);
+    CHECK_MSG(!strncmp(ctn_ctx_message(ctx), "span.cable: not a single span", 29), "%s", ctn_ctx_message(ctx));
     ctn_model_destroy(&m);
     m = paper_model(ctx, 201, 4, CTN_STRAIN_GREEN_LAGRANGE, CTN_METHOD_AUTO);
     if (m && (ctn_model_add_node(m, 99, Q, 0) || ctn_model_add_element(m, 99, 3, 99, "strand", CTN_L0_DEFAULT)))

@@ -120,8 +120,11 @@ typedef struct ctn_compare_values {
 
 typedef struct ctn_compare ctn_compare;
 
-/* Find the span of m (CTN_ERR_MODEL with a message naming the problem if the model is
- * not a single span, or its loads leave the plane) and solve its closed forms.
+/* Check m (ctn_model_validate), find its span (CTN_ERR_MODEL with a message naming the
+ * problem if the model is not a single span, or its loads leave the plane) and solve its
+ * closed forms. Messages about the model, here and in ctn_compare_set_fea, ctn_study_run
+ * and ctn_convergence_run, start with its file name (ctn_model_file) when it has one:
+ * "FILE: not a single span: ...", or the model checks' "FILE:LINE: ...".
  * *out owns a new comparison (ctn_compare_destroy); it keeps no pointer to m. */
 int ctn_compare_create(ctn_ctx *ctx, const ctn_model *m, ctn_compare **out);
 /* Destroy; NULL or *c == NULL is a harmless no-op; sets *c to NULL. */

@@ -10,6 +10,7 @@
 
 struct ctn_compare {
     ctn_ctx *ctx;
+    char file[256];        /* the model's file name (ctn_model_file), "" if none */
     ctn_span span;
     size_t *node;          /* [n + 1] node indices along the span, support 0 first */
     size_t *elem;          /* [n] element indices in span order */
@@ -27,6 +28,11 @@ struct ctn_compare {
                               joints x0 y0 ... xn yn, then the n segment tensions */
     double *fea;           /* [3 n + 2] FEA: node positions, then element forces */
 };
+
+/* Record an error about the model of `file`: the message starts "file: " (nothing
+ * when file is "" or NULL), like the model checks' (compare.c). Returns code. */
+int ctn_cmp_error(ctn_ctx *ctx, const char *file, int code, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
 
 /* Span detection (span.c): fills span.n, support, generated, node, elem, l0, EA and
  * the section data; allocates the arrays. */

@@ -31,14 +31,14 @@ int ctn_compare_set_fea(ctn_compare *c, const ctn_solution *s)
     }
     ctn_compare_values *v = &c->v[CTN_FORM_FEA];
     if (ctn_cmp_polyline_values(c, xy, N, v))
-        return ctn_error(c->ctx, CTN_ERR_DOMAIN, "the deformed cable does not cross mid-span or holds a NaN");
+        return ctn_cmp_error(c->ctx, c->file, CTN_ERR_DOMAIN, "the deformed cable does not cross mid-span or holds a NaN");
     double Ta, Tb, Ha, Hb;
     support(c, react, 0, &Ta, &Ha);
     support(c, react, n, &Tb, &Hb);
     v->T_max = fmax(Ta, Tb);
     v->H = Ha;
     v->stress_max = v->T_max / c->span.A;
-    if (!isfinite(v->T_max) || !isfinite(v->H)) return ctn_error(c->ctx, CTN_ERR_DOMAIN, "the FEA reactions are not finite");
+    if (!isfinite(v->T_max) || !isfinite(v->H)) return ctn_cmp_error(c->ctx, c->file, CTN_ERR_DOMAIN, "the FEA reactions are not finite");
     c->has |= 1u << CTN_FORM_FEA;
     return CTN_OK;
 }

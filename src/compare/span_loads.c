@@ -37,7 +37,7 @@ static int plane(ctn_compare *c, const double *f, size_t nn)
             for (int k = 0; k < 3; k++) down[k] += f[3 * i + (size_t)k];
     double dn = sqrt(ctn_cmp_dot3(down, down));
     if (!(dn > 0) || !isfinite(dn))
-        return ctn_error(c->ctx, CTN_ERR_MODEL, "the span has neither gravity nor loads: no closed form to compare with");
+        return ctn_cmp_error(c->ctx, c->file, CTN_ERR_MODEL, "the span has neither gravity nor loads: no closed form to compare with");
     for (int k = 0; k < 3; k++) s->ey[k] = -down[k] / dn;
     double ch[3], up = 0;
     for (int k = 0; k < 3; k++) ch[k] = s->X[1][k] - s->X[0][k];
@@ -46,7 +46,7 @@ static int plane(ctn_compare *c, const double *f, size_t nn)
     s->l = sqrt(ctn_cmp_dot3(ch, ch));
     s->h = up;
     if (!(s->l > 1e-9 * fabs(up)) || !(s->l > 0))
-        return ctn_error(c->ctx, CTN_ERR_MODEL, "the span's chord is vertical: no horizontal span to compare");
+        return ctn_cmp_error(c->ctx, c->file, CTN_ERR_MODEL, "the span's chord is vertical: no horizontal span to compare");
     for (int k = 0; k < 3; k++) s->ex[k] = ch[k] / s->l;
     return CTN_OK;
 }
@@ -120,7 +120,7 @@ static int plane_loads(ctn_compare *c, const double *f)
         c->W -= c->P[2 * j + 1];
     }
     if (out > 1e-10 * scale)
-        return ctn_error(c->ctx, CTN_ERR_MODEL, "the span's loads leave the vertical plane of its "
+        return ctn_cmp_error(c->ctx, c->file, CTN_ERR_MODEL, "the span's loads leave the vertical plane of its "
                          "supports: no plane closed form applies");
     return CTN_OK;
 }
