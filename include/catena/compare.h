@@ -37,9 +37,11 @@
  *
  * Compared quantities (ctn_compare_values), the same for every form:
  *   sag         mid-span sag: the vertical distance from the chord's mid-point down to the
- *               cable; the FEA and the polygons are read between their nodes, linearly
- *               under point loads (the chain is straight between joints), else on the
- *               parabola through the three nodes nearest to mid-span;
+ *               cable, by catena's one definition (ctn_solution_cable_sag, the same
+ *               number as `catena solve`); the FEA and the polygons are read between
+ *               their nodes on the parabola through the three nodes nearest to
+ *               mid-span, or linearly (the chain is straight between joints) when the
+ *               middle one of them carries a concentrated load;
  *   T_max       the tension at the more loaded support. For the FEA and the polygons it
  *               is the magnitude of the support reaction, which includes the load lumped
  *               on the support node; the force in the first element is lower by that

@@ -19,6 +19,8 @@ struct ctn_compare {
     double *Xref;          /* [3 (n + 1)] reference positions of the span's nodes */
     double *P;             /* [2 (n + 1)] lumped loads of the nodes, in plane (x, y) */
     double W;              /* total load along -y [force] */
+    double down[3];        /* the model's "down" (ctn_sag_down): -span.ey */
+    unsigned char *kink;   /* [n + 1] 1 if chain node j carries a concentrated load */
     unsigned has;          /* bit (1 << form) set for each form with values */
     ctn_compare_values v[CTN_FORM_COUNT];
     ctn_catenary cat;
@@ -41,6 +43,10 @@ int ctn_cmp_find_span(ctn_compare *c, const ctn_model *m);
 int ctn_cmp_span_loads(ctn_compare *c, const ctn_model *m);
 /* Closed forms (forms.c): every form that applies, into has / v / cat ... poly. */
 int ctn_cmp_solve_forms(ctn_compare *c);
+/* Sag of the span's chain with node j at point(c, ud, j, x) in space, by the one
+ * definition of src/solve/sag.h (values.c). */
+typedef void (*ctn_cmp_point_fn)(const ctn_compare *c, const void *ud, size_t j, double x[3]);
+int ctn_cmp_sag(const ctn_compare *c, ctn_cmp_point_fn point, const void *ud, double *sag);
 /* Values of a polyline of n segments (xy [2 (n + 1)], forces N [n]) in the span's
  * plane, supports carrying the loads P[0..1] and P[2n..2n+1] (fea.c). */
 int ctn_cmp_polyline_values(const ctn_compare *c, const double *xy, const double *N,

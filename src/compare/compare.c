@@ -61,6 +61,7 @@ void ctn_compare_destroy(ctn_compare **c)
     ctn_free(p->l0);
     ctn_free(p->EA);
     ctn_free(p->Xref);
+    ctn_free(p->kink);
     ctn_free(p->P);
     ctn_free(p->poly[0]);
     ctn_free(p->poly[1]);

@@ -151,6 +151,30 @@ PY
 fi
 finish "compare point loads"
 
+# ---- one sag: solve and compare report the same number, odd and even n --------------------
+for n in 19 20 21; do
+    sed "s/n=20 /n=$n /" examples/paper/s250.8777.cable >"$T/n$n.cable"
+    "$BIN" solve "$T/n$n.cable" --json >"$T/n$n.solve.json" 2>"$T/err" || WHY+=("n=$n: solve exit $?")
+    "$BIN" compare "$T/n$n.cable" --json >"$T/n$n.compare.json" 2>"$T/err" || WHY+=("n=$n: compare exit $?")
+done
+if [ "$have_python" = 1 ]; then
+    msg=$(python3 - "$T" <<'PY'
+import json, sys
+T = sys.argv[1]; err = []; sag = {}
+for n in (19, 20, 21):
+    s = json.load(open("%s/n%d.solve.json" % (T, n)))["cables"][0]["sag"]
+    c = json.load(open("%s/n%d.compare.json" % (T, n)))
+    if s != c["fea"]["sag"]: err.append("n=%d: solve %r, compare %r" % (n, s, c["fea"]["sag"]))
+    sag[n] = s
+    ref = c["elastic_catenary"]["sag"]
+# the sag approaches the catenary monotonically (odd n does not dip below its neighbours)
+if not (sag[19] > sag[20] > sag[21]): err.append("not monotone in n: %r" % sag)
+print("; ".join(err)); sys.exit(1 if err else 0)
+PY
+) || WHY+=("$msg")
+fi
+finish "one sag: solve = compare"
+
 # ---- errors -----------------------------------------------------------------------------------
 expect() {   # expect CODE TEXT ARGS...: exit code and a stderr substring
     local code=$1 text=$2
