@@ -45,6 +45,9 @@ int ctn_app_model_args(const char *cmd, int argc, char **argv, ctn_model_args *a
 
 /* Exit code for a failed library call, after printing its message to stderr. */
 int ctn_app_fail(ctn_ctx *ctx, int status);
+/* The same for a failure about the model read from path: the message is printed with
+ * the "path:" prefix (added unless the library's message already starts with it). */
+int ctn_app_fail_model(ctn_ctx *ctx, int status, const char *path);
 
 /* Warn (on out) when a converged solution is not stable: unstable (negative eigenvalues
  * of the tangent) or semi-definite (a zero one), with the node and direction. */

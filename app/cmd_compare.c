@@ -53,7 +53,7 @@ static int solve(ctn_ctx *ctx, const char *path, const ctn_model *m, const ctn_s
                  ctn_solution **s, ctn_solve_summary *sum)
 {
     int rc = ctn_solve(ctx, m, opt, s);
-    if (rc) return ctn_app_fail(ctx, rc);
+    if (rc) return ctn_app_fail_model(ctx, rc, path);
     ctn_solution_summary(*s, sum);
     if (sum->reason == CTN_CONVERGED) return CTN_EXIT_OK;
     fprintf(stderr, "catena: %s: the FEA did not converge (%s): nothing to compare\n", path, ctn_reason_name(sum->reason));
@@ -93,9 +93,9 @@ int ctn_cmd_compare(int argc, char **argv)
     ctn_solve_options opt;
     int rc = ctn_read_file(ctx, a.model, &m, &opt), code = CTN_EXIT_OK;
     if (!rc) rc = ctn_compare_create(ctx, m, &c);
-    if (rc) code = ctn_app_fail(ctx, rc);
+    if (rc) code = ctn_app_fail_model(ctx, rc, a.model);
     if (!code) code = solve(ctx, a.model, m, &opt, &s, &sum);
-    if (!code && (rc = ctn_compare_set_fea(c, s))) code = ctn_app_fail(ctx, rc);
+    if (!code && (rc = ctn_compare_set_fea(c, s))) code = ctn_app_fail_model(ctx, rc, a.model);
     if (!code) code = report(ctx, &a, c, &sum);
     ctn_compare_destroy(&c);
     ctn_solution_destroy(&s);

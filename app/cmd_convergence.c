@@ -133,8 +133,8 @@ int ctn_cmd_convergence(int argc, char **argv)
     ctn_solve_options opt;
     int rc = ctn_read_file(ctx, a.model, &m, &opt), code = CTN_EXIT_OK;
     if (!rc) rc = ctn_convergence_run(ctx, m, &opt, a.n, a.count, &c);
-    if (!rc && a.outdir) rc = ctn_convergence_write_figures(ctx, c, a.outdir);
-    if (rc) code = ctn_app_fail(ctx, rc);
+    if (rc) code = ctn_app_fail_model(ctx, rc, a.model);
+    if (!code && a.outdir && (rc = ctn_convergence_write_figures(ctx, c, a.outdir))) code = ctn_app_fail(ctx, rc);
     if (!code && a.json) code = print_json(c, a.model);
     else if (!code && !a.quiet) print_table(c, a.model);
     if (!code && a.outdir) {

@@ -99,7 +99,7 @@ static int read_models(ctn_ctx *ctx, study_args *a, ctn_model **base, ctn_span *
         int rc = ctn_read_file(ctx, a->model[i], &m, &opt), code = CTN_EXIT_OK;
         if (!rc && i == 0) a->solve = opt;
         if (!rc) rc = ctn_compare_create(ctx, m, &c);
-        if (rc) code = ctn_app_fail(ctx, rc);
+        if (rc) code = ctn_app_fail_model(ctx, rc, a->model[i]);
         else if (i == 0) *span = *ctn_compare_span(c);
         else if (other_span(ctn_compare_span(c), span)) {
             fprintf(stderr, "catena: %s: not the span of %s (only the cable length may differ)\n", a->model[i],
@@ -143,8 +143,8 @@ int ctn_cmd_study(int argc, char **argv)
     a.opt.nclaims = a.nclaims;
     a.opt.solve = &a.solve;
     if (!code && (rc = ctn_study_run(ctx, base, &a.opt, &st))) {
-        code = ctn_app_fail(ctx, rc);
-        if (rc == CTN_ERR_INVALID) code = CTN_EXIT_USAGE;      /* a bad length or sweep */
+        if (rc == CTN_ERR_INVALID) code = ctn_app_fail(ctx, rc), code = CTN_EXIT_USAGE;  /* a bad length or sweep */
+        else code = ctn_app_fail_model(ctx, rc, a.model[0]);
     }
     if (!code && a.json) code = ctn_app_study_json(st, a.model[0]);
     else if (!code && !a.quiet)

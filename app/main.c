@@ -28,6 +28,16 @@ static int help(int argc, char **argv)
     return CTN_EXIT_OK;
 }
 
+int ctn_app_fail_model(ctn_ctx *ctx, int status, const char *path)
+{
+    const char *msg = ctn_ctx_message(ctx);
+    size_t n = strlen(path);
+    if (!strncmp(msg, path, n) && msg[n] == ':') return ctn_app_fail(ctx, status);
+    fprintf(stderr, "catena: %s: %s\n", path, *msg ? msg : ctn_strerror(status));
+    if (status == CTN_ERR_MODEL) return CTN_EXIT_MODEL;
+    return CTN_EXIT_IO;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2) {

@@ -55,7 +55,7 @@ static void print_cables(FILE *out, const ctn_model *m, const ctn_solution *s)
     for (size_t i = 0; i < ctn_model_cable_count(m); i++) {
         ctn_cable_info c;
         ctn_node_info a, b;
-        double sag;
+        double sag, dmax;
         ctn_model_cable(m, i, &c);
         ctn_model_node(m, (size_t)c.node[0], &a);
         ctn_model_node(m, (size_t)c.node[1], &b);
@@ -63,6 +63,8 @@ static void print_cables(FILE *out, const ctn_model *m, const ctn_solution *s)
                 c.count, c.length, ctn_model_length_unit(m));
         if (!ctn_solution_cable_sag(m, s, i, &sag))
             fprintf(out, ", mid-span sag %.10g %s", sag, ctn_model_length_unit(m));
+        if (!ctn_solution_cable_max_sag_from_chord(m, s, i, &dmax))
+            fprintf(out, ", max sag from chord %.10g %s", dmax, ctn_model_length_unit(m));
         fputc('\n', out);
     }
 }

@@ -5,6 +5,10 @@
  * - a weightless cable with point loads (engineering strain) matches the funicular
  *   polygon computed independently here;
  * - compressed start: the indefinite tangent is reported with its node, no crash;
+ * - the sag of a cable: a vertical hanging cable pushed sideways reports the largest
+ *   distance of its nodes from the chord (not 0), in `sag` and `max_sag_from_chord`; on
+ *   a level span with a node at mid-span both are that node's depth; without gravity
+ *   "down" is the resultant load;
  * - every allocation failure gives CTN_ERR_NOMEM and no leak (ASan build). */
 #include "catena.h"
 #include "check.h"
@@ -269,8 +273,90 @@ static void test_alloc_failures(void)
     CHECK(total > 10);
 }
 
+/* Largest distance of the solved nodes of m from the line through nodes 0 and 1. */
+static double max_distance_from_chord(const ctn_model *m, const ctn_solution *s)
+{
+    const double *d = ctn_solution_displacements(s);
+    double P[64][3], u[3], best = 0;
+    size_t nn = ctn_model_node_count(m);
+    for (size_t i = 0; i < nn && i < 64; i++) {
+        ctn_node_info n;
+        ctn_model_node(m, i, &n);
+        for (int k = 0; k < 3; k++) P[i][k] = n.X[k] + d[3 * i + (size_t)k];
+    }
+    double len = 0;
+    for (int k = 0; k < 3; k++) u[k] = P[1][k] - P[0][k], len += u[k] * u[k];
+    len = sqrt(len);
+    for (int k = 0; k < 3; k++) u[k] /= len;
+    for (size_t i = 2; i < nn && i < 64; i++) {
+        double r[3], t = 0, q = 0;
+        for (int k = 0; k < 3; k++) r[k] = P[i][k] - P[0][k], t += r[k] * u[k];
+        for (int k = 0; k < 3; k++) q += (r[k] - t * u[k]) * (r[k] - t * u[k]);
+        best = fmax(best, sqrt(q));
+    }
+    return best;
+}
+
+/* A cable of n elements from (0,0,0) to B with self-weight w, a load F on the
+ * generated node `loaded` (0: none), solved; the two sags and the nodes' distance. */
+static void cable_sags(const double B[3], const double g[3], double w, int n, double len, ctn_cable_shape shape,
+                       int loaded, const double F[3], double out[3])
+{
+    ctn_ctx *ctx = NULL;
+    ctn_model *m = NULL;
+    ctn_solution *s = NULL;
+    ctn_solve_summary sum;
+    double A[3] = { 0, 0, 0 };
+    ctn_cable_spec spec = { n, len, shape, 1e-3, CTN_START_ARC };
+    out[0] = out[1] = out[2] = NAN;
+    ctn_ctx_create(&ctx);
+    int rc = ctn_model_create(ctx, &m) || ctn_model_set_gravity(m, g) ||
+             ctn_model_add_material(m, "steel", 2.0e8, CTN_STRAIN_ENGINEERING, 0) ||
+             ctn_model_add_section(m, "rod", "steel", 1e-4, w) || ctn_model_add_node(m, 1, A, CTN_FIX_ALL) ||
+             ctn_model_add_node(m, 2, B, CTN_FIX_ALL) || ctn_model_add_cable(m, 1, 2, "rod", &spec, NULL, NULL) ||
+             (loaded && ctn_model_add_load(m, loaded, F)) || ctn_solve(ctx, m, NULL, &s);
+    CHECK_MSG(!rc, "%s", ctn_ctx_message(ctx));
+    if (!rc) {
+        ctn_solution_summary(s, &sum);
+        CHECK_MSG(sum.reason == CTN_CONVERGED, "%s", ctn_reason_name(sum.reason));
+        CHECK(ctn_solution_cable_sag(m, s, 0, &out[0]) == CTN_OK);
+        CHECK(ctn_solution_cable_max_sag_from_chord(m, s, 0, &out[1]) == CTN_OK);
+        out[2] = max_distance_from_chord(m, s);
+    }
+    ctn_solution_destroy(&s);
+    ctn_model_destroy(&m);
+    ctn_ctx_destroy(&ctx);
+}
+
+static void test_sag(void)
+{
+    double g[3] = { 0, -1, 0 }, none[3] = { 0, 0, 0 }, out[3];
+    /* vertical chord along gravity, a lateral load on the middle node (id 7 of 3..11) */
+    double down[3] = { 0, -10, 0 }, side[3] = { 1, 0, 0.5 };
+    cable_sags(down, g, 0.1, 10, 10.2, CTN_SHAPE_STRAIGHT, 7, side, out);
+    CHECK_MSG(out[2] > 0.5, "the cable did not move sideways: %g", out[2]);
+    CHECK_CLOSE(out[0], out[2], 1e-12, 0);
+    CHECK_CLOSE(out[1], out[2], 1e-12, 0);
+    /* the same chord slightly off vertical (1e-10): still the distance from the chord */
+    double nearly[3] = { 1e-9, -10, 0 };
+    cable_sags(nearly, g, 0.1, 10, 10.2, CTN_SHAPE_STRAIGHT, 7, side, out);
+    CHECK_CLOSE(out[0], out[2], 1e-9, 0);
+    /* level span, even n: the mid node is the deepest, straight below mid-chord */
+    double level[3] = { 200, 0, 0 };
+    cable_sags(level, g, 0.1, 20, 201.3545, CTN_SHAPE_ARC, 0, none, out);
+    CHECK(out[0] > 10);
+    CHECK_CLOSE(out[0], out[1], 1e-12, 0);
+    CHECK_CLOSE(out[1], out[2], 1e-12, 0);
+    /* no gravity: down is the resultant load; a weightless cable with a load at mid-span */
+    double F[3] = { 0, 0, -5 };
+    cable_sags(level, none, 0, 4, 201, CTN_SHAPE_STRAIGHT, 4, F, out);   /* node 4: the middle */
+    CHECK(out[0] > 5);
+    CHECK_CLOSE(out[0], out[2], 1e-12, 0);
+}
+
 int main(void)
 {
+    test_sag();
     test_paper_cases();
     test_bar();
     test_funicular();

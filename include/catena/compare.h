@@ -37,9 +37,11 @@
  *
  * Compared quantities (ctn_compare_values), the same for every form:
  *   sag         mid-span sag: the vertical distance from the chord's mid-point down to the
- *               cable; the FEA and the polygons are read between their nodes, linearly
- *               under point loads (the chain is straight between joints), else on the
- *               parabola through the three nodes nearest to mid-span;
+ *               cable, by catena's one definition (ctn_solution_cable_sag, the same
+ *               number as `catena solve`); the FEA and the polygons are read between
+ *               their nodes on the parabola through the three nodes nearest to
+ *               mid-span, or linearly (the chain is straight between joints) when the
+ *               middle one of them carries a concentrated load;
  *   T_max       the tension at the more loaded support. For the FEA and the polygons it
  *               is the magnitude of the support reaction, which includes the load lumped
  *               on the support node; the force in the first element is lower by that
@@ -121,8 +123,11 @@ typedef struct ctn_compare_values {
 
 typedef struct ctn_compare ctn_compare;
 
-/* Find the span of m (CTN_ERR_MODEL with a message naming the problem if the model is
- * not a single span, or its loads leave the plane) and solve its closed forms.
+/* Check m (ctn_model_validate), find its span (CTN_ERR_MODEL with a message naming the
+ * problem if the model is not a single span, or its loads leave the plane) and solve its
+ * closed forms. Messages about the model, here and in ctn_compare_set_fea, ctn_study_run
+ * and ctn_convergence_run, start with its file name (ctn_model_file) when it has one:
+ * "FILE: not a single span: ...", or the model checks' "FILE:LINE: ...".
  * *out owns a new comparison (ctn_compare_destroy); it keeps no pointer to m. */
 int ctn_compare_create(ctn_ctx *ctx, const ctn_model *m, ctn_compare **out);
 /* Destroy; NULL or *c == NULL is a harmless no-op; sets *c to NULL. */

@@ -226,6 +226,9 @@ void ctn_model_gravity(const ctn_model *m, double g[3]);
 const char *ctn_model_force_unit(const ctn_model *m);
 const char *ctn_model_length_unit(const ctn_model *m);
 double ctn_model_mpa_factor(const ctn_model *m);
+/* The file name of the last ctn_model_set_origin (for a model read by the reader, the
+ * path or name it was read from), "" if none: for messages about the model. Owned by m. */
+const char *ctn_model_file(const ctn_model *m);
 /* External nodal force vector at the end of the last step, 3 per node (concentrated
  * + self-weight + horizontal loads, lumped; hloads on the reference projection: on the
  * deformed one they depend on the solution), written to f (length 3 * node count). */

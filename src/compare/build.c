@@ -29,10 +29,11 @@ int ctn_cmp_build(ctn_ctx *ctx, const ctn_model *base, const ctn_span *span, dou
     if (n < 1 || n > 50000000 || !(L0 > 0) || !isfinite(L0))
         return ctn_error(ctx, CTN_ERR_INVALID, "cannot rebuild the span with %zu elements and length %g", n, L0);
     if (span->loads & CTN_SPAN_POINT)
-        return ctn_error(ctx, CTN_ERR_MODEL, "a span with point loads cannot be rebuilt with another "
+        return ctn_cmp_error(ctx, ctn_model_file(base), CTN_ERR_MODEL, "a span with point loads cannot be rebuilt with another "
                          "length or mesh (only self-weight and hload are carried over)");
     ctn_model *m = NULL;
     int rc = ctn_model_create(ctx, &m);
+    if (!rc) rc = ctn_model_set_origin(m, ctn_model_file(base), 0);  /* messages name the base's file */
     if (!rc) rc = add_span(m, base, span, L0, n, strain);
     if (rc) ctn_model_destroy(&m);
     *out = m;

@@ -10,6 +10,7 @@
 
 struct ctn_compare {
     ctn_ctx *ctx;
+    char file[256];        /* the model's file name (ctn_model_file), "" if none */
     ctn_span span;
     size_t *node;          /* [n + 1] node indices along the span, support 0 first */
     size_t *elem;          /* [n] element indices in span order */
@@ -18,6 +19,8 @@ struct ctn_compare {
     double *Xref;          /* [3 (n + 1)] reference positions of the span's nodes */
     double *P;             /* [2 (n + 1)] lumped loads of the nodes, in plane (x, y) */
     double W;              /* total load along -y [force] */
+    double down[3];        /* the model's "down" (ctn_sag_down): -span.ey */
+    unsigned char *kink;   /* [n + 1] 1 if chain node j carries a concentrated load */
     unsigned has;          /* bit (1 << form) set for each form with values */
     ctn_compare_values v[CTN_FORM_COUNT];
     ctn_catenary cat;
@@ -31,6 +34,11 @@ struct ctn_compare {
     double *Pref;          /* [2 (n + 1)] then: P on the reference geometry */
 };
 
+/* Record an error about the model of `file`: the message starts "file: " (nothing
+ * when file is "" or NULL), like the model checks' (compare.c). Returns code. */
+int ctn_cmp_error(ctn_ctx *ctx, const char *file, int code, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+
 /* Span detection (span.c): fills span.n, support, generated, node, elem, l0, EA and
  * the section data; allocates the arrays. */
 int ctn_cmp_find_span(ctn_compare *c, const ctn_model *m);
@@ -41,6 +49,10 @@ int ctn_cmp_span_loads(ctn_compare *c, const ctn_model *m);
 int ctn_cmp_follow_loads(ctn_compare *c, const double *d);
 /* Closed forms (forms.c): every form that applies, into has / v / cat ... poly. */
 int ctn_cmp_solve_forms(ctn_compare *c);
+/* Sag of the span's chain with node j at point(c, ud, j, x) in space, by the one
+ * definition of src/solve/sag.h (values.c). */
+typedef void (*ctn_cmp_point_fn)(const ctn_compare *c, const void *ud, size_t j, double x[3]);
+int ctn_cmp_sag(const ctn_compare *c, ctn_cmp_point_fn point, const void *ud, double *sag);
 /* Values of a polyline of n segments (xy [2 (n + 1)], forces N [n]) in the span's
  * plane, supports carrying the loads P[0..1] and P[2n..2n+1] (fea.c). */
 int ctn_cmp_polyline_values(const ctn_compare *c, const double *xy, const double *N,

@@ -2,6 +2,7 @@
 #include "compare/cmp.h"
 #include "model/model.h"
 
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -14,6 +15,17 @@ const char *ctn_form_key(ctn_form f) { return f >= 0 && f < CTN_FORM_COUNT ? key
 const char *ctn_form_name(ctn_form f) { return f >= 0 && f < CTN_FORM_COUNT ? names[f] : ""; }
 
 double ctn_compare_rel(double a, double b) { return b != 0 ? (a - b) / b : 0; }
+
+int ctn_cmp_error(ctn_ctx *ctx, const char *file, int code, const char *fmt, ...)
+{
+    char msg[CTN_MSG_MAX];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    if (!file || !*file) return ctn_error(ctx, code, "%s", msg);
+    return ctn_error(ctx, code, "%s: %s", file, msg);
+}
 
 static void units(ctn_span *s, const ctn_model *m)
 {
@@ -30,9 +42,11 @@ int ctn_compare_create(ctn_ctx *ctx, const ctn_model *m, ctn_compare **out)
     ctn_compare *c = ctn_calloc(ctx, 1, sizeof *c);
     if (!c) return CTN_ERR_NOMEM;
     c->ctx = ctx;
+    snprintf(c->file, sizeof c->file, "%s", ctn_model_file(m));
     units(&c->span, m);
     for (size_t h = 0; h < m->hloads.n; h++) c->follow |= !m->hloads.v[h].reference;
-    int rc = ctn_cmp_find_span(c, m);
+    int rc = ctn_model_validate(m);                 /* file:line messages for bad models */
+    if (!rc) rc = ctn_cmp_find_span(c, m);
     if (!rc) rc = ctn_cmp_span_loads(c, m);
     if (!rc) rc = ctn_cmp_solve_forms(c);
     if (rc) ctn_compare_destroy(&c);
@@ -49,6 +63,7 @@ void ctn_compare_destroy(ctn_compare **c)
     ctn_free(p->l0);
     ctn_free(p->EA);
     ctn_free(p->Xref);
+    ctn_free(p->kink);
     ctn_free(p->P);
     ctn_free(p->Pref);
     ctn_free(p->poly[0]);

@@ -57,9 +57,9 @@ static int setup(ctn_ctx *ctx, const ctn_model *base, ctn_convergence *cv)
     ctn_compare *c = NULL;
     int rc = ctn_compare_create(ctx, base, &c);
     if (!rc && c->span.loads != CTN_SPAN_WEIGHT)
-        rc = ctn_error(ctx, CTN_ERR_MODEL, "the convergence study needs a span loaded by its self-weight only");
+        rc = ctn_cmp_error(ctx, c->file, CTN_ERR_MODEL, "the convergence study needs a span loaded by its self-weight only");
     if (!rc && ctn_compare_get(c, CTN_FORM_ECATENARY, &cv->ref))
-        rc = ctn_error(ctx, CTN_ERR_DOMAIN, "the span has no elastic catenary solution");
+        rc = ctn_cmp_error(ctx, c->file, CTN_ERR_DOMAIN, "the span has no elastic catenary solution");
     if (!rc) cv->span = c->span;
     ctn_compare_destroy(&c);
     return rc;

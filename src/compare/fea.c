@@ -11,6 +11,13 @@ static void support(const ctn_compare *c, const double *react, size_t j, double 
     *H = fabs(ctn_cmp_dot3(R, c->span.ex));
 }
 
+/* Deformed position of chain node j, displacements d (= ud) of the whole model. */
+static void fea_point(const ctn_compare *c, const void *ud, size_t j, double x[3])
+{
+    const double *d = ud;
+    for (int k = 0; k < 3; k++) x[k] = c->Xref[3 * j + (size_t)k] + d[3 * c->node[j] + (size_t)k];
+}
+
 int ctn_compare_set_fea(ctn_compare *c, const ctn_solution *s)
 {
     if (!c || !s) return CTN_ERR_INVALID;
@@ -32,15 +39,15 @@ int ctn_compare_set_fea(ctn_compare *c, const ctn_solution *s)
         N[k] = st.force;
     }
     ctn_compare_values *v = &c->v[CTN_FORM_FEA];
-    if (ctn_cmp_polyline_values(c, xy, N, v))
-        return ctn_error(c->ctx, CTN_ERR_DOMAIN, "the deformed cable does not cross mid-span or holds a NaN");
+    if (ctn_cmp_polyline_values(c, xy, N, v) || ctn_cmp_sag(c, fea_point, d, &v->sag))  /* in space: as solve */
+        return ctn_cmp_error(c->ctx, c->file, CTN_ERR_DOMAIN, "the deformed cable does not cross mid-span or holds a NaN");
     double Ta, Tb, Ha, Hb;
     support(c, react, 0, &Ta, &Ha);
     support(c, react, n, &Tb, &Hb);
     v->T_max = fmax(Ta, Tb);
     v->H = Ha;
     v->stress_max = v->T_max / c->span.A;
-    if (!isfinite(v->T_max) || !isfinite(v->H)) return ctn_error(c->ctx, CTN_ERR_DOMAIN, "the FEA reactions are not finite");
+    if (!isfinite(v->T_max) || !isfinite(v->H)) return ctn_cmp_error(c->ctx, c->file, CTN_ERR_DOMAIN, "the FEA reactions are not finite");
     c->has |= 1u << CTN_FORM_FEA;
     return CTN_OK;
 }

@@ -34,7 +34,7 @@ static int write_curve(ctn_ctx *ctx, const ctn_compare *c, const char *dir, ctn_
     double *xy = ctn_malloc(ctx, 2 * m, sizeof *xy), scale = c->span.mpa > 0 ? c->span.mpa : 1;
     if (!xy) return CTN_ERR_NOMEM;
     int rc = ctn_compare_curve(c, f, k, xy);
-    if (rc) rc = ctn_error(ctx, rc, "cannot sample the %s", ctn_form_name(f));
+    if (rc) rc = ctn_cmp_error(ctx, c->file, rc, "cannot sample the %s", ctn_form_name(f));
     for (size_t i = 0; !rc && k == CTN_CURVE_STRESS && i < m; i++) xy[2 * i + 1] *= scale;
     snprintf(file, len, "compare_%s_%s.dat", k == CTN_CURVE_SHAPE ? "shape" : "stress", ctn_form_key(f));
     char head[160];

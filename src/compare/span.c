@@ -19,7 +19,7 @@ static int find_supports(ctn_compare *c, const ctn_model *m, size_t sup[2])
         count++;
     }
     if (count != 2)
-        return ctn_error(c->ctx, CTN_ERR_MODEL, "not a single span: %zu nodes are fixed in x, y and z "
+        return ctn_cmp_error(c->ctx, c->file, CTN_ERR_MODEL, "not a single span: %zu nodes are fixed in x, y and z "
                          "(a span has exactly two supports)", count);
     return CTN_OK;
 }
@@ -42,7 +42,7 @@ static int incidence(ctn_compare *c, const ctn_model *m, size_t *inc, size_t *de
         if (deg[i] > 2) {
             ctn_node_info nd;
             ctn_model_node(m, i, &nd);
-            return ctn_error(c->ctx, CTN_ERR_MODEL, "not a single span: node %d joins %zu elements",
+            return ctn_cmp_error(c->ctx, c->file, CTN_ERR_MODEL, "not a single span: node %d joins %zu elements",
                              nd.id, deg[i]);
         }
     return CTN_OK;
@@ -69,10 +69,10 @@ static int walk(ctn_compare *c, const ctn_model *m, const size_t *inc, const siz
     ctn_model_node(m, a, &na);
     ctn_model_node(m, b, &nb);
     if (cur != b)
-        return ctn_error(c->ctx, CTN_ERR_MODEL, "not a single span: the chain of elements from "
+        return ctn_cmp_error(c->ctx, c->file, CTN_ERR_MODEL, "not a single span: the chain of elements from "
                          "support %d does not reach support %d", na.id, nb.id);
     if (k != ne || deg[a] != 1 || deg[b] != 1)
-        return ctn_error(c->ctx, CTN_ERR_MODEL, "not a single span: %zu of the %zu elements lie on "
+        return ctn_cmp_error(c->ctx, c->file, CTN_ERR_MODEL, "not a single span: %zu of the %zu elements lie on "
                          "the chain from support %d to support %d", k, ne, na.id, nb.id);
     return CTN_OK;
 }
@@ -86,7 +86,7 @@ static int section_data(ctn_compare *c, const ctn_model *m)
     for (size_t k = 0; k < c->span.n; k++) {
         ctn_model_element(m, c->elem[k], &e);
         if (e.E != e0.E || e.A != e0.A || e.w != e0.w || e.strain != e0.strain)
-            return ctn_error(c->ctx, CTN_ERR_MODEL, "the span's elements differ (element %d and %d "
+            return ctn_cmp_error(c->ctx, c->file, CTN_ERR_MODEL, "the span's elements differ (element %d and %d "
                              "have different E, A, w or strain measure)", e0.id, e.id);
         c->l0[k] = e.l0;
         c->EA[k] = e.E * e.A;
@@ -128,7 +128,7 @@ static int alloc_arrays(ctn_compare *c, size_t n)
 int ctn_cmp_find_span(ctn_compare *c, const ctn_model *m)
 {
     size_t ne = ctn_model_element_count(m), nn = ctn_model_node_count(m), sup[2];
-    if (ne == 0) return ctn_error(c->ctx, CTN_ERR_MODEL, "the model has no elements");
+    if (ne == 0) return ctn_cmp_error(c->ctx, c->file, CTN_ERR_MODEL, "the model has no elements");
     int rc = find_supports(c, m, sup);
     if (rc) return rc;
     generated_order(m, sup, &c->span.generated);

@@ -1,6 +1,7 @@
 /* The span's plane (from gravity, or the resultant load) and its loads: self-weight,
  * a load per unit horizontal length, point loads. */
 #include "compare/cmp.h"
+#include "solve/sag.h"
 
 #include <math.h>
 #include <string.h>
@@ -27,18 +28,15 @@ static int support_positions(ctn_compare *c, const ctn_model *m, const double *u
     return CTN_OK;
 }
 
-/* ey against gravity (or the resultant load), ex along the chord's horizontal part. */
-static int plane(ctn_compare *c, const double *f, size_t nn)
+/* ey against gravity (or the resultant load: ctn_sag_down), ex along the chord's
+ * horizontal part. */
+static int plane(ctn_compare *c, const ctn_model *m)
 {
     ctn_span *s = &c->span;
-    double down[3] = { s->g[0], s->g[1], s->g[2] };
-    if (ctn_cmp_dot3(down, down) == 0)
-        for (size_t i = 0; i < nn; i++)
-            for (int k = 0; k < 3; k++) down[k] += f[3 * i + (size_t)k];
-    double dn = sqrt(ctn_cmp_dot3(down, down));
-    if (!(dn > 0) || !isfinite(dn))
-        return ctn_error(c->ctx, CTN_ERR_MODEL, "the span has neither gravity nor loads: no closed form to compare with");
-    for (int k = 0; k < 3; k++) s->ey[k] = -down[k] / dn;
+    ctn_sag_down(m, c->down);
+    if (ctn_cmp_dot3(c->down, c->down) == 0)
+        return ctn_cmp_error(c->ctx, c->file, CTN_ERR_MODEL, "the span has neither gravity nor loads: no closed form to compare with");
+    for (int k = 0; k < 3; k++) s->ey[k] = -c->down[k];
     double ch[3], up = 0;
     for (int k = 0; k < 3; k++) ch[k] = s->X[1][k] - s->X[0][k];
     up = ctn_cmp_dot3(ch, s->ey);
@@ -46,7 +44,7 @@ static int plane(ctn_compare *c, const double *f, size_t nn)
     s->l = sqrt(ctn_cmp_dot3(ch, ch));
     s->h = up;
     if (!(s->l > 1e-9 * fabs(up)) || !(s->l > 0))
-        return ctn_error(c->ctx, CTN_ERR_MODEL, "the span's chord is vertical: no horizontal span to compare");
+        return ctn_cmp_error(c->ctx, c->file, CTN_ERR_MODEL, "the span's chord is vertical: no horizontal span to compare");
     for (int k = 0; k < 3; k++) s->ex[k] = ch[k] / s->l;
     return CTN_OK;
 }
@@ -120,7 +118,7 @@ static int plane_loads(ctn_compare *c, const double *f)
         c->W -= c->P[2 * j + 1];
     }
     if (out > 1e-10 * scale)
-        return ctn_error(c->ctx, CTN_ERR_MODEL, "the span's loads leave the vertical plane of its "
+        return ctn_cmp_error(c->ctx, c->file, CTN_ERR_MODEL, "the span's loads leave the vertical plane of its "
                          "supports: no plane closed form applies");
     return CTN_OK;
 }
@@ -148,14 +146,28 @@ static int loads(ctn_compare *c, const ctn_model *m, const double *f)
     return rc;
 }
 
+/* Kinks of the chain: nodes with a concentrated load (the sag's reading, sag.h). */
+static int kinks(ctn_compare *c, const ctn_model *m, double *work)
+{
+    c->kink = ctn_malloc(c->ctx, c->span.n + 1, 1);
+    if (!c->kink) return CTN_ERR_NOMEM;
+    ctn_sag_node_loads(m, work);
+    for (size_t j = 0; j <= c->span.n; j++) {
+        const double *F = &work[3 * c->node[j]];
+        c->kink[j] = F[0] != 0 || F[1] != 0 || F[2] != 0;
+    }
+    return CTN_OK;
+}
+
 int ctn_cmp_span_loads(ctn_compare *c, const ctn_model *m)
 {
     size_t nn = ctn_model_node_count(m), last = ctn_model_step_count(m) - 1;
     double *f = ctn_malloc(c->ctx, 3 * nn, sizeof *f), *u = ctn_malloc(c->ctx, 3 * nn, sizeof *u);
-    int rc = f && u ? ctn_model_step_loads(m, last, f, u) : CTN_ERR_NOMEM;
+    int rc = f && u ? kinks(c, m, f) : CTN_ERR_NOMEM;
+    if (!rc) rc = ctn_model_step_loads(m, last, f, u);
     ctn_model_gravity(m, c->span.g);
     if (!rc) rc = support_positions(c, m, u);
-    if (!rc) rc = plane(c, f, nn);
+    if (!rc) rc = plane(c, m);
     if (!rc) rc = loads(c, m, f);
     ctn_free(f);
     ctn_free(u);

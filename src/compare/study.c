@@ -103,7 +103,7 @@ int ctn_study_run(ctn_ctx *ctx, const ctn_model *base, const ctn_study_options *
     ctn_study *st = ctn_calloc(ctx, 1, sizeof *st);
     int rc = st ? ctn_compare_create(ctx, base, &c) : CTN_ERR_NOMEM;
     if (!rc && (c->span.loads & CTN_SPAN_POINT))
-        rc = ctn_error(ctx, CTN_ERR_MODEL, "the study needs a span under self-weight or hload, not point loads");
+        rc = ctn_cmp_error(ctx, c->file, CTN_ERR_MODEL, "the study needs a span under self-weight or hload, not point loads");
     if (!rc) st->span = c->span;
     if (!rc) rc = lengths(ctx, st, opt, c->span.L0);
     if (!rc) rc = copy_claims(ctx, st, opt);

@@ -1,37 +1,37 @@
 /* Values of a polyline (FEA nodes, funicular joints) in the span's plane. */
 #include "compare/cmp.h"
+#include "solve/sag.h"
 
 #include <math.h>
 
-/* Height at xm of the parabola through joints i - 1, i, i + 1 (Lagrange form). */
-static double parabola_at(const double *xy, size_t i, double xm)
+/* A compare chain for ctn_sag_chain: its points come from point(c, ud, j, x). */
+typedef struct cmp_chain {
+    const ctn_compare *c;
+    ctn_cmp_point_fn point;
+    const void *ud;
+} cmp_chain;
+
+static void chain_point(const void *ud, size_t j, double x[3])
 {
-    double x0 = xy[2 * i - 2], x1 = xy[2 * i], x2 = xy[2 * i + 2];
-    double y0 = xy[2 * i - 1], y1 = xy[2 * i + 1], y2 = xy[2 * i + 3];
-    if (x0 == x1 || x1 == x2 || x0 == x2) return y1;
-    return y0 * (xm - x1) * (xm - x2) / ((x0 - x1) * (x0 - x2)) + y1 * (xm - x0) * (xm - x2) / ((x1 - x0) * (x1 - x2)) +
-           y2 * (xm - x0) * (xm - x1) / ((x2 - x0) * (x2 - x1));
+    const cmp_chain *cc = ud;
+    cc->point(cc->c, cc->ud, j, x);
 }
 
-/* Mid-span sag: the chord's mid-point height minus the polyline's at x = l/2. Under point
- * loads the chain is straight between joints (linear interpolation); under distributed
- * loads the nodes sample a curve, read by the parabola through the three nodes nearest
- * to mid-span (interpolation error O(h^3), below the discretization's O(h^2)). */
-static int mid_sag(const ctn_span *s, size_t n, const double *xy, double *sag)
+static int chain_kink(const void *ud, size_t j) { return ((const cmp_chain *)ud)->c->kink[j]; }
+
+int ctn_cmp_sag(const ctn_compare *c, ctn_cmp_point_fn point, const void *ud, double *sag)
 {
-    double xm = 0.5 * s->l;
-    for (size_t i = 0; i < n; i++) {
-        double xa = xy[2 * i], xb = xy[2 * i + 2], ya = xy[2 * i + 1], yb = xy[2 * i + 3];
-        if (!((xa <= xm && xm <= xb) || (xb <= xm && xm <= xa))) continue;
-        double t = xb != xa ? (xm - xa) / (xb - xa) : 0.5, y = ya + t * (yb - ya);
-        if (!(s->loads & CTN_SPAN_POINT) && n >= 2) {
-            size_t c = t < 0.5 ? i : i + 1;                 /* the node nearest to mid-span */
-            y = parabola_at(xy, c == 0 ? 1 : c == n ? n - 1 : c, xm);
-        }
-        *sag = 0.5 * s->h - y;
-        return CTN_OK;
-    }
-    return CTN_ERR_DOMAIN;
+    cmp_chain cc = { c, point, ud };
+    ctn_sag_chain ch = { c->span.n, chain_point, chain_kink, &cc, { c->down[0], c->down[1], c->down[2] } };
+    return ctn_sag_mid(&ch, sag);
+}
+
+/* Joint j of a polyline xy (= ud) in the span's plane, as a point in space. */
+static void plane_point(const ctn_compare *c, const void *ud, size_t j, double x[3])
+{
+    const ctn_span *s = &c->span;
+    const double *xy = ud;
+    for (int k = 0; k < 3; k++) x[k] = s->origin[k] + xy[2 * j] * s->ex[k] + xy[2 * j + 1] * s->ey[k];
 }
 
 /* Reaction of the support at joint j (0 or n) on the chain, load P of the joint included:
@@ -49,7 +49,7 @@ int ctn_cmp_polyline_values(const ctn_compare *c, const double *xy, const double
 {
     size_t n = c->span.n;
     double Ra[2], Rb[2];
-    int rc = mid_sag(&c->span, n, xy, &v->sag);
+    int rc = ctn_cmp_sag(c, plane_point, xy, &v->sag);
     if (rc) return rc;
     reaction(c, xy, N, 0, Ra);
     reaction(c, xy, N, n, Rb);

@@ -2,7 +2,6 @@
 #include "io/parse.h"
 #include "solve/problem.h"
 
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,11 +14,12 @@ static int key_int(ctn_line *l, const char *key, int lo, int hi, int *out)
     char what[64];
     snprintf(what, sizeof what, "'%s'", key);
     if (!v) return CTN_OK;
-    int rc = ctn_parse_num(l, what, v, &x);
+    long long n = 0;
+    int rc = ctn_parse_num(l, what, v, &x);                /* not a number, or not finite */
     if (rc) return rc;
-    if (!(x >= lo && x <= hi) || x != floor(x))
+    if (!ctn_parse_integral(v, &n) || n < lo || n > hi)
         return ctn_parse_error(l, "%s must be an integer from %d to %d (found %.40s)", key, lo, hi, v);
-    *out = (int)x;
+    *out = (int)n;
     return CTN_OK;
 }
 
@@ -196,6 +196,7 @@ static int parse_range(ctn_line *l, const char *s, int *first, int *last)
     char buf[64];
     snprintf(buf, sizeof buf, "%s", s);
     char *dash = strchr(buf, '-');
+    while (dash && dash > buf && (dash[-1] == 'e' || dash[-1] == 'E')) dash = strchr(dash + 1, '-');  /* 10e-1 */
     if (dash == buf || (dash && !dash[1]))
         return ctn_parse_error(l, "element range '%.40s' is not of the form FIRST-LAST, ID or all", s);
     if (dash) *dash = '\0';

@@ -120,7 +120,7 @@ static void add_cables(jb *b, cJSON *root, const ctn_model *m, const ctn_solutio
     for (size_t i = 0; a && b->ok && i < m->cables.n; i++) {
         const ctn_cable *c = &m->cables.v[i];
         cJSON *o = item(b, a);
-        double sag = 0;
+        double sag = 0, dmax = 0;
         if (!o) return;
         num(b, o, "node1", m->nodes.v[c->node[0]].id);
         num(b, o, "node2", m->nodes.v[c->node[1]].id);
@@ -128,6 +128,7 @@ static void add_cables(jb *b, cJSON *root, const ctn_model *m, const ctn_solutio
         num(b, o, "last_element", m->elements.v[c->first + c->count - 1].id);
         num(b, o, "length", c->length);
         if (!ctn_solution_cable_sag(m, s, i, &sag)) num(b, o, "sag", sag);
+        if (!ctn_solution_cable_max_sag_from_chord(m, s, i, &dmax)) num(b, o, "max_sag_from_chord", dmax);
     }
 }
 

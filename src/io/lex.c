@@ -56,13 +56,55 @@ int ctn_parse_positional(ctn_line *l, int n, const char *usage)
     return CTN_OK;
 }
 
+/* Digits from *p on (advancing *p): their count, and in *v their value saturated at
+ * cap (v == NULL: skip them). */
+static size_t digits(const char **p, long long *v, long long cap)
+{
+    size_t n = 0;
+    for (; isdigit((unsigned char)**p); (*p)++, n++)
+        if (v) *v = *v > (cap - (**p - '0')) / 10 ? cap : *v * 10 + (**p - '0');
+    return n;
+}
+
+int ctn_parse_integral(const char *tok, long long *out)
+{
+    const long long cap = (long long)INT_MAX + 1;       /* values beyond are out of range */
+    const char *p = tok, *mant;
+    int neg = *p == '-';
+    if (*p == '+' || *p == '-') p++;
+    mant = p;
+    size_t nint = digits(&p, NULL, 0), nfrac = 0;
+    if (*p == '.') p++, nfrac = digits(&p, NULL, 0);
+    if (nint + nfrac == 0) return 0;
+    const char *end_mant = p;
+    long long e = 0;
+    if (*p == 'e' || *p == 'E') {
+        int eneg = p[1] == '-';
+        p += p[1] == '+' || p[1] == '-' ? 2 : 1;
+        if (!digits(&p, &e, 1000000)) return 0;
+        if (eneg) e = -e;
+    }
+    if (*p) return 0;
+    /* value = 0.d1 d2 ... dn x 10^(nint + e): digit k (from 0) has weight 10^(nint + e - 1 - k) */
+    long long point = (long long)nint + e, v = 0, k = 0;
+    for (const char *q = mant; q < end_mant; q++) {
+        if (*q == '.') continue;
+        if (k >= point && *q != '0') return 0;           /* a fractional digit */
+        if (k < point) v = v > (cap - (*q - '0')) / 10 ? cap : v * 10 + (*q - '0');
+        k++;
+    }
+    for (; k < point && v > 0 && v < cap; k++) v = v > cap / 10 ? cap : v * 10;   /* trailing zeros */
+    *out = neg ? -v : v;
+    return 1;
+}
+
 int ctn_parse_int(const ctn_line *l, const char *what, const char *tok, int *out)
 {
-    char b[64], *end;
-    errno = 0;
-    long v = strtol(tok, &end, 10);
-    if (end == tok || *end) return ctn_parse_error(l, "expected an integer for %s, found '%s'", what, ctn_parse_show(tok, b, sizeof b));
-    if (errno == ERANGE || v < 1 || v > INT_MAX)
+    char b[64];
+    long long v = 0;
+    if (!ctn_parse_integral(tok, &v))
+        return ctn_parse_error(l, "expected an integer for %s, found '%s'", what, ctn_parse_show(tok, b, sizeof b));
+    if (v < 1 || v > INT_MAX)
         return ctn_parse_error(l, "%s must be an integer from 1 to %d, found '%s'", what, INT_MAX, ctn_parse_show(tok, b, sizeof b));
     *out = (int)v;
     return CTN_OK;

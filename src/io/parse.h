@@ -25,6 +25,11 @@ const char *ctn_parse_show(const char *tok, char *buf, size_t size);
 
 /* Positional arguments: exactly n (after the directive) before any key=value. */
 int ctn_parse_positional(ctn_line *l, int n, const char *usage);
+/* 1 if tok is a decimal number whose value is exactly an integer ("20", "+20", "20.0",
+ * "2e1", "2000e-2"; not "20.5", "0x14", "inf"), the value in *out (beyond
+ * +-(INT_MAX + 1) saturated there); 0 otherwise. The one rule for every integer. */
+int ctn_parse_integral(const char *tok, long long *out);
+/* An id (or other integer from 1 to INT_MAX) by that rule. */
 int ctn_parse_int(const ctn_line *l, const char *what, const char *tok, int *out);
 int ctn_parse_num(const ctn_line *l, const char *what, const char *tok, double *out);
 /* key=value lookup among tokens from index `from`; NULL if absent (marks it used). */

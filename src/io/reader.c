@@ -1,5 +1,6 @@
-/* The .cable reader: file to memory, lines to tokens, tokens to directives. Numbers are
- * parsed in the C locale whatever the caller's locale is. */
+/* The .cable reader: file to memory, lines to tokens, tokens to directives. Lines end in
+ * LF, CRLF or a lone CR. Numbers are parsed in the C locale whatever the caller's
+ * locale is. */
 #include "io/parse.h"
 #include "catena/io.h"
 
@@ -26,6 +27,16 @@ static int tokenize(ctn_line *l, char *s)
     return CTN_OK;
 }
 
+/* End of the line starting at `start`: the index of its LF, CR or CRLF (len if none);
+ * *next gets the start of the next line. */
+static size_t line_end(const char *text, size_t start, size_t len, size_t *next)
+{
+    size_t i = start;
+    while (i < len && text[i] != '\n' && text[i] != '\r') i++;
+    *next = i + (i + 1 < len && text[i] == '\r' && text[i + 1] == '\n' ? 2 : 1);
+    return i;
+}
+
 static int parse_text(ctn_model *m, ctn_solve_options *opt, const char *name, char *text, size_t len)
 {
     ctn_line l;
@@ -35,8 +46,7 @@ static int parse_text(ctn_model *m, ctn_solve_options *opt, const char *name, ch
     l.file = name;
     size_t start = len >= 3 && !memcmp(text, "\xef\xbb\xbf", 3) ? 3 : 0;   /* UTF-8 BOM */
     for (l.line = 1; start < len || (start == len && l.line == 1); l.line++) {
-        char *nl = memchr(text + start, '\n', len - start);
-        size_t end = nl ? (size_t)(nl - text) : len;
+        size_t next, end = line_end(text, start, len, &next);
         if (memchr(text + start, '\0', end - start))
             return ctn_parse_error(&l, "binary data (a NUL byte) in the model file");
         text[end] = '\0';
@@ -51,8 +61,8 @@ static int parse_text(ctn_model *m, ctn_solve_options *opt, const char *name, ch
             }
         }
         if (rc) return rc;
-        start = end + 1;
-        if (!nl) break;
+        if (end == len) break;
+        start = next;
     }
     ctn_model_set_origin(m, name, 0);
     return CTN_OK;

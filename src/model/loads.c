@@ -168,5 +168,6 @@ int ctn_model_validate(const ctn_model *m)
     for (size_t i = 0; i < m->nodes.n && !fixed; i++) fixed = m->nodes.v[i].fix != 0;
     if (!fixed) return ctn_error(m->ctx, CTN_ERR_MODEL, "%s%sthe model has no supports (no node has fix=)", m->file, *m->file ? ": " : "");
     int rc = check_hload_targets(m);
-    return rc ? rc : check_unconnected(m);
+    if (!rc) rc = check_unconnected(m);
+    return rc ? rc : ctn_model_check_parts(m);
 }

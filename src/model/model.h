@@ -122,6 +122,10 @@ int ctn_model_node_lookup(const ctn_model *m, int id, int *index);
 /* Copy a caller's versioned spec struct (its first field is its size) into dst, whose
  * fields the library has defaulted: only the bytes the caller's struct has are taken. */
 void ctn_spec_copy(void *dst, size_t dst_size, const void *src);
+/* Every part of the model (a set of elements joined through shared nodes) must hold a
+ * node with at least one fixed DOF; else CTN_ERR_MODEL naming the part's elements, at
+ * the line of its first element (parts.c). Linear time. */
+int ctn_model_check_parts(const ctn_model *m);
 
 int ctn_model_find_section(const ctn_model *m, const char *name);
 int ctn_model_find_material(const ctn_model *m, const char *name);

@@ -72,3 +72,4 @@ void ctn_model_gravity(const ctn_model *m, double g[3])
 const char *ctn_model_force_unit(const ctn_model *m) { return m ? m->force_unit : ""; }
 const char *ctn_model_length_unit(const ctn_model *m) { return m ? m->length_unit : ""; }
 double ctn_model_mpa_factor(const ctn_model *m) { return m ? m->mpa : 0.0; }
+const char *ctn_model_file(const ctn_model *m) { return m ? m->file : ""; }

@@ -1,56 +1,72 @@
-/* Post-processing of a solution: mid-span sag of generated cables. */
+/* Post-processing of a solution: the sag of generated cables (solve/sag.h). */
 #include "model/model.h"
+#include "solve/sag.h"
 #include "solve/solution.h"
 
 #include <math.h>
 
-static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-/* Current position of node index i. */
-static void current(const ctn_model *m, const ctn_solution *s, int i, double x[3])
+/* Node index k (0 or 1) of element e: the one place that knows element storage. */
+/* Node k of a two-node element: 0 its first, 1 its last. */
+static size_t elem_node(const ctn_model *m, size_t e, int k)
 {
-    for (int k = 0; k < 3; k++) x[k] = m->nodes.v[i].X[k] + ctn_solution_displacements(s)[3 * (size_t)i + (size_t)k];
+    return (size_t)ctn_elem_nodes(m, e)[k ? m->elements.v[e].nnodes - 1 : 0];
 }
 
-/* Unit vectors: g (along gravity, or 0) and h (the direction along which "mid-span"
- * is measured: the chord's horizontal projection, or the chord). */
-static void axes(const ctn_model *m, const double A[3], const double B[3], double g[3], double h[3])
+typedef struct cable_chain {
+    const ctn_model *m;
+    const ctn_solution *s;
+    const ctn_cable *c;
+} cable_chain;
+
+/* Node index of node j of the cable's chain (its elements run from end 0 to end 1). */
+static size_t chain_node(const cable_chain *cc, size_t j)
 {
-    double gn = sqrt(dot3(m->gravity, m->gravity)), c[3] = { B[0] - A[0], B[1] - A[1], B[2] - A[2] };
-    for (int k = 0; k < 3; k++) g[k] = gn > 0 ? m->gravity[k] / gn : 0;
-    double cg = dot3(c, g);
-    for (int k = 0; k < 3; k++) h[k] = c[k] - cg * g[k];
-    double hn = sqrt(dot3(h, h)), cn = sqrt(dot3(c, c));
-    if (!(hn > 1e-12 * cn)) {
-        for (int k = 0; k < 3; k++) h[k] = c[k];
-        hn = cn;
-    }
-    for (int k = 0; k < 3; k++) h[k] /= hn;
+    return j == 0 ? (size_t)cc->c->node[0] : elem_node(cc->m, cc->c->first + j - 1, 1);
+}
+
+static void point(const void *ud, size_t j, double x[3])
+{
+    const cable_chain *cc = ud;
+    size_t i = chain_node(cc, j);
+    for (int k = 0; k < 3; k++) x[k] = cc->m->nodes.v[i].X[k] + ctn_solution_displacements(cc->s)[3 * i + (size_t)k];
+}
+
+static int kink(const void *ud, size_t j)
+{
+    const cable_chain *cc = ud;
+    double F[3];
+    ctn_sag_node_load(cc->m, chain_node(cc, j), F);
+    return F[0] != 0 || F[1] != 0 || F[2] != 0;
+}
+
+static int cable_chain_of(const ctn_model *m, const ctn_solution *s, size_t i, cable_chain *cc,
+                          ctn_sag_chain *ch)
+{
+    if (!m || !s || i >= m->cables.n || s->nn != m->nodes.n) return CTN_ERR_INVALID;
+    cc->m = m;
+    cc->s = s;
+    cc->c = &m->cables.v[i];
+    ch->n = cc->c->count;
+    ch->point = point;
+    ch->kink = kink;
+    ch->ud = cc;
+    ctn_sag_down(m, ch->down);
+    return CTN_OK;
 }
 
 int ctn_solution_cable_sag(const ctn_model *m, const ctn_solution *s, size_t i, double *sag)
 {
-    if (!m || !s || !sag || i >= m->cables.n) return CTN_ERR_INVALID;
-    const ctn_cable *c = &m->cables.v[i];
-    double A[3], B[3], g[3], h[3], M[3];
-    current(m, s, c->node[0], A);
-    current(m, s, c->node[1], B);
-    axes(m, A, B, g, h);
-    for (int k = 0; k < 3; k++) M[k] = 0.5 * (A[k] + B[k]);
-    double tm = dot3(M, h);
-    *sag = 0;
-    for (size_t e = c->first; e < c->first + c->count; e++) {
-        double P[3], Q[3];
-        current(m, s, ctn_elem_nodes(m, e)[0], P);
-        current(m, s, ctn_elem_nodes(m, e)[1], Q);
-        double tp = dot3(P, h) - tm, tq = dot3(Q, h) - tm;
-        if ((tp <= 0 && tq >= 0) || (tp >= 0 && tq <= 0)) {
-            double t = tq != tp ? -tp / (tq - tp) : 0.5;
-            double X[3];
-            for (int k = 0; k < 3; k++) X[k] = P[k] + t * (Q[k] - P[k]) - M[k];
-            *sag = dot3(g, g) > 0 ? dot3(X, g) : sqrt(dot3(X, X));
-            return CTN_OK;
-        }
-    }
-    return CTN_ERR_DOMAIN;     /* the cable never crosses mid-span (folded back) */
+    cable_chain cc;
+    ctn_sag_chain ch;
+    int rc = sag ? cable_chain_of(m, s, i, &cc, &ch) : CTN_ERR_INVALID;
+    return rc ? rc : ctn_sag_mid(&ch, sag);
+}
+
+int ctn_solution_cable_max_sag_from_chord(const ctn_model *m, const ctn_solution *s, size_t i, double *d)
+{
+    cable_chain cc;
+    ctn_sag_chain ch;
+    int rc = d ? cable_chain_of(m, s, i, &cc, &ch) : CTN_ERR_INVALID;
+    if (!rc) *d = ctn_sag_max_from_chord(&ch);
+    return rc ? rc : isfinite(*d) ? CTN_OK : CTN_ERR_DOMAIN;
 }

@@ -151,6 +151,30 @@ PY
 fi
 finish "compare point loads"
 
+# ---- one sag: solve and compare report the same number, odd and even n --------------------
+for n in 19 20 21; do
+    sed "s/n=20 /n=$n /" examples/paper/s250.8777.cable >"$T/n$n.cable"
+    "$BIN" solve "$T/n$n.cable" --json >"$T/n$n.solve.json" 2>"$T/err" || WHY+=("n=$n: solve exit $?")
+    "$BIN" compare "$T/n$n.cable" --json >"$T/n$n.compare.json" 2>"$T/err" || WHY+=("n=$n: compare exit $?")
+done
+if [ "$have_python" = 1 ]; then
+    msg=$(python3 - "$T" <<'PY'
+import json, sys
+T = sys.argv[1]; err = []; sag = {}
+for n in (19, 20, 21):
+    s = json.load(open("%s/n%d.solve.json" % (T, n)))["cables"][0]["sag"]
+    c = json.load(open("%s/n%d.compare.json" % (T, n)))
+    if s != c["fea"]["sag"]: err.append("n=%d: solve %r, compare %r" % (n, s, c["fea"]["sag"]))
+    sag[n] = s
+    ref = c["elastic_catenary"]["sag"]
+# the sag approaches the catenary monotonically (odd n does not dip below its neighbours)
+if not (sag[19] > sag[20] > sag[21]): err.append("not monotone in n: %r" % sag)
+print("; ".join(err)); sys.exit(1 if err else 0)
+PY
+) || WHY+=("$msg")
+fi
+finish "one sag: solve = compare"
+
 # ---- errors -----------------------------------------------------------------------------------
 expect() {   # expect CODE TEXT ARGS...: exit code and a stderr substring
     local code=$1 text=$2
@@ -170,5 +194,52 @@ expect 2 "not a single span" compare "$T/two.cable"
 sed 's/maxit=50/maxit=1/' examples/paper/s250.8777.cable >"$T/maxit.cable"
 expect 3 "did not converge" compare "$T/maxit.cable"
 finish "compare errors"
+
+# ---- every message about the model starts with its file name ---------------------------------
+# expect_named CODE FILE TEXT CMD...: exit CODE, stderr "catena: FILE:" ... TEXT (one line).
+expect_named() {
+    local code=$1 file=$2 text=$3
+    shift 3
+    "$BIN" "$@" >"$T/out" 2>"$T/err"
+    local rc=$?
+    [ "$rc" = "$code" ] || WHY+=("'$*': exit $rc, expected $code: $(head -c 300 "$T/err")")
+    head -c $((${#file} + 9)) "$T/err" | grep -qxF "catena: $file:" ||
+        WHY+=("'$*': the message does not start with 'catena: $file:': $(head -c 300 "$T/err")")
+    grep -qF -- "$text" "$T/err" || WHY+=("'$*': stderr lacks '$text': $(head -c 300 "$T/err")")
+    [ "$(wc -l <"$T/err")" = 1 ] || WHY+=("'$*': not one line: $(head -c 300 "$T/err")")
+}
+HEAD='units kN m
+material steel E=2.0e8 strain=engineering
+section rod material=steel A=1e-4'
+printf '%s\n' "$HEAD" 'node 1 0 0 0 fix=xyz' 'node 2 10 0 0 fix=xyz' 'node 3 5 -1 0' \
+    'element 1 1 3 section=rod' 'element 2 3 2 section=rod' >"$T/noload.cable"
+expect_named 2 "$T/noload.cable" "neither gravity nor loads" compare "$T/noload.cable"
+printf '%s\n' "$HEAD" 'node 1 0 0 0 fix=xyz' 'node 2 0 -10 0 fix=xyz' 'node 3 1 -5 0' \
+    'element 1 1 3 section=rod' 'element 2 3 2 section=rod' 'load 3 0 -1 0' >"$T/vertical.cable"
+expect_named 2 "$T/vertical.cable" "chord is vertical" compare "$T/vertical.cable"
+printf '%s\n' "$HEAD" 'gravity 0 -1 0' 'node 1 0 0 0 fix=xyz' 'node 2 10 0 0 fix=xyz' 'node 3 5 -1 0' \
+    'element 1 1 3 section=rod' 'element 2 3 2 section=rod' 'load 3 0 -1 0.5' >"$T/outofplane.cable"
+expect_named 2 "$T/outofplane.cable" "leave the vertical plane" compare "$T/outofplane.cable"
+printf '%s\n' "$HEAD" 'section heavy material=steel A=1e-4 w=0.1' 'gravity 0 -1 0' 'node 1 0 0 0 fix=xyz' 'node 2 10 0 0 fix=xyz' 'node 3 5 -1 0' \
+    'element 1 1 3 section=rod' 'element 2 3 2 section=heavy' >"$T/differ.cable"
+expect_named 2 "$T/differ.cable" "elements differ" compare "$T/differ.cable"
+printf '%s\n' "$HEAD" 'node 1 0 0 0 fix=xyz' 'node 2 10 0 0 fix=xyz' 'node 3 5 -1 0' 'node 4 5 -3 0 fix=xyz' \
+    'element 1 1 3 section=rod' 'element 2 3 2 section=rod' 'element 3 3 4 section=rod' 'load 3 0 -1 0' >"$T/joins.cable"
+expect_named 2 "$T/joins.cable" "not a single span" compare "$T/joins.cable"
+expect_named 2 "$T/two.cable" "not a single span" compare "$T/two.cable"
+# a bad model: the model checks' own file:line
+printf '%s\n' "$HEAD" 'node 1 0 0 0 fix=xyz' 'node 2 10 0 0 fix=xyz' 'node 3 5 -1 0' \
+    'element 1 1 3 section=rod' 'element 2 3 2 section=rod' 'load 3 0 -1 0' \
+    'node 4 0 5 0' 'node 5 5 5 0' 'element 9 4 5 section=rod' >"$T/part.cable"
+expect_named 2 "$T/part.cable:12" "no support reaches" compare "$T/part.cable"
+expect_named 2 "$T/part.cable:12" "no support reaches" study "$T/part.cable" --sweep 2
+expect_named 2 "$T/part.cable:12" "no support reaches" convergence "$T/part.cable" --n 4
+# study and convergence: spans they cannot take
+expect_named 2 "$T/chain.cable" "not point loads" study "$T/chain.cable" --sweep 2
+expect_named 2 "$T/chain.cable" "self-weight only" convergence "$T/chain.cable" --n 4
+expect_named 2 "$T/two.cable" "not a single span" study examples/paper/s250.8777.cable "$T/two.cable" --sweep 2
+expect_named 2 "$T/noload.cable" "neither gravity nor loads" convergence "$T/noload.cable" --n 4
+expect_named 3 "$T/maxit.cable" "did not converge" compare "$T/maxit.cable"
+finish "compare errors name the model file"
 
 cli_summary

@@ -17,7 +17,8 @@
 #   -q -o DIR   no temporary or partial file left in DIR; exit 2/4: DIR holds nothing;
 #               exit 0: result.json (valid, "converged": true), nodes.csv, elements.csv;
 #               exit 3: those three files (result.json with "converged": false) or none;
-#   CRLF        the same file with DOS line endings: same code, same message and line.
+#   CRLF        the same file with DOS line endings: same code, same message and line;
+#   CR          the same file with old Mac line endings (a lone CR): likewise.
 # Hostile inputs that cannot be committed (empty, binary, huge lines, directories,
 # missing files) are generated into a temporary directory below.
 #
@@ -158,7 +159,7 @@ run_case() {
 }
 
 # ---- the committed corpus -------------------------------------------------------------
-mkdir -p "$T/crlf"
+mkdir -p "$T/crlf" "$T/cr"
 ncorpus=0
 for f in tests/errors/*.cable; do
     name=$(basename "$f" .cable)
@@ -184,6 +185,10 @@ for f in tests/errors/*.cable; do
     c=$T/crlf/$name.cable
     sed 's/\r*$/\r/' "$f" >"$c"
     check_plain "$c" "$code" "${want//FILE/$c}" CRLF
+    # ... and with CR-only line endings.
+    c=$T/cr/$name.cable
+    sed 's/\r*$//' "$f" | tr '\n' '\r' >"$c"
+    check_plain "$c" "$code" "${want//FILE/$c}" CR
     finish "$name"
 done
 [ "$ncorpus" -ge 45 ] || { WHY+=("only $ncorpus corpus files (at least 45 expected)"); finish corpus_size; }
@@ -266,6 +271,26 @@ run_case gen_ok_no_final_newline "$G/ok_no_final_newline.cable" 0 "" all
 
 { printf '%s\n' "$PAPER"; printf 'frobnicate\n'; } | sed 's/$/\r/' >"$G/crlf_error.cable"
 run_case gen_crlf_error_line "$G/crlf_error.cable" 2 "FILE:8: unknown directive 'frobnicate'" all
+
+{ printf '%s\n' "$PAPER"; printf 'frobnicate\n'; } | tr '\n' '\r' >"$G/cr_error.cable"
+run_case gen_cr_error_line "$G/cr_error.cable" 2 "FILE:8: unknown directive 'frobnicate'" all
+
+# An error on line 5 of a CR-only file, after a blank line and a comment line.
+printf 'units kN m\r\r# a comment\rmaterial steel E=2.0e8\rbogus 5\r' >"$G/cr_line5.cable"
+run_case gen_cr_error_line5 "$G/cr_line5.cable" 2 "FILE:5: unknown directive 'bogus'" all
+
+# CR, LF and CRLF line ends mixed in one file: each ends one line.
+printf 'units kN m\rmaterial steel E=2.0e8\r\nsection s material=steel A=1\n\r\rbogus 6\n' >"$G/mixed_ends.cable"
+run_case gen_mixed_line_ends "$G/mixed_ends.cable" 2 "FILE:6: unknown directive 'bogus'" all
+
+# A CR-only copy of a model solves to the same answer (same JSON, byte for byte).
+printf '%s\n' "$PAPER" >"$G/lf.cable"
+printf '%s\n' "$PAPER" | tr '\n' '\r' >"$G/cr.cable"
+"$BIN" solve "$G/lf.cable" --json >"$T/lf.json" 2>"$T/err" || WHY+=("LF copy: exit $?: $(head -c 300 "$T/err")")
+"$BIN" solve "$G/cr.cable" --json >"$T/cr.json" 2>"$T/err" || WHY+=("CR copy: exit $?: $(head -c 300 "$T/err")")
+cmp -s "$T/lf.json" "$T/cr.json" || WHY+=("the CR-only copy gives another answer than the LF file")
+grep -q '"converged":[[:space:]]*true' "$T/cr.json" || WHY+=("the CR-only copy did not converge")
+finish gen_cr_only_same_answer
 
 mkdir -p "$G/a_directory.cable"
 run_case gen_directory_as_model "$G/a_directory.cable" 4 "FILE: " all

@@ -189,6 +189,43 @@ for f in examples/paper/*.cable; do
 done
 [ "$n_examples" = 4 ] || { WHY+=("expected 4 paper examples, found $n_examples"); finish examples; }
 
+# ---- the sag of a vertical cable ------------------------------------------------------------
+# A cable hanging along gravity (vertical chord), pushed sideways at its middle node: its
+# sag is the largest distance of the deformed cable from the chord, not 0, in `sag` and
+# `max_sag_from_chord` (docs/format.md, `cables`).
+cat >"$T/vertical.cable" <<'CABLE'
+units kN m
+material steel E=2.0e8 strain=engineering
+section rod material=steel A=1e-4 w=0.1
+gravity 0 -1 0
+node 1 0 0 0 fix=xyz
+node 2 0 -10 0 fix=xyz
+cable 1 2 section=rod n=10 length=10.2 shape=straight
+load 7 1 0 0.5
+CABLE
+"$BIN" solve "$T/vertical.cable" --json >"$T/vertical.json" 2>"$T/err"
+rc=$?
+[ "$rc" = 0 ] || WHY+=("exit $rc: $(head -c 300 "$T/err")")
+if [ "$have_python" = 1 ] && [ "$rc" = 0 ]; then
+    msg=$(python3 - "$T/vertical.json" <<'PY'
+import json, math, sys
+d = json.load(open(sys.argv[1]))
+c = d["cables"][0]
+# distance of each deformed node from the chord, the line x = z = 0
+dist = max(math.hypot(n["x"] + n["ux"], n["z"] + n["uz"]) for n in d["nodes"])
+err = []
+if not dist > 0.5: err.append("the cable did not move sideways (%g)" % dist)
+for k in ("sag", "max_sag_from_chord"):
+    if k not in c or abs(c[k] - dist) > 1e-9 * dist: err.append("%s %r, distance from the chord %r" % (k, c.get(k), dist))
+print("; ".join(err)); sys.exit(1 if err else 0)
+PY
+) || WHY+=("$msg")
+fi
+"$BIN" solve "$T/vertical.cable" >"$T/out" 2>&1
+grep -q "mid-span sag 0 m" "$T/out" && WHY+=("the summary says sag 0")
+grep -q "max sag from chord" "$T/out" || WHY+=("the summary lacks the max sag from chord")
+finish "sag of a vertical cable"
+
 # ---- the complete models of docs/format.md ------------------------------------------------
 # Every ```cable block of the format reference is a whole model; it must give exit 0, or
 # the code of a "# exit: N" line in the block.
