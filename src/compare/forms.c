@@ -45,8 +45,8 @@ static int polygon(ctn_compare *c, int k)
     ctn_funicular_in in = { c->span.l, c->span.h, n, c->l0, k ? c->EA : NULL, c->P + 2 };
     ctn_funicular out;
     ctn_form f = k ? CTN_FORM_EFUNICULAR : CTN_FORM_FUNICULAR;
-    c->poly[k] = ctn_malloc(c->ctx, 3 * n + 2, sizeof(double));
-    if (!c->poly[k]) return CTN_ERR_NOMEM;
+    c->has &= ~(1u << f);                            /* solved again: with new loads */
+    if (!c->poly[k] && !(c->poly[k] = ctn_malloc(c->ctx, 3 * n + 2, sizeof(double)))) return CTN_ERR_NOMEM;
     double *xy = c->poly[k], *N = xy + 2 * (n + 1);
     int rc = ctn_funicular_solve(NULL, &in, xy, N, &out);
     if (rc == CTN_ERR_NOMEM) return ctn_error(c->ctx, rc, "out of memory");
