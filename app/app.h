@@ -27,6 +27,9 @@ int ctn_app_model_args(const char *cmd, int argc, char **argv, ctn_model_args *a
 
 /* Exit code for a failed library call, after printing its message to stderr. */
 int ctn_app_fail(ctn_ctx *ctx, int status);
+/* Flush f and check it for a write error; CTN_EXIT_OK, or CTN_EXIT_IO after printing
+ * "catena: NAME: write error: ..." to stderr. */
+int ctn_app_flush(FILE *f, const char *name);
 
 /* Human-readable result summary. */
 void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s);
@@ -57,7 +60,8 @@ void ctn_app_print_diffs(FILE *out, const ctn_compare_values *v, const ctn_compa
  * ref when ref is not NULL); NULL when out of memory. */
 cJSON *ctn_app_values_json(cJSON *parent, const char *key, const ctn_compare_values *v,
                            const ctn_compare_values *ref);
-/* Print root on stdout; exit code (CTN_EXIT_IO when root is NULL: out of memory). */
+/* Print root on stdout, flushed and checked; exit code (CTN_EXIT_IO when root is NULL:
+ * out of memory, or when stdout fails, after a message). */
 int ctn_app_print_json(cJSON *root);
 /* Render the figures names[0..n-1] in dir with gnuplot, or say how to. Exit code. */
 int ctn_app_render(ctn_ctx *ctx, const char *dir, const char *const *names, size_t n, int quiet);

@@ -1,6 +1,7 @@
 /* catena: command-line entry, dispatch to sub-commands. */
 #include "app.h"
 
+#include <errno.h>
 #include <string.h>
 
 static void usage(FILE *f)
@@ -26,7 +27,16 @@ int ctn_app_fail(ctn_ctx *ctx, int status)
     return CTN_EXIT_IO;
 }
 
-int main(int argc, char **argv)
+int ctn_app_flush(FILE *f, const char *name)
+{
+    errno = 0;
+    int failed = fflush(f) != 0, err = errno;
+    if (!failed && !ferror(f)) return CTN_EXIT_OK;
+    fprintf(stderr, "catena: %s: write error: %s\n", name, err ? strerror(err) : "I/O error");
+    return CTN_EXIT_IO;
+}
+
+static int dispatch(int argc, char **argv)
 {
     if (argc < 2) {
         usage(stderr);
@@ -43,4 +53,22 @@ int main(int argc, char **argv)
     fprintf(stderr, "catena: unknown command '%s'\n", argv[1]);
     usage(stderr);
     return CTN_EXIT_USAGE;
+}
+
+/* Whatever the command printed must reach stdout: a write error the command did not
+ * report itself (it exits CTN_EXIT_IO when it did) makes the exit code CTN_EXIT_IO. */
+int main(int argc, char **argv)
+{
+    int code = dispatch(argc, argv);
+    if (code == CTN_EXIT_IO) {
+        fclose(stdout);
+        return code;
+    }
+    if (ctn_app_flush(stdout, "stdout")) return CTN_EXIT_IO;
+    errno = 0;
+    if (fclose(stdout)) {
+        fprintf(stderr, "catena: stdout: close failed: %s\n", errno ? strerror(errno) : "I/O error");
+        return CTN_EXIT_IO;
+    }
+    return code;
 }
