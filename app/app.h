@@ -48,6 +48,9 @@ int ctn_app_fail(ctn_ctx *ctx, int status);
 /* The same for a failure about the model read from path: the message is printed with
  * the "path:" prefix (added unless the library's message already starts with it). */
 int ctn_app_fail_model(ctn_ctx *ctx, int status, const char *path);
+/* Flush f and check it for a write error; CTN_EXIT_OK, or CTN_EXIT_IO after printing
+ * "catena: NAME: write error: ..." to stderr. */
+int ctn_app_flush(FILE *f, const char *name);
 
 /* Warn (on out) when a converged solution is not stable: unstable (negative eigenvalues
  * of the tangent) or semi-definite (a zero one), with the node and direction. */
@@ -84,7 +87,8 @@ void ctn_app_print_diffs(FILE *out, const ctn_compare_values *v, const ctn_compa
  * ref when ref is not NULL); NULL when out of memory. */
 cJSON *ctn_app_values_json(cJSON *parent, const char *key, const ctn_compare_values *v,
                            const ctn_compare_values *ref);
-/* Print root on stdout; exit code (CTN_EXIT_IO when root is NULL: out of memory). */
+/* Print root on stdout, flushed and checked; exit code (CTN_EXIT_IO when root is NULL:
+ * out of memory, or when stdout fails, after a message). */
 int ctn_app_print_json(cJSON *root);
 /* Render the figures names[0..n-1] in dir with gnuplot, or say how to. Exit code. */
 int ctn_app_render(ctn_ctx *ctx, const char *dir, const char *const *names, size_t n, int quiet);

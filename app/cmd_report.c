@@ -108,7 +108,7 @@ int ctn_app_print_json(cJSON *root)
     fputs(text, stdout);
     fputc('\n', stdout);
     cJSON_free(text);
-    return CTN_EXIT_OK;
+    return ctn_app_flush(stdout, "stdout");
 }
 
 int ctn_app_render(ctn_ctx *ctx, const char *dir, const char *const *names, size_t n, int quiet)

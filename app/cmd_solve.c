@@ -4,22 +4,17 @@
 #include <string.h>
 
 
+/* The results: files with -o, then JSON or the summary on stdout, checked. Exit code. */
 static int emit(ctn_ctx *ctx, const ctn_model_args *a, const ctn_model *m, const ctn_solution *s)
 {
-    int rc = CTN_OK;
-    if (a->outdir) rc = ctn_write_results(ctx, a->outdir, m, s);
+    int rc = a->outdir ? ctn_write_results(ctx, a->outdir, m, s) : CTN_OK;
     if (!rc && a->json) {
-        char *json = NULL;
-        rc = ctn_result_json(ctx, m, s, 1, &json);
-        if (!rc) {
-            fputs(json, stdout);
-            fputc('\n', stdout);
-        }
-        ctn_json_free(json);
+        rc = ctn_write_json(ctx, stdout, m, s, 1);
+        if (!rc) putchar('\n');
     } else if (!rc && !a->quiet) {
         ctn_print_summary(stdout, m, s);
     }
-    return rc;
+    return rc ? ctn_app_fail(ctx, rc) : ctn_app_flush(stdout, "stdout");
 }
 
 static const char *method_title(ctn_method m)
@@ -50,9 +45,8 @@ int ctn_cmd_solve(int argc, char **argv)
         }
         rc = ctn_solve(ctx, m, &opt, &s);
     }
-    if (!rc) rc = emit(ctx, &a, m, s);
     if (rc) code = ctn_app_fail(ctx, rc);
-    else {
+    else if (!(code = emit(ctx, &a, m, s))) {
         ctn_solve_summary sum;
         ctn_solution_summary(s, &sum);
         code = sum.reason == CTN_CONVERGED ? CTN_EXIT_OK : CTN_EXIT_NOCONV;

@@ -1,6 +1,7 @@
 /* catena: command-line entry, dispatch to sub-commands (the table is in help.c). */
 #include "app.h"
 
+#include <errno.h>
 #include <string.h>
 
 int ctn_app_fail(ctn_ctx *ctx, int status)
@@ -38,7 +39,17 @@ int ctn_app_fail_model(ctn_ctx *ctx, int status, const char *path)
     return CTN_EXIT_IO;
 }
 
-int main(int argc, char **argv)
+int ctn_app_flush(FILE *f, const char *name)
+{
+    errno = 0;
+    int failed = fflush(f) != 0, err = errno;
+    if (!failed && !ferror(f)) return CTN_EXIT_OK;
+    fprintf(stderr, "catena: %s: write error: %s\n", name, err ? strerror(err) : "I/O error");
+    return CTN_EXIT_IO;
+}
+
+
+static int dispatch(int argc, char **argv)
 {
     if (argc < 2) {
         ctn_app_usage(stderr);
@@ -62,5 +73,23 @@ int main(int argc, char **argv)
     }
     int code = c->run(argc - 1, argv + 1);
     if (code == CTN_EXIT_USAGE) fprintf(stderr, "catena: 'catena %s --help' lists the options\n", name);
+    return code;
+}
+
+/* Whatever the command printed must reach stdout: a write error the command did not
+ * report itself (it exits CTN_EXIT_IO when it did) makes the exit code CTN_EXIT_IO. */
+int main(int argc, char **argv)
+{
+    int code = dispatch(argc, argv);
+    if (code == CTN_EXIT_IO) {
+        fclose(stdout);
+        return code;
+    }
+    if (ctn_app_flush(stdout, "stdout")) return CTN_EXIT_IO;
+    errno = 0;
+    if (fclose(stdout)) {
+        fprintf(stderr, "catena: stdout: close failed: %s\n", errno ? strerror(errno) : "I/O error");
+        return CTN_EXIT_IO;
+    }
     return code;
 }

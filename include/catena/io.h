@@ -4,13 +4,16 @@
  * The .cable format is documented in docs/format.md. Errors carry "file:line: what
  * was expected, what was found" in the context's message and CTN_ERR_MODEL (bad
  * content) or CTN_ERR_IO (unreadable file). Number I/O is locale-independent.
- * Every writer is atomic: it writes a temporary file beside the target and renames
- * it, so no half-written file is left after a failure.
+ * Every file writer is atomic: it writes a temporary file beside the target and renames
+ * it, so no half-written file is left after a failure. Results are streamed (through a
+ * fixed buffer), never built in memory first, except by ctn_result_json, which returns
+ * the text.
  */
 #ifndef CATENA_IO_H
 #define CATENA_IO_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "catena/core.h"
 #include "catena/model.h"
@@ -35,13 +38,24 @@ int ctn_model_read_string(ctn_ctx *ctx, const char *name, const char *text, size
                           ctn_model **out);
 
 /* The result as JSON text (see docs/format.md, "Results"). *json is allocated; free it
- * with ctn_json_free. pretty: indent for people. */
+ * with ctn_json_free. pretty: indent for people (the layout of result.json), else no
+ * whitespace. A result holding a NaN or Inf is refused with CTN_ERR_INVALID. */
 int ctn_result_json(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s, int pretty,
                     char **json);
+/* Free the text of ctn_result_json; NULL is a harmless no-op. */
 void ctn_json_free(char *json);
+/* The same text as ctn_result_json, streamed to out (no trailing newline), which is
+ * then flushed; memory use does not grow with the result. CTN_ERR_INVALID (nothing
+ * written) for a NaN or Inf; CTN_ERR_IO when a write or the flush fails: the message
+ * says "stdout: write error: <strerror>" for stdout. The caller keeps out open. */
+int ctn_write_json(ctn_ctx *ctx, FILE *out, const ctn_model *m, const ctn_solution *s,
+                   int pretty);
 
 /* Write result.json, nodes.csv and elements.csv into directory dir (created if
- * missing), each atomically. */
+ * missing). Each file is streamed into a temporary beside its target and synced;
+ * only when all three are complete are they renamed onto their targets, so a failure
+ * (CTN_ERR_IO, CTN_ERR_NOMEM, CTN_ERR_INVALID for a NaN or Inf, checked before
+ * anything is written) leaves no temporary and the older files, if any, untouched. */
 int ctn_write_results(ctn_ctx *ctx, const char *dir, const ctn_model *m,
                       const ctn_solution *s);
 

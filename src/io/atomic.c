@@ -1,4 +1,5 @@
-/* Atomic file output: write a temporary file beside the target, then rename. */
+/* Atomic file output: a temporary file beside the target, written through a sink,
+ * synced, then renamed. */
 #include "io/atomic.h"
 #include "catena/io.h"
 
@@ -9,59 +10,93 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-int ctn_atomic_stage(ctn_ctx *ctx, const char *path, const char *data, size_t len, char **out)
+static void release(ctn_atomic_file *f)
 {
-    *out = NULL;
-    size_t pl = strlen(path);
-    char *tmp = ctn_malloc(ctx, pl + 16, 1);
-    if (!tmp) return CTN_ERR_NOMEM;
-    snprintf(tmp, pl + 16, "%s.tmp.XXXXXX", path);
-    int fd = mkstemp(tmp), rc = CTN_OK;
-    if (fd < 0) {
-        rc = ctn_error(ctx, CTN_ERR_IO, "%s: cannot create: %s", path, strerror(errno));
-        ctn_free(tmp);
-        return rc;
-    }
-    if (fchmod(fd, 0644)) rc = ctn_error(ctx, CTN_ERR_IO, "%s: chmod failed: %s", path, strerror(errno));
-    size_t done = 0;
-    while (!rc && done < len) {
-        ssize_t k = write(fd, data + done, len - done);
-        if (k < 0 && errno == EINTR) continue;
-        if (k <= 0) { rc = ctn_error(ctx, CTN_ERR_IO, "%s: write failed: %s", path, strerror(errno)); break; }
-        done += (size_t)k;
-    }
-    if (!rc && fsync(fd)) rc = ctn_error(ctx, CTN_ERR_IO, "%s: fsync failed: %s", path, strerror(errno));
-    if (close(fd) && !rc) rc = ctn_error(ctx, CTN_ERR_IO, "%s: close failed: %s", path, strerror(errno));
-    if (rc) {
-        ctn_atomic_abort(tmp);
-        return rc;
-    }
-    *out = tmp;
-    return CTN_OK;
+    ctn_free(f->path);
+    ctn_free(f->tmp);
+    *f = (ctn_atomic_file)CTN_ATOMIC_FILE_INIT;
 }
 
-int ctn_atomic_commit(ctn_ctx *ctx, char *tmp, const char *path)
+int ctn_atomic_open(ctn_ctx *ctx, const char *path, ctn_atomic_file *f)
 {
-    int rc = CTN_OK;
-    if (rename(tmp, path)) {
-        rc = ctn_error(ctx, CTN_ERR_IO, "%s: rename failed: %s", path, strerror(errno));
-        unlink(tmp);
+    size_t pl = strlen(path);
+    *f = (ctn_atomic_file)CTN_ATOMIC_FILE_INIT;
+    f->ctx = ctx;
+    f->path = ctn_malloc(ctx, pl + 1, 1);
+    f->tmp = f->path ? ctn_malloc(ctx, pl + 16, 1) : NULL;
+    if (!f->tmp) {
+        release(f);
+        return CTN_ERR_NOMEM;
     }
-    ctn_free(tmp);
+    memcpy(f->path, path, pl + 1);
+    snprintf(f->tmp, pl + 16, "%s.tmp.XXXXXX", path);
+    f->fd = mkstemp(f->tmp);
+    if (f->fd < 0) {
+        int rc = ctn_error(ctx, CTN_ERR_IO, "%s: cannot create: %s", path, strerror(errno));
+        release(f);
+        return rc;
+    }
+    if (!fchmod(f->fd, 0644)) return CTN_OK;
+    int rc = ctn_error(ctx, CTN_ERR_IO, "%s: chmod failed: %s", path, strerror(errno));
+    ctn_atomic_abort(f);
     return rc;
 }
 
-void ctn_atomic_abort(char *tmp)
+static int fd_write(void *ud, const char *p, size_t n)
 {
-    if (!tmp) return;
-    unlink(tmp);
-    ctn_free(tmp);
+    ctn_atomic_file *f = ud;
+    while (n) {
+        ssize_t k = write(f->fd, p, n);
+        if (k < 0 && errno == EINTR) continue;
+        if (k <= 0)
+            return ctn_error(f->ctx, CTN_ERR_IO, "%s: write failed: %s", f->path,
+                             k < 0 ? strerror(errno) : "no progress");
+        p += k;
+        n -= (size_t)k;
+    }
+    return CTN_OK;
+}
+
+ctn_sink ctn_atomic_sink(ctn_atomic_file *f) { return (ctn_sink){ fd_write, f }; }
+
+int ctn_atomic_close(ctn_atomic_file *f)
+{
+    int rc = CTN_OK;
+    if (fsync(f->fd)) rc = ctn_error(f->ctx, CTN_ERR_IO, "%s: fsync failed: %s", f->path, strerror(errno));
+    if (close(f->fd) && !rc) rc = ctn_error(f->ctx, CTN_ERR_IO, "%s: close failed: %s", f->path, strerror(errno));
+    f->fd = -1;
+    return rc;
+}
+
+int ctn_atomic_commit(ctn_atomic_file *f)
+{
+    int rc = CTN_OK;
+    if (!f->tmp) return rc;
+    if (rename(f->tmp, f->path)) {
+        rc = ctn_error(f->ctx, CTN_ERR_IO, "%s: rename failed: %s", f->path, strerror(errno));
+        unlink(f->tmp);
+    }
+    release(f);
+    return rc;
+}
+
+void ctn_atomic_abort(ctn_atomic_file *f)
+{
+    if (f->fd >= 0) close(f->fd);
+    if (f->tmp) unlink(f->tmp);
+    release(f);
 }
 
 int ctn_write_file_atomic(ctn_ctx *ctx, const char *path, const char *data, size_t len)
 {
     if (!path || (!data && len)) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_write_file_atomic: bad arguments");
-    char *tmp = NULL;
-    int rc = ctn_atomic_stage(ctx, path, data, len, &tmp);
-    return rc ? rc : ctn_atomic_commit(ctx, tmp, path);
+    ctn_atomic_file f;
+    int rc = ctn_atomic_open(ctx, path, &f);
+    if (!rc && len) rc = fd_write(&f, data, len);
+    if (!rc) rc = ctn_atomic_close(&f);
+    if (rc) {
+        ctn_atomic_abort(&f);
+        return rc;
+    }
+    return ctn_atomic_commit(&f);
 }

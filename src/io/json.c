@@ -1,174 +1,258 @@
-/* Result JSON (cJSON). Numbers round-trip (cJSON prints 17 digits when 15 do not).
- * NaN or Inf never reach the text: such a value is refused with CTN_ERR_INVALID. */
-#include "model/model.h"
-#include "solve/solution.h"
+/* Result JSON (docs/format.md, "Results"), streamed: the bytes cJSON_Print (pretty) or
+ * cJSON_PrintUnformatted gave when the document was built as a cJSON tree, without the
+ * tree. Numbers round-trip as cJSON prints them (17 digits when 15 do not); a result
+ * holding a NaN or Inf is refused (CTN_ERR_INVALID) before anything is written. */
+#include "io/jsonw.h"
+#include "io/writer.h"
 #include "catena/io.h"
 
-#include <cjson/cJSON.h>
 #include <math.h>
-#include <stdlib.h>
 
-typedef struct jb {
-    int ok;          /* 0 after an allocation failure */
-    int finite;      /* 0 after a non-finite number */
-} jb;
+typedef struct json_writer {
+    ctn_writer w;
+    ctn_jw j;
+    size_t nsteps;
+} json_writer;
 
-static cJSON *num(jb *b, cJSON *obj, const char *key, double v)
+static const char *const xyz[3] = { "x", "y", "z" };
+
+static void numbers(ctn_jw *j, const char *key, const double *v, size_t n)
 {
-    if (!isfinite(v)) b->finite = 0;
-    cJSON *r = cJSON_AddNumberToObject(obj, key, isfinite(v) ? v : 0.0);
-    if (!r) b->ok = 0;
-    return r;
+    ctn_jw_array(j, key);
+    for (size_t i = 0; i < n; i++) ctn_jw_number(j, NULL, v[i]);
+    ctn_jw_end(j);
 }
 
-static cJSON *arr(jb *b, cJSON *obj, const char *key)
+/* "stable" (checked for converged solutions) and, when not, "stability": why. */
+static void put_stability(ctn_jw *j, const ctn_solution *s)
 {
-    cJSON *r = cJSON_AddArrayToObject(obj, key);
-    if (!r) b->ok = 0;
-    return r;
+    ctn_stability st;
+    if (ctn_solution_stability(s, &st)) return;
+    ctn_jw_bool(j, "stable", st.stable);
+    if (st.stable) return;
+    ctn_jw_object(j, "stability");
+    ctn_jw_string(j, "kind", st.semidefinite ? "semi-definite" : "unstable");
+    ctn_jw_number(j, "negative_eigenvalues", (double)st.negative);
+    if (st.node) ctn_jw_number(j, "node", st.node);
+    if (st.dir >= 0 && st.dir < 3) ctn_jw_string(j, "direction", xyz[st.dir]);
+    ctn_jw_end(j);
 }
 
-static cJSON *item(jb *b, cJSON *array)
+static void put_summary(json_writer *jw, const ctn_solution *s)
 {
-    cJSON *o = cJSON_CreateObject();
-    if (!o || !cJSON_AddItemToArray(array, o)) {
-        cJSON_Delete(o);
-        b->ok = 0;
-        return NULL;
-    }
-    return o;
-}
-
-static void numbers(jb *b, cJSON *obj, const char *key, const double *v, size_t n)
-{
-    cJSON *a = arr(b, obj, key);
-    for (size_t i = 0; a && i < n; i++) {
-        if (!isfinite(v[i])) b->finite = 0;
-        cJSON *x = cJSON_CreateNumber(isfinite(v[i]) ? v[i] : 0.0);
-        if (!x || !cJSON_AddItemToArray(a, x)) { cJSON_Delete(x); b->ok = 0; return; }
-    }
-}
-
-static void add_summary(jb *b, cJSON *root, const ctn_model *m, const ctn_solution *s)
-{
+    ctn_jw *j = &jw->j;
+    ctn_solve_summary sum;
     size_t n;
+    ctn_solution_summary(s, &sum);
+    ctn_jw_bool(j, "converged", sum.reason == CTN_CONVERGED);
+    ctn_jw_string(j, "reason", ctn_reason_name(sum.reason));
+    ctn_jw_number(j, "iterations", sum.iterations);
     const double *h = ctn_solution_residual_history(s, &n);
-    b->ok &= cJSON_AddBoolToObject(root, "converged", s->sum.reason == CTN_CONVERGED) != NULL;
-    b->ok &= cJSON_AddStringToObject(root, "reason", ctn_reason_name(s->sum.reason)) != NULL;
-    num(b, root, "iterations", s->sum.iterations);
-    numbers(b, root, "residual_history", h, n);
+    numbers(j, "residual_history", h, n);
     h = ctn_solution_increment_history(s, &n);
-    numbers(b, root, "increment_history", h, n);
-    num(b, root, "external_force_norm", s->sum.fext_norm);
-    num(b, root, "load_factor", s->sum.load_factor);
-    num(b, root, "cutbacks", s->sum.cuts);
-    cJSON *u = cJSON_AddObjectToObject(root, "units");
-    if (!u) { b->ok = 0; return; }
-    b->ok &= cJSON_AddStringToObject(u, "force", m->force_unit) != NULL;
-    b->ok &= cJSON_AddStringToObject(u, "length", m->length_unit) != NULL;
-    if (s->sum.reason == CTN_DIVERGED_INDEFINITE) {
-        num(b, root, "fail_node", s->sum.fail_node);
-        b->ok &= cJSON_AddStringToObject(root, "fail_direction", (const char *[]){ "x", "y", "z" }[s->sum.fail_dir]) != NULL;
+    numbers(j, "increment_history", h, n);
+    ctn_jw_number(j, "external_force_norm", sum.fext_norm);
+    ctn_jw_number(j, "load_factor", sum.load_factor);
+    ctn_jw_number(j, "cutbacks", sum.cuts);
+    ctn_jw_object(j, "units");
+    ctn_jw_string(j, "force", ctn_model_force_unit(jw->w.m));
+    ctn_jw_string(j, "length", ctn_model_length_unit(jw->w.m));
+    ctn_jw_end(j);
+    if (sum.reason == CTN_DIVERGED_INDEFINITE && sum.fail_dir >= 0 && sum.fail_dir < 3) {
+        ctn_jw_number(j, "fail_node", sum.fail_node);
+        ctn_jw_string(j, "fail_direction", xyz[sum.fail_dir]);
     }
+    if ((sum.floor || sum.reason == CTN_DIVERGED_ROUNDOFF) && isfinite(sum.residual_floor) && isfinite(sum.force_scale)) {
+        ctn_jw_number(j, "residual_floor", sum.residual_floor);
+        ctn_jw_number(j, "force_scale", sum.force_scale);
+    }
+    put_stability(j, s);
 }
 
-static void add_nodes(jb *b, cJSON *root, const ctn_model *m, const ctn_step_state *s)
+/* "nodes" (coordinates and displacements) and "reactions" (of the supported nodes). */
+static void put_nodes(json_writer *jw, const ctn_step_result *st)
 {
-    cJSON *a = arr(b, root, "nodes"), *r = arr(b, root, "reactions");
-    static const char *xk[] = { "x", "y", "z" }, *uk[] = { "ux", "uy", "uz" }, *fk[] = { "fx", "fy", "fz" };
-    for (size_t i = 0; a && r && b->ok && i < m->nodes.n; i++) {
-        cJSON *o = item(b, a);
-        if (!o) return;
-        num(b, o, "id", m->nodes.v[i].id);
-        for (int k = 0; k < 3; k++) num(b, o, xk[k], m->nodes.v[i].X[k]);
-        for (int k = 0; k < 3; k++) num(b, o, uk[k], s->d[3 * i + k]);
-        if (!m->nodes.v[i].fix) continue;
-        cJSON *q = item(b, r);
-        if (!q) return;
-        num(b, q, "node", m->nodes.v[i].id);
-        for (int k = 0; k < 3; k++) num(b, q, fk[k], s->react[3 * i + k]);
+    static const char *const uk[3] = { "ux", "uy", "uz" }, *const fk[3] = { "fx", "fy", "fz" };
+    ctn_jw *j = &jw->j;
+    size_t nn = ctn_model_node_count(jw->w.m);
+    ctn_node_info p;
+    ctn_jw_array(j, "nodes");
+    for (size_t i = 0; i < nn && !ctn_model_node(jw->w.m, i, &p); i++) {
+        ctn_jw_object(j, NULL);
+        ctn_jw_number(j, "id", p.id);
+        for (int k = 0; k < 3; k++) ctn_jw_number(j, xyz[k], p.X[k]);
+        for (int k = 0; k < 3; k++) ctn_jw_number(j, uk[k], st->d[3 * i + k]);
+        ctn_jw_end(j);
     }
+    ctn_jw_end(j);
+    ctn_jw_array(j, "reactions");
+    for (size_t i = 0; i < nn && !ctn_model_node(jw->w.m, i, &p); i++) {
+        if (!p.fix) continue;
+        ctn_jw_object(j, NULL);
+        ctn_jw_number(j, "node", p.id);
+        for (int k = 0; k < 3; k++) ctn_jw_number(j, fk[k], st->react[3 * i + k]);
+        ctn_jw_end(j);
+    }
+    ctn_jw_end(j);
 }
 
-static void add_elements(jb *b, cJSON *root, const ctn_model *m, const ctn_step_state *s)
+static int node_id(const ctn_model *m, int index)
 {
-    cJSON *a = arr(b, root, "elements");
-    for (size_t i = 0; a && b->ok && i < m->elements.n; i++) {
-        const ctn_element *e = &m->elements.v[i];
-        const ctn_element_state *st = &s->elem[i];
-        cJSON *o = item(b, a);
-        if (!o) return;
-        num(b, o, "id", e->id);
-        const int *en = ctn_elem_nodes(m, i);
-        int ids[2] = { m->nodes.v[en[0]].id, m->nodes.v[en[e->nnodes - 1]].id };
-        cJSON *nd = cJSON_CreateIntArray(ids, 2);
-        if (!nd || !cJSON_AddItemToObject(o, "nodes", nd)) { cJSON_Delete(nd); b->ok = 0; return; }
-        num(b, o, "l0", e->l0);
-        num(b, o, "length", st->length);
-        num(b, o, "strain", st->strain);
-        num(b, o, "force", st->force);
-        num(b, o, "stress", st->stress);
-        if (m->mpa > 0) num(b, o, "stress_mpa", st->stress * m->mpa);
-        if (e->section >= 0 && m->materials.v[m->sections.v[e->section].material].tension_only)
-            b->ok &= cJSON_AddBoolToObject(o, "slack", st->slack) != NULL;
-    }
+    ctn_node_info p;
+    return ctn_model_node(m, (size_t)index, &p) ? 0 : p.id;
 }
 
-static void add_cables(jb *b, cJSON *root, const ctn_model *m, const ctn_solution *s)
+static void put_element(json_writer *jw, const ctn_element_info *e, const ctn_element_state *es)
 {
-    cJSON *a = arr(b, root, "cables");
-    for (size_t i = 0; a && b->ok && i < m->cables.n; i++) {
-        const ctn_cable *c = &m->cables.v[i];
-        cJSON *o = item(b, a);
+    ctn_jw *j = &jw->j;
+    double mpa = ctn_model_mpa_factor(jw->w.m);
+    ctn_jw_object(j, NULL);
+    ctn_jw_number(j, "id", e->id);
+    ctn_jw_array(j, "nodes");
+    ctn_jw_number(j, NULL, node_id(jw->w.m, e->node[0]));
+    ctn_jw_number(j, NULL, node_id(jw->w.m, e->node[1]));
+    ctn_jw_end(j);
+    ctn_jw_number(j, "l0", e->l0);
+    ctn_jw_number(j, "length", es->length);
+    ctn_jw_number(j, "strain", es->strain);
+    ctn_jw_number(j, "force", es->force);
+    if (!e->has_section) {                          /* a spring: a force, no stress */
+        ctn_jw_string(j, "type", e->type);
+    } else {
+        ctn_jw_number(j, "stress", es->stress);
+        if (mpa > 0) ctn_jw_number(j, "stress_mpa", es->stress * mpa);
+    }
+    if (e->tension_only) ctn_jw_bool(j, "slack", es->slack);
+    ctn_jw_end(j);
+}
+
+/* "elements": the element states of step k. */
+static void put_elements(json_writer *jw, const ctn_solution *s, size_t k)
+{
+    size_t ne = ctn_model_element_count(jw->w.m);
+    ctn_jw_array(&jw->j, "elements");
+    for (size_t i = 0; i < ne && !jw->w.out.err; i++) {
+        ctn_element_info e;
+        ctn_element_state es;
+        if (ctn_model_element(jw->w.m, i, &e) || ctn_solution_step_element(s, k, i, &es)) {
+            ctn_writer_mismatch(&jw->w);
+            break;
+        }
+        put_element(jw, &e, &es);
+    }
+    ctn_jw_end(&jw->j);
+}
+
+static void put_cables(json_writer *jw, const ctn_solution *s)
+{
+    ctn_jw *j = &jw->j;
+    const ctn_model *m = jw->w.m;
+    ctn_jw_array(j, "cables");
+    for (size_t i = 0; i < ctn_model_cable_count(m) && !jw->w.out.err; i++) {
+        ctn_cable_info c;
+        ctn_element_info first, last;
         double sag = 0, dmax = 0;
-        if (!o) return;
-        num(b, o, "node1", m->nodes.v[c->node[0]].id);
-        num(b, o, "node2", m->nodes.v[c->node[1]].id);
-        num(b, o, "first_element", m->elements.v[c->first].id);
-        num(b, o, "last_element", m->elements.v[c->first + c->count - 1].id);
-        num(b, o, "length", c->length);
-        if (!ctn_solution_cable_sag(m, s, i, &sag)) num(b, o, "sag", sag);
-        if (!ctn_solution_cable_max_sag_from_chord(m, s, i, &dmax)) num(b, o, "max_sag_from_chord", dmax);
+        if (ctn_model_cable(m, i, &c) || ctn_model_element(m, c.first, &first) ||
+            ctn_model_element(m, c.first + c.count - 1, &last)) {
+            ctn_writer_mismatch(&jw->w);
+            break;
+        }
+        ctn_jw_object(j, NULL);
+        ctn_jw_number(j, "node1", node_id(m, c.node[0]));
+        ctn_jw_number(j, "node2", node_id(m, c.node[1]));
+        ctn_jw_number(j, "first_element", first.id);
+        ctn_jw_number(j, "last_element", last.id);
+        ctn_jw_number(j, "length", c.length);
+        if (!ctn_solution_cable_sag(m, s, i, &sag)) ctn_jw_number(j, "sag", sag);
+        if (!ctn_solution_cable_max_sag_from_chord(m, s, i, &dmax)) ctn_jw_number(j, "max_sag_from_chord", dmax);
+        ctn_jw_end(j);
     }
+    ctn_jw_end(j);
 }
 
-/* Every step's state (load steps, or arc-length path points). */
-static void add_steps(jb *b, cJSON *root, const ctn_model *m, const ctn_solution *s)
+/* One entry of "steps": step k's outcome and state. */
+static void put_step(json_writer *jw, const ctn_solution *s, size_t k, const ctn_step_result *st)
 {
-    cJSON *a = arr(b, root, "steps");
-    for (size_t k = 0; a && b->ok && k < s->nsteps; k++) {
-        const ctn_step_state *st = &s->steps[k];
-        cJSON *o = item(b, a);
-        if (!o) return;
-        b->ok &= cJSON_AddStringToObject(o, "name", st->name) != NULL;
-        b->ok &= cJSON_AddBoolToObject(o, "converged", st->reason == CTN_CONVERGED) != NULL;
-        b->ok &= cJSON_AddStringToObject(o, "reason", ctn_reason_name(st->reason)) != NULL;
-        num(b, o, "load_factor", st->t);
-        num(b, o, "iterations", st->iterations);
-        add_nodes(b, o, m, st);
-        add_elements(b, o, m, st);
-    }
+    ctn_jw *j = &jw->j;
+    ctn_jw_object(j, NULL);
+    ctn_jw_string(j, "name", st->name);
+    ctn_jw_bool(j, "converged", st->reason == CTN_CONVERGED);
+    ctn_jw_string(j, "reason", ctn_reason_name(st->reason));
+    ctn_jw_number(j, "load_factor", st->load_factor);
+    ctn_jw_number(j, "iterations", st->iterations);
+    put_nodes(jw, st);
+    put_elements(jw, s, k);
+    ctn_jw_end(j);
 }
+
+static int json_begin(void *p, const ctn_model *m, ctn_sink *sink)
+{
+    json_writer *jw = p;
+    int rc = ctn_writer_open(&jw->w, m, sink);
+    if (rc) return rc;
+    ctn_jw_init(&jw->j, &jw->w.out, jw->w.pretty);
+    ctn_jw_object(&jw->j, NULL);
+    return jw->w.out.err;
+}
+
+/* Step 0 also writes the summary, the final state (the last step) and the cables; the
+ * steps array follows when there is more than one step. */
+static int json_step(void *p, const ctn_solution *s, size_t k)
+{
+    json_writer *jw = p;
+    ctn_step_result st;
+    jw->nsteps = ctn_solution_step_count(s);
+    if (k == 0) {
+        if (ctn_solution_step(s, jw->nsteps - 1, &st)) return ctn_writer_mismatch(&jw->w);
+        put_summary(jw, s);
+        put_nodes(jw, &st);
+        put_elements(jw, s, jw->nsteps - 1);
+        put_cables(jw, s);
+        if (jw->nsteps > 1) ctn_jw_array(&jw->j, "steps");
+    }
+    if (jw->nsteps > 1) {
+        if (ctn_solution_step(s, k, &st)) return ctn_writer_mismatch(&jw->w);
+        put_step(jw, s, k, &st);
+    }
+    return jw->w.out.err;
+}
+
+static int json_end(void *p)
+{
+    json_writer *jw = p;
+    if (jw->nsteps > 1) ctn_jw_end(&jw->j);
+    ctn_jw_end(&jw->j);
+    return jw->w.out.err;
+}
+
+const ctn_writer_ops ctn_writer_json = { "result.json", sizeof(json_writer), json_begin, json_step, json_end };
 
 int ctn_result_json(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s, int pretty,
                     char **json)
 {
     if (!m || !s || !json) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_result_json: bad arguments");
     *json = NULL;
-    jb b = { 1, 1 };
-    cJSON *root = cJSON_CreateObject();
-    if (!root) return ctn_error(ctx, CTN_ERR_NOMEM, "out of memory building JSON");
-    add_summary(&b, root, m, s);
-    const ctn_step_state *last = &s->steps[s->nsteps - 1];
-    if (b.ok) add_nodes(&b, root, m, last);
-    if (b.ok) add_elements(&b, root, m, last);
-    if (b.ok) add_cables(&b, root, m, s);
-    if (b.ok && s->nsteps > 1) add_steps(&b, root, m, s);
-    if (b.ok && b.finite) *json = pretty ? cJSON_Print(root) : cJSON_PrintUnformatted(root);
-    cJSON_Delete(root);
-    if (!b.finite) return ctn_error(ctx, CTN_ERR_INVALID, "result holds a NaN or Inf; not written");
-    if (!*json) return ctn_error(ctx, CTN_ERR_NOMEM, "out of memory building JSON");
-    return CTN_OK;
+    int rc = ctn_result_check(ctx, m, s);
+    if (rc) return rc;
+    ctn_mem_sink mb;
+    ctn_sink sink = ctn_sink_mem(&mb, ctx);
+    rc = ctn_writer_run(ctx, &ctn_writer_json, pretty, &sink, m, s);
+    if (!rc) rc = ctn_sink_mem_take(&mb, json);
+    ctn_sink_mem_free(&mb);
+    return rc;
 }
 
-void ctn_json_free(char *json) { cJSON_free(json); }
+void ctn_json_free(char *json) { ctn_free(json); }
+
+int ctn_write_json(ctn_ctx *ctx, FILE *out, const ctn_model *m, const ctn_solution *s,
+                   int pretty)
+{
+    if (!out || !m || !s) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_write_json: bad arguments");
+    int rc = ctn_result_check(ctx, m, s);
+    if (rc) return rc;
+    ctn_stdio_sink st;
+    ctn_sink sink = ctn_sink_stdio(&st, ctx, out, out == stdout ? "stdout" : "output stream");
+    rc = ctn_writer_run(ctx, &ctn_writer_json, pretty, &sink, m, s);
+    if (!rc) rc = ctn_sink_stdio_flush(&st);
+    return rc;
+}

@@ -279,4 +279,46 @@ for h in help --help -h; do
     finish "catena $h"
 done
 
+# ---- output that cannot be written: exit 4 and a message, never a silent success ------
+# io_case NAME PATTERN: the last run (stderr in $T/err, exit code in $rc) exited 4 with a
+# message matching PATTERN.
+io_case() {
+    [ "$rc" = 4 ] || WHY+=("expected exit 4, got $rc")
+    grep -qE "^catena: .*$2" "$T/err" || WHY+=("no message matching '$2' on stderr: $(head -c 300 "$T/err")")
+    finish "write error: $1"
+}
+if [ -w /dev/full ]; then
+    "$BIN" solve "$EX" --json >/dev/full 2>"$T/err"; rc=$?
+    io_case "--json > /dev/full" 'stdout: write error: No space left on device'
+    "$BIN" solve "$EX" >/dev/full 2>"$T/err"; rc=$?
+    io_case "summary > /dev/full" 'stdout: write error: No space left on device'
+    "$BIN" compare "$EX" --json >/dev/full 2>"$T/err"; rc=$?
+    io_case "compare --json > /dev/full" 'stdout: write error: No space left on device'
+    "$BIN" help >/dev/full 2>"$T/err"; rc=$?
+    io_case "help > /dev/full" 'stdout: write error: No space left on device'
+fi
+# -o into a directory that cannot be made (its parent is a file; works as root too).
+: >"$T/plainfile"
+"$BIN" solve "$EX" -q -o "$T/plainfile/out" >"$T/out" 2>"$T/err"; rc=$?
+io_case "-o below a regular file" 'plainfile/out: cannot create directory: Not a directory'
+# -o into a read-only directory (not as root: root writes there anyway).
+if [ "$(id -u)" != 0 ]; then
+    mkdir -p "$T/readonly" && chmod 555 "$T/readonly"
+    "$BIN" solve "$EX" -q -o "$T/readonly" >"$T/out" 2>"$T/err"; rc=$?
+    io_case "-o into a read-only directory" 'readonly/result.json: cannot create: Permission denied'
+    [ -z "$(ls -A "$T/readonly")" ] || { WHY+=("files left: $(ls -A "$T/readonly")"); finish "read-only directory left empty"; }
+    chmod 755 "$T/readonly"
+fi
+# -o when the disk fills up mid-way (file size limit of 4 KiB, SIGXFSZ ignored): exit 4,
+# the older set untouched, no temporary left.
+dir=$T/fsize
+"$BIN" solve examples/robust/net_slack.cable -q -o "$dir" >/dev/null 2>&1
+cp "$dir/result.json" "$T/fsize_before.json" 2>/dev/null
+(ulimit -f 4; trap '' XFSZ; exec "$BIN" solve "$EX" -q -o "$dir") >"$T/out" 2>"$T/err"; rc=$?
+io_case "-o with the file size limit hit" 'result.json: write failed: File too large'
+extra=$(ls -A "$dir" | grep -vxE 'result\.json|nodes\.csv|elements\.csv')
+[ -z "$extra" ] || WHY+=("files left: $extra")
+cmp -s "$dir/result.json" "$T/fsize_before.json" || WHY+=("the older result.json was replaced")
+finish "-o with the file size limit hit: the older set kept"
+
 cli_summary

@@ -1,0 +1,99 @@
+/* nodes.csv and elements.csv: the state at the end of the last step, one row per node
+ * or element, numbers as "%.17g" (round-trip) and ids as "%d", C locale. */
+#include "io/writer.h"
+
+static int csv_begin(ctn_writer *w, const ctn_model *m, ctn_sink *sink, const char *header)
+{
+    int rc = ctn_writer_open(w, m, sink);
+    if (!rc) ctn_wbuf_puts(&w->out, header);
+    return w->out.err;
+}
+
+/* value, then ',' */
+static void field(ctn_wbuf *b, double v)
+{
+    ctn_wbuf_g17(b, v);
+    ctn_wbuf_putc(b, ',');
+}
+
+static int nodes_begin(void *p, const ctn_model *m, ctn_sink *sink)
+{
+    return csv_begin(p, m, sink, "id,x,y,z,ux,uy,uz,fix,rx,ry,rz\n");
+}
+
+/* id,x,y,z,ux,uy,uz,fix,rx,ry,rz; fix spelled with the letters of the fixed DOFs. */
+static void node_row(ctn_wbuf *b, const ctn_node_info *p, const double *d, const double *r)
+{
+    ctn_wbuf_int(b, p->id);
+    ctn_wbuf_putc(b, ',');
+    for (int k = 0; k < 3; k++) field(b, p->X[k]);
+    for (int k = 0; k < 3; k++) field(b, d[k]);
+    for (int k = 0; k < 3; k++)
+        if (p->fix & (1u << k)) ctn_wbuf_putc(b, "xyz"[k]);
+    for (int k = 0; k < 3; k++) {
+        ctn_wbuf_putc(b, ',');
+        ctn_wbuf_g17(b, r[k]);
+    }
+    ctn_wbuf_putc(b, '\n');
+}
+
+static int nodes_step(void *p, const ctn_solution *s, size_t k)
+{
+    ctn_writer *w = p;
+    ctn_step_result st;
+    if (k + 1 < ctn_solution_step_count(s)) return CTN_OK;
+    if (ctn_solution_step(s, k, &st)) return ctn_writer_mismatch(w);
+    for (size_t i = 0; i < ctn_model_node_count(w->m) && !w->out.err; i++) {
+        ctn_node_info n;
+        if (ctn_model_node(w->m, i, &n)) return ctn_writer_mismatch(w);
+        node_row(&w->out, &n, st.d + 3 * i, st.react + 3 * i);
+    }
+    return w->out.err;
+}
+
+static int elements_begin(void *p, const ctn_model *m, ctn_sink *sink)
+{
+    return csv_begin(p, m, sink, "id,node1,node2,l0,length,strain,force,stress,slack\n");
+}
+
+/* id,node1,node2,l0,length,strain,force,stress,slack */
+static int element_row(ctn_writer *w, const ctn_element_info *e, const ctn_element_state *es)
+{
+    ctn_node_info a, b;
+    if (ctn_model_node(w->m, (size_t)e->node[0], &a) || ctn_model_node(w->m, (size_t)e->node[1], &b))
+        return ctn_writer_mismatch(w);
+    int ids[3] = { e->id, a.id, b.id };
+    for (int k = 0; k < 3; k++) {
+        ctn_wbuf_int(&w->out, ids[k]);
+        ctn_wbuf_putc(&w->out, ',');
+    }
+    double v[5] = { e->l0, es->length, es->strain, es->force, es->stress };
+    for (int k = 0; k < 5; k++) field(&w->out, v[k]);
+    ctn_wbuf_int(&w->out, es->slack);
+    ctn_wbuf_putc(&w->out, '\n');
+    return CTN_OK;
+}
+
+static int elements_step(void *p, const ctn_solution *s, size_t k)
+{
+    ctn_writer *w = p;
+    if (k + 1 < ctn_solution_step_count(s)) return CTN_OK;
+    for (size_t i = 0; i < ctn_model_element_count(w->m) && !w->out.err; i++) {
+        ctn_element_info e;
+        ctn_element_state es;
+        if (ctn_model_element(w->m, i, &e) || ctn_solution_step_element(s, k, i, &es) ||
+            element_row(w, &e, &es)) return ctn_writer_mismatch(w);
+    }
+    return w->out.err;
+}
+
+static int csv_end(void *p)
+{
+    ctn_writer *w = p;
+    return w->out.err;
+}
+
+const ctn_writer_ops ctn_writer_nodes_csv = { "nodes.csv", sizeof(ctn_writer), nodes_begin,
+                                              nodes_step, csv_end };
+const ctn_writer_ops ctn_writer_elements_csv = { "elements.csv", sizeof(ctn_writer),
+                                                 elements_begin, elements_step, csv_end };

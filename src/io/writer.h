@@ -1,0 +1,50 @@
+/* Internal: result writers. A writer turns a model and its solution into bytes through
+ * a sink, in three calls: begin (the model: headers), step for every load step k =
+ * 0, 1, ... in order (what the format keeps of that step), end (closing text). The
+ * driver, ctn_writer_run, allocates the writer's state (ops->size bytes, zeroed, which
+ * begin with a ctn_writer it fills in), calls them, flushes and frees. A writer reads
+ * the model and the solution only through the public accessors of catena/model.h and
+ * catena/solve.h, and prints through the buffered output of io/sink.h.
+ *
+ * Writers do not test numbers: ctn_result_check refuses a result that holds a NaN or
+ * Inf before anything is written. */
+#ifndef CTN_IO_WRITER_H
+#define CTN_IO_WRITER_H
+
+#include "catena/model.h"
+#include "catena/solve.h"
+#include "io/sink.h"
+
+/* The head of every writer's state. */
+typedef struct ctn_writer {
+    ctn_ctx *ctx;          /* set by the driver */
+    int pretty;            /* set by the driver; JSON: cJSON_Print's layout, else
+                              cJSON_PrintUnformatted's */
+    const ctn_model *m;    /* set by ctn_writer_open */
+    ctn_wbuf out;          /* opened by ctn_writer_open, closed by the driver */
+} ctn_writer;
+
+typedef struct ctn_writer_ops {
+    const char *name;      /* the file it writes in a result directory */
+    size_t size;           /* bytes of its state, a struct that starts with a ctn_writer */
+    int (*begin)(void *w, const ctn_model *m, ctn_sink *sink);
+    int (*step)(void *w, const ctn_solution *s, size_t k);
+    int (*end)(void *w);
+} ctn_writer_ops;
+
+extern const ctn_writer_ops ctn_writer_json;          /* result.json (docs/format.md) */
+extern const ctn_writer_ops ctn_writer_nodes_csv;     /* nodes.csv: the last step */
+extern const ctn_writer_ops ctn_writer_elements_csv;  /* elements.csv: the last step */
+
+/* For begin: remember the model, open the buffered output over sink. */
+int ctn_writer_open(ctn_writer *w, const ctn_model *m, ctn_sink *sink);
+/* Record and return CTN_ERR_INVALID: an accessor refused an index (a solution of
+ * another model). */
+int ctn_writer_mismatch(ctn_writer *w);
+/* Run one writer over sink: begin, step for every step of s, end, flush. */
+int ctn_writer_run(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, ctn_sink *sink,
+                   const ctn_model *m, const ctn_solution *s);
+/* CTN_OK if every number the writers print is finite, else CTN_ERR_INVALID recorded. */
+int ctn_result_check(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s);
+
+#endif
