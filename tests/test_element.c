@@ -193,7 +193,7 @@ static void test_cable_laws(void)
         ctn_cable_props gl = { 1000, 5, 2.0, CTN_STRAIN_GREEN_LAGRANGE, 0 };
         ctn_cable_props en = { 1000, 5, 2.0, CTN_STRAIN_ENGINEERING, 0 };
         ctn_elem_state s;
-        ctn_cable2_ops.eval(&gl, 0, X, u, f, NULL, &s);
+        ctn_cable2_ops.eval(&gl, CTN_EVAL_STRESS, X, u, f, NULL, &s);
         CHECK_CLOSE(s.l, 5 * lam, 1e-14, 0);
         CHECK_CLOSE(s.strain, (lam * lam - 1) / 2, 1e-12, 1e-15);
         CHECK_CLOSE(s.N, 1000 * (lam * lam - 1) / 2 * lam, 1e-12, 1e-12);

@@ -42,8 +42,10 @@ void ctn_asm_destroy(ctn_asm **a)
 static inline void gather(const ctn_asm *a, const int *nd, int nnodes, int ndn, const double *d,
                           double *X, double *u)
 {
+    int u3 = a->map.uniform == 3;                       /* the common layout: 3 i */
     for (int k = 0; k < nnodes; k++) {
-        const double *Xk = a->m->nodes.v[nd[k]].X, *dk = d + ctn_dofmap_node(&a->map, (size_t)nd[k]);
+        const double *Xk = a->m->nodes.v[nd[k]].X;
+        const double *dk = d + (u3 ? 3 * (size_t)nd[k] : ctn_dofmap_node(&a->map, (size_t)nd[k]));
         for (int j = 0; j < 3; j++) X[3 * k + j] = Xk[j];
         for (int j = 0; j < ndn; j++) u[ndn * k + j] = dk[j];
     }
@@ -51,10 +53,10 @@ static inline void gather(const ctn_asm *a, const int *nd, int nnodes, int ndn, 
 
 /* The loop over the elements of one block (see ctn_asm_loop). Inline, so that the
  * assembly's visitor and the common shape (2 nodes of 3 DOFs) are compiled into it. */
-static inline int block_loop(const ctn_asm *a, const ctn_asm_block *b, const double *d, unsigned mode,
-                             int with_K, ctn_asm_visit_fn visit, void *data, size_t *bad)
+static inline __attribute__((always_inline)) int block_loop(const ctn_asm *a, const ctn_asm_block *b, const double *d, unsigned mode,
+                             int with_K, ctn_asm_visit_fn visit, void *data, size_t *bad, double *u,
+                             double *fe, double *Ke, double *X)
 {
-    double *u = a->work, *fe = u + a->maxdof, *Ke = fe + a->maxdof, *X = Ke + ctn_packed_size(a->maxdof);
     const ctn_element_ops *ops = b->ops;
     const int *conn = ctn_elem_nodes(a->m, b->e0);
     const unsigned char *props = a->props + b->props0;
@@ -77,11 +79,24 @@ static inline int block_loop(const ctn_asm *a, const ctn_asm_block *b, const dou
     return 0;
 }
 
-static inline int loop(const ctn_asm *a, const double *d, unsigned mode, int with_K,
+/* The common shape, 2 nodes of 3 DOFs, with its scratch on the stack (registers and
+ * store forwarding, no aliasing with the model), else the generic scratch. */
+static inline __attribute__((always_inline)) int any_block(const ctn_asm *a, const ctn_asm_block *b, const double *d, unsigned mode,
+                            int with_K, ctn_asm_visit_fn visit, void *data, size_t *bad)
+{
+    if (b->nedof == 6) {
+        double u[6], fe[6], Ke[21], X[6];
+        return block_loop(a, b, d, mode, with_K, visit, data, bad, u, fe, Ke, X);
+    }
+    double *u = a->work, *fe = u + a->maxdof, *Ke = fe + a->maxdof, *X = Ke + ctn_packed_size(a->maxdof);
+    return block_loop(a, b, d, mode, with_K, visit, data, bad, u, fe, Ke, X);
+}
+
+static inline __attribute__((always_inline)) int loop(const ctn_asm *a, const double *d, unsigned mode, int with_K,
                        ctn_asm_visit_fn visit, void *data, size_t *bad)
 {
     for (size_t k = 0; k < a->nblocks; k++)
-        if (block_loop(a, &a->blocks[k], d, mode, with_K, visit, data, bad)) return 1;
+        if (any_block(a, &a->blocks[k], d, mode, with_K, visit, data, bad)) return 1;
     return 0;
 }
 
@@ -107,13 +122,14 @@ static inline void scatter_K(const int *slot, int n, const double *Ke, double *K
 
 static inline void scatter_f(const ctn_asm *a, const int *nd, int nnodes, int ndn, const double *fe, double *f)
 {
+    int u3 = a->map.uniform == 3;
     for (int k = 0; k < nnodes; k++) {
-        double *fk = f + ctn_dofmap_node(&a->map, (size_t)nd[k]);
+        double *fk = f + (u3 ? 3 * (size_t)nd[k] : ctn_dofmap_node(&a->map, (size_t)nd[k]));
         for (int j = 0; j < ndn; j++) fk[j] += fe[ndn * k + j];
     }
 }
 
-static void assemble_visit(void *data, const ctn_asm *a, const ctn_asm_elem *el)
+static inline __attribute__((always_inline)) void assemble_visit(void *data, const ctn_asm *a, const ctn_asm_elem *el)
 {
     assembly *as = data;
     as->U += el->st->energy;

@@ -32,7 +32,7 @@ static void axial_law(const ctn_cable_props *p, unsigned mode, double l, ctn_ele
         *dNdl = 0;
         st->slack = 1;
     }
-    st->stress = st->N / p->A;
+    st->stress = mode & CTN_EVAL_STRESS ? st->N / p->A : 0.0;
 }
 
 static int cable_eval(const void *props, unsigned mode, const double *X, const double *u,

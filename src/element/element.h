@@ -20,15 +20,17 @@ typedef struct ctn_elem_state {
     double l;           /* current length (of the whole member) */
     double strain;      /* strain of the element's measure */
     double N;           /* axial tension (true force) */
-    double stress;      /* N / A for members with a section, 0 otherwise */
+    double stress;      /* N / A for members with a section (with CTN_EVAL_STRESS), else 0 */
     double energy;      /* stored energy; its gradient is the internal force */
     int slack;          /* tension-only member with no force */
 } ctn_elem_state;
 
 /* Evaluation modes (bit flags). */
 enum {
-    CTN_EVAL_CUT_COMPRESSION = 1   /* members that can go slack (CTN_ELEM_FLEXIBLE) carry
+    CTN_EVAL_CUT_COMPRESSION = 1,  /* members that can go slack (CTN_ELEM_FLEXIBLE) carry
                                       no compression, whatever their material */
+    CTN_EVAL_STRESS = 2            /* fill st->stress (results only: a division the
+                                      iterations do not need) */
 };
 
 /* Family flags. */

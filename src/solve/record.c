@@ -48,6 +48,6 @@ int ctn_problem_fill_step(ctn_problem *p, ctn_solution *s, size_t k, const doubl
     for (size_t i = 0; i < p->ns; i++)
         p->react[i] = eq[i] < 0 ? p->fint[i] - p->fext[i] - (fh ? fh[i] : 0.0) : 0.0;
     ctn_dofmap_to3(&p->a->map, p->react, st->react);
-    ctn_asm_loop(p->a, d, 0, 0, state_visit, st->elem, NULL);
+    ctn_asm_loop(p->a, d, CTN_EVAL_STRESS, 0, state_visit, st->elem, NULL);
     return CTN_OK;
 }
