@@ -15,7 +15,7 @@
 
 #define LS_HALVINGS 30
 #define ARMIJO 1e-4
-#define CTN_NONMONOTONE 8   /* memory of the non-monotone acceptance test */
+#define CTN_NONMONOTONE 16   /* memory of the non-monotone acceptance test */
 #define CTN_FLOOR (1e3 * DBL_EPSILON)  /* |dd| / (|d| + L_ref) below which the
                                          correction is at the coordinates' resolution */
 #define CTN_FLOOR_MAX 1e-4             /* largest round-off floor accepted, relative to
