@@ -9,7 +9,7 @@ CC=clang cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCTN_FUZZ=ON 
 cmake --build "$build" -j "$(nproc)" --target fuzz_model >/dev/null
 corpus="$build/corpus"
 mkdir -p "$corpus"
-find examples tests/errors -name '*.cable' -exec cp {} "$corpus"/ \; 2>/dev/null || true
+find examples tests/errors tests/models -name '*.cable' -exec cp {} "$corpus"/ \; 2>/dev/null || true
 "$build/fuzz_model" -max_total_time="$secs" -timeout=20 -rss_limit_mb=2048 -max_len=4096 \
   -dict=tests/fuzz/cable.dict -print_final_stats=1 "$corpus" 2>"$build/fuzz.log" || {
   tail -60 "$build/fuzz.log" >&2

@@ -134,8 +134,10 @@ static int check_stability(ctn_problem *p, ctn_solution *s)
     ctn_solve_summary *keep = p->sum;
     int rc = ctn_problem_stability(p, s, &s->stability);
     p->sum = keep;
-    s->sum.stable = s->stability.stable;
-    return rc;
+    s->sum.stable = rc ? -1 : s->stability.stable;
+    if (rc == CTN_ERR_NOMEM) return rc;
+    if (rc) ctn_ctx_clear(p->ctx);                  /* could not tell: left unchecked */
+    return CTN_OK;
 }
 
 int ctn_problem_solve(ctn_problem *p, ctn_solution **out)
