@@ -235,6 +235,8 @@ static void ref_summary(cJSON *root, const ctn_model *m, const ctn_solution *s, 
     ref_num(root, "external_force_norm", sum.fext_norm, finite);
     ref_num(root, "load_factor", sum.load_factor, finite);
     ref_num(root, "cutbacks", sum.cuts, finite);
+    ref_num(root, "factorizations", sum.factorizations, finite);
+    ref_num(root, "solves", sum.solves, finite);
     cJSON *u = cJSON_AddObjectToObject(root, "units");
     cJSON_AddStringToObject(u, "force", ctn_model_force_unit(m));
     cJSON_AddStringToObject(u, "length", ctn_model_length_unit(m));

@@ -54,6 +54,8 @@ static void put_summary(json_writer *jw, const ctn_solution *s)
     ctn_jw_number(j, "external_force_norm", sum.fext_norm);
     ctn_jw_number(j, "load_factor", sum.load_factor);
     ctn_jw_number(j, "cutbacks", sum.cuts);
+    ctn_jw_number(j, "factorizations", sum.factorizations);
+    ctn_jw_number(j, "solves", sum.solves);
     ctn_jw_object(j, "units");
     ctn_jw_string(j, "force", ctn_model_force_unit(jw->w.m));
     ctn_jw_string(j, "length", ctn_model_length_unit(jw->w.m));
