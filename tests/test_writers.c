@@ -400,7 +400,7 @@ static void solve_file(ctn_ctx *ctx, const char *path, model_case *c)
 static void solve_diverged(ctn_ctx *ctx, model_case *c)
 {
     double A[3] = { 0, 0, 0 }, B[3] = { 200, 0, 0 }, g[3] = { 0, -1, 0 };
-    ctn_cable_spec spec = { 20, 250.8777, CTN_SHAPE_STRAIGHT, 1e-3, CTN_START_ARC };
+    ctn_cable_spec spec = { 20, 250.8777, CTN_SHAPE_STRAIGHT, 1e-3, CTN_START_ARC, CTN_PRESTRESS_NONE, 0 };
     ctn_solve_options opt;
     c->name = "diverged";
     c->s = NULL;
@@ -420,7 +420,7 @@ static void solve_diverged(ctn_ctx *ctx, model_case *c)
 static void solve_escaped(ctn_ctx *ctx, model_case *c)
 {
     double A[3] = { 0, 0, 0 }, B[3] = { 200, 0, 0 }, g[3] = { 0, -1, 0 }, F[3] = { 0, -5, 0 };
-    ctn_cable_spec spec = { 20, 250.8777, CTN_SHAPE_ARC, 1e-3, CTN_START_ARC };
+    ctn_cable_spec spec = { 20, 250.8777, CTN_SHAPE_ARC, 1e-3, CTN_START_ARC, CTN_PRESTRESS_NONE, 0 };
     c->name = "escaped step names";
     c->s = NULL;
     ctn_model_create(ctx, &c->m);
@@ -441,7 +441,7 @@ static void solve_escaped(ctn_ctx *ctx, model_case *c)
 static void solve_big(ctn_ctx *ctx, model_case *c)
 {
     double A[3] = { 0, 0, 0 }, B[3] = { 200, 0, 0 }, g[3] = { 0, -1, 0 };
-    ctn_cable_spec spec = { 2000, 250.8777, CTN_SHAPE_ARC, 1e-3, CTN_START_CATENARY };
+    ctn_cable_spec spec = { 2000, 250.8777, CTN_SHAPE_ARC, 1e-3, CTN_START_CATENARY, CTN_PRESTRESS_NONE, 0 };
     c->name = "2000 elements";
     c->s = NULL;
     ctn_model_create(ctx, &c->m);

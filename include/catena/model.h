@@ -50,6 +50,15 @@ typedef enum ctn_cable_shape {
 #define CTN_CABLE_MAX_N 50000000   /* most elements of one generated cable */
 #define CTN_SUBSTEPS_MAX 100000    /* most increments of one load step */
 
+/* A prestress stated as engineers state it: the unstressed length is computed so that
+ * the element carries it in the geometry it is given (its reference chord), by its own
+ * strain law; a zero-load solve then returns it to round-off. */
+typedef enum ctn_prestress {
+    CTN_PRESTRESS_NONE = 0,   /* l0 as given (or the reference distance) */
+    CTN_PRESTRESS_FORCE = 1,  /* N0 [force] (true axial force) */
+    CTN_PRESTRESS_STRESS = 2, /* s0 = N0 / A [force/length^2] (families with a section) */
+    CTN_PRESTRESS_STRAIN = 3  /* eps0, of the material's strain measure (spring: (l-l0)/l0) */
+} ctn_prestress;
 /* Parameters of a generated cable (ctn_model_add_cable). */
 typedef struct ctn_cable_spec {
     int n;               /* number of elements, >= 1 */
@@ -60,6 +69,9 @@ typedef struct ctn_cable_spec {
                             same ends on which every element has this strain (default
                             1e-3, see docs/theory.md); 0 starts from the arc itself */
     ctn_cable_start start;  /* CTN_START_ARC (zero-initialized default), _CATENARY or _AUTO */
+    ctn_prestress prestress;  /* every element's l0 from this prestress in its generated
+                                 chord instead of length / n (default none) */
+    double prestress_value;
 } ctn_cable_spec;
 
 /* Create an empty model bound to ctx (errors are recorded there; ctx must outlive it). */
@@ -117,6 +129,8 @@ typedef struct ctn_element_spec {
     const char *section;  /* families with a section: its name */
     double l0;            /* unstressed / free length [length] (default CTN_L0_DEFAULT) */
     double k;             /* spring: stiffness [force/length] */
+    ctn_prestress prestress;  /* instead of l0 (then l0 must stay CTN_L0_DEFAULT) */
+    double prestress_value;   /* its value N0, s0 or eps0 */
 } ctn_element_spec;
 void ctn_element_spec_init(ctn_element_spec *s);
 int ctn_model_add_element_spec(ctn_model *m, const ctn_element_spec *s);

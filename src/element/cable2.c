@@ -6,6 +6,7 @@
  *   f2 = N e = -f1;  K = [[k, -k], [-k, k]],  k = dN/dl e e^T + N/l (I - e e^T)         */
 #include "element/axial.h"
 
+#include <float.h>
 #include <math.h>
 
 /* Axial force and its derivative with respect to the current length. */
@@ -90,7 +91,51 @@ static double cable_stiffness(const void *props)
 
 static double cable_rest_length(const void *props) { return ((const ctn_cable_props *)props)->l0; }
 
+/* Stretch lambda = l / l0 at which the material's law gives force N (tension positive);
+ * Green-Lagrange: N = EA (lambda^2 - 1) lambda / 2, increasing for lambda > 1/sqrt(3),
+ * solved by safeguarded Newton on [1/sqrt(3), hi]. 0 if no stretch gives it. */
+static double stretch_for(const ctn_material *mat, double EA, double N)
+{
+    if (mat->strain == CTN_STRAIN_ENGINEERING) return 1 + N / EA;
+    double n = N / EA, lo = 1 / sqrt(3.0), hi = 1;
+    if (n <= (lo * lo - 1) * lo / 2) return 0;               /* below the law's minimum */
+    while ((hi * hi - 1) * hi / 2 < n) hi *= 2;
+    double x = n > 0 ? hi : 1;
+    for (int it = 0; it < 200; it++) {
+        double f = (x * x - 1) * x / 2 - n, df = (3 * x * x - 1) / 2;
+        if (f > 0) hi = x; else lo = x;
+        double next = x - f / df;
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        if (next == x || hi - lo <= 4 * DBL_EPSILON * hi) break;
+        x = next;
+    }
+    return x;
+}
+
+static int cable_prestress_l0(const ctn_model *m, const ctn_element *e, int kind, double v, double l, double *l0)
+{
+    const ctn_section *sp = &m->sections.v[e->section];
+    const ctn_material *mat = &m->materials.v[sp->material];
+    double EA = mat->E * sp->A, lam = 0;
+    if (!isfinite(v)) return ctn_model_error(m, CTN_ERR_MODEL, "element %d: the prestress must be finite", e->id);
+    if (kind == CTN_PRESTRESS_STRAIN) {
+        double q = 1 + 2 * v;                                /* lambda^2 for Green-Lagrange */
+        lam = mat->strain == CTN_STRAIN_ENGINEERING ? 1 + v : q > 0 ? sqrt(q) : 0;
+    } else {
+        double N = kind == CTN_PRESTRESS_STRESS ? v * sp->A : v;
+        if (mat->tension_only && N < 0)
+            return ctn_model_error(m, CTN_ERR_MODEL, "element %d: a tension-only member cannot be prestressed in "
+                                   "compression (N0 = %g)", e->id, N);
+        lam = stretch_for(mat, EA, N);
+    }
+    if (!(lam > 0) || !isfinite(l / lam))
+        return ctn_model_error(m, CTN_ERR_MODEL, "element %d: no unstressed length gives that prestress (%g) "
+                               "with this material's law", e->id, v);
+    *l0 = l / lam;
+    return CTN_OK;
+}
+
 const ctn_element_ops ctn_cable2_ops = {
     "cable", 2, 3, sizeof(ctn_cable_props), CTN_ELEM_FLEXIBLE | CTN_ELEM_SECTION,
-    cable_check, cable_setup, cable_eval, cable_load, cable_stiffness, cable_rest_length,
+    cable_check, cable_setup, cable_eval, cable_load, cable_stiffness, cable_rest_length, cable_prestress_l0,
 };

@@ -68,6 +68,9 @@ typedef struct ctn_element_ops {
     double (*stiffness)(const void *props);
     /* Unstressed length of a flexible member (CTN_ELEM_FLEXIBLE), else NULL. */
     double (*rest_length)(const void *props);
+    /* Optional: the unstressed length l0 that gives element e (its section or k set) the
+     * prestress `kind` of value v at length l; a model error (ctn_model_error) if none. */
+    int (*prestress_l0)(const ctn_model *m, const ctn_element *e, int kind, double v, double l, double *l0);
 } ctn_element_ops;
 
 /* Entries of the packed upper triangle of an n x n matrix. */

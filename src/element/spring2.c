@@ -42,7 +42,17 @@ static void spring_setup(const ctn_model *m, size_t e, void *props)
 
 static double spring_stiffness(const void *props) { return ((const ctn_spring_props *)props)->k; }
 
+static int spring_prestress_l0(const ctn_model *m, const ctn_element *e, int kind, double v, double l, double *l0)
+{
+    if (kind == CTN_PRESTRESS_STRESS)
+        return ctn_model_error(m, CTN_ERR_MODEL, "spring %d: a spring has no section: give N0= or eps0=", e->id);
+    *l0 = kind == CTN_PRESTRESS_FORCE ? l - v / e->k : l / (1 + v);    /* N0 = k (l - l0) */
+    if (!(*l0 > 0) || !isfinite(*l0))
+        return ctn_model_error(m, CTN_ERR_MODEL, "spring %d: no positive free length gives that prestress (%g)", e->id, v);
+    return CTN_OK;
+}
+
 const ctn_element_ops ctn_spring2_ops = {
     "spring", 2, 3, sizeof(ctn_spring_props), 0,
-    spring_check, spring_setup, spring_eval, NULL, spring_stiffness, NULL,
+    spring_check, spring_setup, spring_eval, NULL, spring_stiffness, NULL, spring_prestress_l0,
 };

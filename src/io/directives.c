@@ -102,22 +102,53 @@ static int d_node(ctn_line *l)
     return rc ? rc : ctn_model_add_node(l->m, id, X, fix);
 }
 
+/* At most one of l0=, N0=, s0=, eps0= (from token `from`; without l0= when l0 is NULL):
+ * the prestress into *kind and *value; *l0 is set when l0= is given. */
+static int prestress_keys(ctn_line *l, int from, const char *what, double *l0, ctn_prestress *kind, double *value)
+{
+    static const char *const keys[4] = { "l0", "N0", "s0", "eps0" };
+    int given = 0, rc = CTN_OK;
+    *kind = CTN_PRESTRESS_NONE;
+    for (int k = l0 ? 0 : 1; k < 4 && !rc; k++) {
+        if (!ctn_parse_key(l, from, keys[k])) continue;
+        if (given++) return ctn_parse_error(l, "%s: give at most one of %s", what, l0 ? "l0=, N0=, s0=, eps0=" : "N0=, s0=, eps0=");
+        double v = 0;
+        rc = ctn_parse_key_num(l, from, keys[k], 1, &v);
+        if (rc) return rc;
+        if (k == 0) {
+            if (!(v > 0)) return ctn_parse_error(l, "%s: l0 must be positive (found %g)", what, v);
+            *l0 = v;
+        } else {
+            *kind = (ctn_prestress)k;
+            *value = v;
+        }
+    }
+    return rc;
+}
+
 static int d_element(ctn_line *l)
 {
     int id = 0, a = 0, b = 0;
     double l0 = CTN_L0_DEFAULT;
-    int rc = ctn_parse_positional(l, 3, "element ID NODE1 NODE2 section=SECTION [l0=LENGTH]");
+    int rc = ctn_parse_positional(l, 3, "element ID NODE1 NODE2 section=SECTION [l0=LENGTH|N0=FORCE|s0=STRESS|eps0=STRAIN]");
     if (!rc) rc = ctn_parse_int(l, "the element id", l->tok[1], &id);
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[2], &a);
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[3], &b);
     const char *sec = rc ? NULL : ctn_parse_key(l, 4, "section");
     if (!rc && !sec) return ctn_parse_error(l, "element: missing required key 'section='");
-    if (!rc && ctn_parse_key(l, 4, "l0")) {
-        rc = ctn_parse_key_num(l, 4, "l0", 1, &l0);
-        if (!rc && !(l0 > 0)) return ctn_parse_error(l, "element %d: l0 must be positive (found %g)", id, l0);
-    }
+    char what[32];
+    snprintf(what, sizeof what, "element %d", id);
+    ctn_element_spec spec;
+    int nodes[2] = { a, b };
+    ctn_element_spec_init(&spec);
+    if (!rc) rc = prestress_keys(l, 4, what, &l0, &spec.prestress, &spec.prestress_value);
     if (!rc) rc = ctn_parse_leftovers(l, 4, "element");
-    return rc ? rc : ctn_model_add_element(l->m, id, a, b, sec, l0);
+    spec.id = id;
+    spec.nnodes = 2;
+    spec.nodes = nodes;
+    spec.section = sec;
+    spec.l0 = l0;
+    return rc ? rc : ctn_model_add_element_spec(l->m, &spec);
 }
 
 static int d_spring(ctn_line *l)
@@ -129,10 +160,9 @@ static int d_spring(ctn_line *l)
     if (!rc) rc = ctn_parse_int(l, "the element id", l->tok[1], &id);
     for (int k = 0; k < 2 && !rc; k++) rc = ctn_parse_int(l, "a node id", l->tok[2 + k], &nodes[k]);
     if (!rc) rc = ctn_parse_key_num(l, 4, "k", 1, &spec.k);
-    if (!rc && ctn_parse_key(l, 4, "l0")) {
-        rc = ctn_parse_key_num(l, 4, "l0", 1, &spec.l0);
-        if (!rc && !(spec.l0 > 0)) return ctn_parse_error(l, "spring %d: l0 must be positive (found %g)", id, spec.l0);
-    }
+    char what[32];
+    snprintf(what, sizeof what, "spring %d", id);
+    if (!rc) rc = prestress_keys(l, 4, what, &spec.l0, &spec.prestress, &spec.prestress_value);
     if (!rc && !(spec.k > 0)) return ctn_parse_error(l, "spring %d: k must be positive (found %g)", id, spec.k);
     if (!rc) rc = ctn_parse_leftovers(l, 4, "spring");
     spec.type = "spring";
@@ -159,8 +189,8 @@ static int cable_shape(ctn_line *l, ctn_cable_spec *spec)
 static int d_cable(ctn_line *l)
 {
     int a = 0, b = 0, n = 0;
-    ctn_cable_spec spec = { 0, 0, CTN_SHAPE_ARC, 1e-3, CTN_START_ARC };
-    int rc = ctn_parse_positional(l, 2, "cable NODE1 NODE2 section=SECTION n=COUNT length=LENGTH [shape=arc|straight] [start=arc|catenary] [guess=STRAIN]");
+    ctn_cable_spec spec = { 0, 0, CTN_SHAPE_ARC, 1e-3, CTN_START_ARC, CTN_PRESTRESS_NONE, 0 };
+    int rc = ctn_parse_positional(l, 2, "cable NODE1 NODE2 section=SECTION n=COUNT length=LENGTH [shape=arc|straight] [start=auto|arc|catenary] [guess=STRAIN] [N0=|s0=|eps0=]");
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[1], &a);
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[2], &b);
     const char *sec = rc ? NULL : ctn_parse_key(l, 3, "section");
@@ -169,6 +199,7 @@ static int d_cable(ctn_line *l)
     if (!rc) rc = key_int(l, "n", 1, CTN_CABLE_MAX_N, &n);
     if (!rc) rc = ctn_parse_key_num(l, 3, "length", 1, &spec.length);
     if (!rc) rc = cable_shape(l, &spec);
+    if (!rc) rc = prestress_keys(l, 3, "cable", NULL, &spec.prestress, &spec.prestress_value);
     if (!rc) rc = ctn_parse_leftovers(l, 3, "cable");
     spec.n = n;
     return rc ? rc : ctn_model_add_cable(l->m, a, b, sec, &spec, NULL, NULL);

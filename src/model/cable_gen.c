@@ -26,7 +26,25 @@ static int check_spec(const ctn_model *m, const ctn_cable_spec *s, double chord)
         return ctn_model_error(m, CTN_ERR_MODEL, "cable: unknown shape");
     if (s->start != CTN_START_ARC && s->start != CTN_START_CATENARY && s->start != CTN_START_AUTO)
         return ctn_model_error(m, CTN_ERR_MODEL, "cable: unknown start");
+    if (s->prestress < CTN_PRESTRESS_NONE || s->prestress > CTN_PRESTRESS_STRAIN)
+        return ctn_model_error(m, CTN_ERR_MODEL, "cable: unknown prestress");
     return CTN_OK;
+}
+
+/* Element prev-next of the cable: l0 = length / n, or from the prestress in its chord. */
+static int add_element(ctn_model *m, const ctn_cable_spec *spec, int prev, int next, const char *section)
+{
+    ctn_element_spec e;
+    int nodes[2] = { prev, next };
+    ctn_element_spec_init(&e);
+    e.id = m->max_element_id + 1;
+    e.nnodes = 2;
+    e.nodes = nodes;
+    e.section = section;
+    e.l0 = spec->prestress == CTN_PRESTRESS_NONE ? spec->length / spec->n : CTN_L0_DEFAULT;
+    e.prestress = spec->prestress;
+    e.prestress_value = spec->prestress_value;
+    return ctn_model_add_element_spec(m, &e);
 }
 
 static int reserve_all(ctn_model *m, size_t n)
@@ -89,8 +107,7 @@ int ctn_model_add_cable(ctn_model *m, int a, int b, const char *section,
             if ((rc = ctn_model_add_node(m, next, X, 0))) return rc;   /* cannot fail: reserved */
             memcpy(m->nodes.v[m->nodes.n - 1].guess, guess, sizeof guess);
         }
-        if ((rc = ctn_model_add_element(m, m->max_element_id + 1, prev, next, section,
-                                        spec->length / spec->n))) return rc;
+        if ((rc = add_element(m, spec, prev, next, section))) return rc;
         prev = next;
     }
     ctn_cable *c = &m->cables.v[m->cables.n++];

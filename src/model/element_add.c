@@ -75,6 +75,17 @@ static int make_record(const ctn_model *m, const ctn_element_spec *s, int type, 
     e->l0 = s->l0 == CTN_L0_DEFAULT ? chord : s->l0;
     e->k = s->k;
     e->line = m->line;
+    if (s->prestress != CTN_PRESTRESS_NONE) {
+        if (s->prestress < CTN_PRESTRESS_FORCE || s->prestress > CTN_PRESTRESS_STRAIN)
+            return ctn_model_error(m, CTN_ERR_MODEL, "element %d: unknown prestress", s->id);
+        if (s->l0 != CTN_L0_DEFAULT)
+            return ctn_model_error(m, CTN_ERR_MODEL, "element %d: give at most one of l0=, N0=, s0=, eps0=", s->id);
+        if (!ops->prestress_l0)
+            return ctn_model_error(m, CTN_ERR_MODEL, "element %d: a %s element takes no prestress", s->id, ops->name);
+        rc = ops->check(m, e);                      /* section, k: before they are used */
+        if (!rc) rc = ops->prestress_l0(m, e, (int)s->prestress, s->prestress_value, chord, &e->l0);
+        if (rc) return rc;
+    }
     return ops->check(m, e);
 }
 
