@@ -19,7 +19,7 @@
 #include "assemble/asm.h"
 #include "linalg/linsolve.h"
 
-#include <catena.h>
+#include "bench_common.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -28,8 +28,6 @@
 #include <sys/resource.h>
 #include <time.h>
 
-#define SPAN 200.0            /* level span [m] */
-#define LENGTH 250.8777       /* unstressed length [m] */
 #define MAX_REPEAT 99
 
 typedef struct bench_opts {
@@ -85,33 +83,6 @@ typedef struct result {
     const char *floor_at;     /* "final" or "guess": displacements of the floor's matrix */
 } result;
 
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-static double peak_rss_mib(void)
-{
-    struct rusage ru;
-    if (getrusage(RUSAGE_SELF, &ru)) return NAN;
-    return (double)ru.ru_maxrss / 1024.0;                    /* ru_maxrss is in KiB */
-}
-
-static int cmp_double(const void *x, const void *y)
-{
-    double p = *(const double *)x, q = *(const double *)y;
-    return (p > q) - (p < q);
-}
-
-/* Median of v[0..n), n >= 1 (v is sorted in place). */
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp_double);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 static const char *ordering_name(ctn_ordering o)
 {
     return o == CTN_ORDER_NATURAL ? "natural" : o == CTN_ORDER_AMD ? "amd" : "auto";
@@ -125,16 +96,6 @@ static int usage(void)
                     "                     [--tol T] [--maxit M] [--maxcuts C] [--repeat R]\n"
                     "                     [--floor-repeat F] [--table] [--log]\n");
     return 1;
-}
-
-/* An integer written as 1000, 1e6, ... within [lo, hi]; 0 on success. */
-static int parse_count(const char *s, int lo, int hi, int *out)
-{
-    char *end;
-    double v = strtod(s, &end);
-    if (end == s || *end || !(v >= lo && v <= hi) || v != floor(v)) return -1;
-    *out = (int)v;
-    return 0;
 }
 
 static int parse_method(const char *s, ctn_method *out)
@@ -195,24 +156,6 @@ static int parse_args(int argc, char **argv, bench_opts *o)
 }
 
 /* ---- the model ---- */
-
-static int build_model(ctn_ctx *ctx, int n, ctn_cable_start start, ctn_model **out)
-{
-    const double A[3] = { 0, 0, 0 }, B[3] = { SPAN, 0, 0 }, g[3] = { 0, -1, 0 };
-    ctn_cable_spec spec = { n, LENGTH, CTN_SHAPE_ARC, 1e-3, start, CTN_PRESTRESS_NONE, 0 };
-    ctn_model *m = NULL;
-    int rc = ctn_model_create(ctx, &m);
-    if (!rc) rc = ctn_model_set_units(m, "kN", "m");
-    if (!rc) rc = ctn_model_set_gravity(m, g);
-    if (!rc) rc = ctn_model_add_material(m, "steel", 2.0e8, CTN_STRAIN_GREEN_LAGRANGE, 0);
-    if (!rc) rc = ctn_model_add_section(m, "strand", "steel", 3.14e-4, 0.1);
-    if (!rc) rc = ctn_model_add_node(m, 1, A, CTN_FIX_ALL);
-    if (!rc) rc = ctn_model_add_node(m, 2, B, CTN_FIX_ALL);
-    if (!rc) rc = ctn_model_add_cable(m, 1, 2, "strand", &spec, NULL, NULL);
-    if (rc) ctn_model_destroy(&m);
-    *out = m;
-    return rc;
-}
 
 /* Starting displacements of the Newton iteration, 3 per node. */
 static int guess_displacements(const ctn_model *m, double *d)
@@ -528,7 +471,7 @@ static int run(ctn_ctx *ctx, const bench_opts *o, result *r)
     ctn_model *m = NULL;
     ctn_solution *s = NULL;
     double t0 = now();
-    int rc = build_model(ctx, o->n, o->start, &m);
+    int rc = build_paper_cable(ctx, o->n, o->start, &m);
     r->t_build = now() - t0;
     if (!rc) rc = run_solves(ctx, m, o, r, &s);
     if (!rc) rc = run_floor(ctx, m, s, o->floor_repeat, r);

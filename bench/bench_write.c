@@ -16,7 +16,7 @@
  * fsync included), the CPU seconds (user + system) of a write, which the load of a
  * shared machine disturbs less than wall time, and peak RSS in MiB. Exit status 0 when it ran, 1 on a usage error,
  * 2 when a library call failed. */
-#include <catena.h>
+#include "bench_common.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -27,8 +27,6 @@
 #include <time.h>
 #include <unistd.h>
 
-#define SPAN 200.0            /* level span [m] */
-#define LENGTH 250.8777       /* unstressed length [m] */
 #define MAX_REPEAT 99
 
 static const char *const files[3] = { "result.json", "nodes.csv", "elements.csv" };
@@ -51,20 +49,6 @@ typedef struct result {
     double rss_end;           /* peak RSS at the end [MiB] */
 } result;
 
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-static double peak_rss_mib(void)
-{
-    struct rusage ru;
-    if (getrusage(RUSAGE_SELF, &ru)) return NAN;
-    return (double)ru.ru_maxrss / 1024.0;                    /* ru_maxrss is in KiB */
-}
-
 static double cpu_seconds(void)
 {
     struct rusage ru;
@@ -73,26 +57,10 @@ static double cpu_seconds(void)
            1e-6 * (double)(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
 }
 
-static int cmp_double(const void *x, const void *y)
-{
-    double p = *(const double *)x, q = *(const double *)y;
-    return (p > q) - (p < q);
-}
-
 static int usage(void)
 {
     fprintf(stderr, "usage: bench_write N [--dir DIR] [--repeat R] [--no-write] [--keep]\n");
     return 1;
-}
-
-/* An integer written as 1000, 1e6, ... within [lo, hi]; 0 on success. */
-static int parse_count(const char *s, int lo, int hi, int *out)
-{
-    char *end;
-    double v = strtod(s, &end);
-    if (end == s || *end || !(v >= lo && v <= hi) || v != floor(v)) return -1;
-    *out = (int)v;
-    return 0;
 }
 
 static int parse_args(int argc, char **argv, bench_opts *o)
@@ -108,24 +76,6 @@ static int parse_args(int argc, char **argv, bench_opts *o)
         else return -1;
     }
     return 0;
-}
-
-static int build_model(ctn_ctx *ctx, int n, ctn_model **out)
-{
-    const double A[3] = { 0, 0, 0 }, B[3] = { SPAN, 0, 0 }, g[3] = { 0, -1, 0 };
-    ctn_cable_spec spec = { n, LENGTH, CTN_SHAPE_ARC, 1e-3, CTN_START_CATENARY, CTN_PRESTRESS_NONE, 0 };
-    ctn_model *m = NULL;
-    int rc = ctn_model_create(ctx, &m);
-    if (!rc) rc = ctn_model_set_units(m, "kN", "m");
-    if (!rc) rc = ctn_model_set_gravity(m, g);
-    if (!rc) rc = ctn_model_add_material(m, "steel", 2.0e8, CTN_STRAIN_GREEN_LAGRANGE, 0);
-    if (!rc) rc = ctn_model_add_section(m, "strand", "steel", 3.14e-4, 0.1);
-    if (!rc) rc = ctn_model_add_node(m, 1, A, CTN_FIX_ALL);
-    if (!rc) rc = ctn_model_add_node(m, 2, B, CTN_FIX_ALL);
-    if (!rc) rc = ctn_model_add_cable(m, 1, 2, "strand", &spec, NULL, NULL);
-    if (rc) ctn_model_destroy(&m);
-    *out = m;
-    return rc;
 }
 
 /* Total size of the three files in dir; -1 if one is missing. */
@@ -150,12 +100,6 @@ static void remove_files(const char *dir)
         unlink(path);
     }
     rmdir(dir);
-}
-
-static double median(double *v, int n)
-{
-    qsort(v, (size_t)n, sizeof *v, cmp_double);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 /* o->repeat timed ctn_write_results: median, min and max wall time, median CPU time. */
@@ -183,7 +127,7 @@ static int run(ctn_ctx *ctx, const bench_opts *o, result *r)
     ctn_model *m = NULL;
     ctn_solution *s = NULL;
     double t0 = now();
-    int rc = build_model(ctx, o->n, &m);
+    int rc = build_paper_cable(ctx, o->n, CTN_START_CATENARY, &m);
     r->t_build = now() - t0;
     t0 = now();
     if (!rc) rc = ctn_solve(ctx, m, NULL, &s);
