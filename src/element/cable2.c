@@ -136,6 +136,8 @@ static int cable_prestress_l0(const ctn_model *m, const ctn_element *e, int kind
 }
 
 const ctn_element_ops ctn_cable2_ops = {
-    "cable", 2, 3, sizeof(ctn_cable_props), CTN_ELEM_FLEXIBLE | CTN_ELEM_SECTION,
-    cable_check, cable_setup, cable_eval, cable_load, cable_stiffness, cable_rest_length, cable_prestress_l0,
+    .name = "cable", .nnodes = 2, .ndof_node = 3, .props_size = sizeof(ctn_cable_props),
+    .flags = CTN_ELEM_FLEXIBLE | CTN_ELEM_SECTION,
+    .check = cable_check, .setup = cable_setup, .eval = cable_eval, .load = cable_load,
+    .stiffness = cable_stiffness, .rest_length = cable_rest_length, .prestress_l0 = cable_prestress_l0,
 };

@@ -53,6 +53,7 @@ static int spring_prestress_l0(const ctn_model *m, const ctn_element *e, int kin
 }
 
 const ctn_element_ops ctn_spring2_ops = {
-    "spring", 2, 3, sizeof(ctn_spring_props), 0,
-    spring_check, spring_setup, spring_eval, NULL, spring_stiffness, NULL, spring_prestress_l0,
+    .name = "spring", .nnodes = 2, .ndof_node = 3, .props_size = sizeof(ctn_spring_props), .flags = 0,
+    .check = spring_check, .setup = spring_setup, .eval = spring_eval,
+    .stiffness = spring_stiffness, .prestress_l0 = spring_prestress_l0,
 };
