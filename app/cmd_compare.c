@@ -92,6 +92,7 @@ int ctn_cmd_compare(int argc, char **argv)
     }
     ctn_solve_options opt;
     int rc = ctn_read_file(ctx, a.model, &m, &opt), code = CTN_EXIT_OK;
+    if (!rc) rc = ctn_model_resolve_targets(ctx, m, &opt, NULL);
     if (!rc) rc = ctn_compare_create(ctx, m, &c);
     if (rc) code = ctn_app_fail_model(ctx, rc, a.model);
     if (!code) code = solve(ctx, a.model, m, &opt, &s, &sum);

@@ -22,6 +22,21 @@ static const char *method_title(ctn_method m)
     return m == CTN_METHOD_NEWTON ? "Newton-Raphson" : m == CTN_METHOD_ARCLENGTH ? "arc-length" : "Newton (auto)";
 }
 
+/* The lengths found for cables set by a target, a line each. */
+static void print_targets(const ctn_model *m)
+{
+    static const char *const key[] = { "length", "H", "sag", "tension" };
+    for (size_t i = 0; i < ctn_model_cable_count(m); i++) {
+        ctn_cable_info c;
+        ctn_node_info a, b;
+        if (ctn_model_cable(m, i, &c) || c.target == CTN_TARGET_NONE || ctn_model_node(m, (size_t)c.node[0], &a) ||
+            ctn_model_node(m, (size_t)c.node[1], &b))
+            continue;
+        printf("cable %d-%d: %s=%g reached (%.12g), length found %.12g %s (%d outer iterations)\n", a.id, b.id,
+               key[c.target], c.target_value, c.target_achieved, c.length, ctn_model_length_unit(m), c.target_iterations);
+    }
+}
+
 int ctn_cmd_solve(int argc, char **argv)
 {
     ctn_model_args a;
@@ -36,6 +51,8 @@ int ctn_cmd_solve(int argc, char **argv)
     ctn_solve_options opt;
     int rc = ctn_read_file(ctx, a.model, &m, &opt), code = CTN_EXIT_OK;
     ctn_iter_log iters = { stdout, { 0, 0 } };
+    if (!rc) rc = ctn_model_resolve_targets(ctx, m, &opt, NULL);
+    if (!rc && !a.json && !a.quiet) print_targets(m);
     if (!rc) {
         if (!a.json && !a.quiet) {
             opt.monitor = ctn_print_iteration;

@@ -56,7 +56,7 @@ static inline int parse_count(const char *s, int lo, int hi, int *out)
 static inline int build_paper_cable(ctn_ctx *ctx, int n, ctn_cable_start start, ctn_model **out)
 {
     const double A[3] = { 0, 0, 0 }, B[3] = { SPAN, 0, 0 }, g[3] = { 0, -1, 0 };
-    ctn_cable_spec spec = { n, LENGTH, CTN_SHAPE_ARC, 1e-3, start, CTN_PRESTRESS_NONE, 0 };
+    ctn_cable_spec spec = { .n = n, .length = LENGTH, .shape = CTN_SHAPE_ARC, .guess_strain = 1e-3, .start = start, .prestress = CTN_PRESTRESS_NONE };
     ctn_model *m = NULL;
     int rc = ctn_model_create(ctx, &m);
     if (!rc) rc = ctn_model_set_units(m, "kN", "m");

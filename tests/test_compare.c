@@ -27,7 +27,7 @@ static ctn_model *paper_model(ctn_ctx *ctx, double S, int n, ctn_strain strain)
 {
     ctn_model *m = NULL;
     double A[3] = { 0, 0, 0 }, B[3] = { 200, 0, 0 }, g[3] = { 0, -1, 0 };
-    ctn_cable_spec spec = { n, S, CTN_SHAPE_ARC, 1e-3, CTN_START_ARC, CTN_PRESTRESS_NONE, 0 };
+    ctn_cable_spec spec = { .n = n, .length = S, .shape = CTN_SHAPE_ARC, .guess_strain = 1e-3, .start = CTN_START_ARC, .prestress = CTN_PRESTRESS_NONE };
     if (ctn_model_create(ctx, &m) || ctn_model_set_units(m, "kN", "m") || ctn_model_set_gravity(m, g) ||
         ctn_model_add_material(m, "steel", 2.0e8, strain, 0) ||
         ctn_model_add_section(m, "strand", "steel", 3.14e-4, 0.1) ||
@@ -275,7 +275,7 @@ static void test_hload(void)
     ctn_ctx_create(&ctx);
     ctn_model *m = NULL;
     double A[3] = { 0, 0, 0 }, B[3] = { 200, 10, 0 }, g[3] = { 0, -1, 0 };
-    ctn_cable_spec spec = { 40, 206, CTN_SHAPE_ARC, 1e-3, CTN_START_ARC, CTN_PRESTRESS_NONE, 0 };
+    ctn_cable_spec spec = { .n = 40, .length = 206, .shape = CTN_SHAPE_ARC, .guess_strain = 1e-3, .start = CTN_START_ARC, .prestress = CTN_PRESTRESS_NONE };
     int first = 0, last = 0;
     int rc = ctn_model_create(ctx, &m) || ctn_model_set_gravity(m, g) ||
              ctn_model_add_material(m, "steel", 2.0e8, CTN_STRAIN_ENGINEERING, 0) ||
@@ -432,7 +432,7 @@ static void test_sag_point_load(void)
     ctn_model *m = NULL;
     ctn_ctx_create(&ctx);
     double A[3] = { 0, 0, 0 }, B[3] = { 30, 0, 0 }, g[3] = { 0, -1, 0 }, F[3] = { 0, -10, 0 };
-    ctn_cable_spec spec = { 5, 32, CTN_SHAPE_ARC, 1e-3, CTN_START_ARC, CTN_PRESTRESS_NONE, 0 };
+    ctn_cable_spec spec = { .n = 5, .length = 32, .shape = CTN_SHAPE_ARC, .guess_strain = 1e-3, .start = CTN_START_ARC, .prestress = CTN_PRESTRESS_NONE };
     int rc = ctn_model_create(ctx, &m) || ctn_model_set_gravity(m, g) ||
              ctn_model_add_material(m, "rope", 2.0e8, CTN_STRAIN_ENGINEERING, 0) ||
              ctn_model_add_section(m, "s", "rope", 1e-4, 0.01) || ctn_model_add_node(m, 1, A, CTN_FIX_ALL) ||

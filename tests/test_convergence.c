@@ -19,7 +19,7 @@ static ctn_model *span_model(ctn_ctx *ctx, double S, int n)
 {
     ctn_model *m = NULL;
     double A[3] = { 0, 0, 0 }, B[3] = { 200, 0, 0 }, g[3] = { 0, -1, 0 };
-    ctn_cable_spec spec = { n, S, CTN_SHAPE_ARC, 1e-3, CTN_START_ARC, CTN_PRESTRESS_NONE, 0 };
+    ctn_cable_spec spec = { .n = n, .length = S, .shape = CTN_SHAPE_ARC, .guess_strain = 1e-3, .start = CTN_START_ARC, .prestress = CTN_PRESTRESS_NONE };
     if (ctn_model_create(ctx, &m) || ctn_model_set_units(m, "kN", "m") || ctn_model_set_gravity(m, g) ||
         ctn_model_add_material(m, "steel", 2.0e8, CTN_STRAIN_ENGINEERING, 0) ||
         ctn_model_add_section(m, "strand", "steel", 3.14e-4, 0.1) ||
@@ -118,7 +118,7 @@ static void test_inclined(void)
     ctn_ctx_create(&ctx);
     ctn_model *m = NULL;
     double A[3] = { 0, 0, 0 }, B[3] = { 120, 90, 30 }, g[3] = { 0, 0, -9.81 };
-    ctn_cable_spec spec = { 10, 170, CTN_SHAPE_ARC, 1e-3, CTN_START_ARC, CTN_PRESTRESS_NONE, 0 };
+    ctn_cable_spec spec = { .n = 10, .length = 170, .shape = CTN_SHAPE_ARC, .guess_strain = 1e-3, .start = CTN_START_ARC, .prestress = CTN_PRESTRESS_NONE };
     int rc = ctn_model_create(ctx, &m) || ctn_model_set_gravity(m, g) ||
              ctn_model_add_material(m, "rope", 1.2e8, CTN_STRAIN_GREEN_LAGRANGE, 0) ||
              ctn_model_add_section(m, "s", "rope", 2e-4, 0.05) || ctn_model_add_node(m, 1, A, CTN_FIX_ALL) ||

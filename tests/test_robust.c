@@ -19,7 +19,7 @@ static ctn_model *cable_from(ctn_ctx *ctx, double S, ctn_cable_shape shape, doub
 {
     ctn_model *m = NULL;
     double A[3] = { 0, 0, 0 }, B[3] = { 200, 0, 0 }, g[3] = { 0, -1, 0 };
-    ctn_cable_spec spec = { 20, S, shape, guess, start, CTN_PRESTRESS_NONE, 0 };
+    ctn_cable_spec spec = { .n = 20, .length = S, .shape = shape, .guess_strain = guess, .start = start, .prestress = CTN_PRESTRESS_NONE };
     ctn_model_create(ctx, &m);
     ctn_model_set_gravity(m, g);
     ctn_model_add_material(m, "steel", 2.0e8, CTN_STRAIN_GREEN_LAGRANGE, 0);

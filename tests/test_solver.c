@@ -21,7 +21,7 @@ static ctn_model *paper_model(ctn_ctx *ctx, double S, int n)
 {
     ctn_model *m = NULL;
     double A[3] = { 0, 0, 0 }, B[3] = { 200, 0, 0 }, g[3] = { 0, -1, 0 };
-    ctn_cable_spec spec = { n, S, CTN_SHAPE_ARC, 1e-3, CTN_START_ARC, CTN_PRESTRESS_NONE, 0 };
+    ctn_cable_spec spec = { .n = n, .length = S, .shape = CTN_SHAPE_ARC, .guess_strain = 1e-3, .start = CTN_START_ARC, .prestress = CTN_PRESTRESS_NONE };
     if (ctn_model_create(ctx, &m) || ctn_model_set_units(m, "kN", "m") ||
         ctn_model_set_gravity(m, g) ||
         ctn_model_add_material(m, "steel", 2.0e8, CTN_STRAIN_GREEN_LAGRANGE, 0) ||
@@ -221,7 +221,7 @@ static void test_indefinite(void)
     ctn_ctx_create(&ctx);
     ctn_model *m = NULL;
     double A[3] = { 0, 0, 0 }, B[3] = { 200, 0, 0 }, g[3] = { 0, -1, 0 };
-    ctn_cable_spec spec = { 20, 250.8777, CTN_SHAPE_STRAIGHT, 1e-3, CTN_START_ARC, CTN_PRESTRESS_NONE, 0 };
+    ctn_cable_spec spec = { .n = 20, .length = 250.8777, .shape = CTN_SHAPE_STRAIGHT, .guess_strain = 1e-3, .start = CTN_START_ARC, .prestress = CTN_PRESTRESS_NONE };
     ctn_model_create(ctx, &m);
     ctn_model_set_gravity(m, g);
     ctn_model_add_material(m, "steel", 2.0e8, CTN_STRAIN_GREEN_LAGRANGE, 0);
@@ -307,7 +307,7 @@ static void cable_sags(const double B[3], const double g[3], double w, int n, do
     ctn_solution *s = NULL;
     ctn_solve_summary sum;
     double A[3] = { 0, 0, 0 };
-    ctn_cable_spec spec = { n, len, shape, 1e-3, CTN_START_ARC, CTN_PRESTRESS_NONE, 0 };
+    ctn_cable_spec spec = { .n = n, .length = len, .shape = shape, .guess_strain = 1e-3, .start = CTN_START_ARC, .prestress = CTN_PRESTRESS_NONE };
     out[0] = out[1] = out[2] = NAN;
     ctn_ctx_create(&ctx);
     int rc = ctn_model_create(ctx, &m) || ctn_model_set_gravity(m, g) ||

@@ -310,14 +310,16 @@ static char *reference_csv(const ctn_model *m, const ctn_solution *s, int elemen
                     p.fix & CTN_FIX_Y ? "y" : "", p.fix & CTN_FIX_Z ? "z" : "", r[0], r[1], r[2]);
         }
     } else {
-        fprintf(f, "id,node1,node2,l0,length,strain,force,stress,slack\n");
+        fprintf(f, "id,node1,node2,l0,length,strain,force,stress,slack,utilisation,group\n");
         for (size_t i = 0; i < ctn_model_element_count(m); i++) {
             ctn_element_info e;
             ctn_element_state es;
             ctn_model_element(m, i, &e);
             ctn_solution_step_element(s, k, i, &es);
-            fprintf(f, "%d,%d,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%d\n", e.id, ref_id(m, e.node[0]),
+            fprintf(f, "%d,%d,%d,%.17g,%.17g,%.17g,%.17g,%.17g,%d,", e.id, ref_id(m, e.node[0]),
                     ref_id(m, e.node[1]), e.l0, es.length, es.strain, es.force, es.stress, es.slack);
+            if (e.capacity > 0) fprintf(f, "%.17g", ctn_utilisation(&e, &es));
+            fprintf(f, ",%s\n", e.group ? e.group : "");
         }
     }
     fclose(f);
@@ -400,7 +402,7 @@ static void solve_file(ctn_ctx *ctx, const char *path, model_case *c)
 static void solve_diverged(ctn_ctx *ctx, model_case *c)
 {
     double A[3] = { 0, 0, 0 }, B[3] = { 200, 0, 0 }, g[3] = { 0, -1, 0 };
-    ctn_cable_spec spec = { 20, 250.8777, CTN_SHAPE_STRAIGHT, 1e-3, CTN_START_ARC, CTN_PRESTRESS_NONE, 0 };
+    ctn_cable_spec spec = { .n = 20, .length = 250.8777, .shape = CTN_SHAPE_STRAIGHT, .guess_strain = 1e-3, .start = CTN_START_ARC, .prestress = CTN_PRESTRESS_NONE };
     ctn_solve_options opt;
     c->name = "diverged";
     c->s = NULL;
@@ -420,7 +422,7 @@ static void solve_diverged(ctn_ctx *ctx, model_case *c)
 static void solve_escaped(ctn_ctx *ctx, model_case *c)
 {
     double A[3] = { 0, 0, 0 }, B[3] = { 200, 0, 0 }, g[3] = { 0, -1, 0 }, F[3] = { 0, -5, 0 };
-    ctn_cable_spec spec = { 20, 250.8777, CTN_SHAPE_ARC, 1e-3, CTN_START_ARC, CTN_PRESTRESS_NONE, 0 };
+    ctn_cable_spec spec = { .n = 20, .length = 250.8777, .shape = CTN_SHAPE_ARC, .guess_strain = 1e-3, .start = CTN_START_ARC, .prestress = CTN_PRESTRESS_NONE };
     c->name = "escaped step names";
     c->s = NULL;
     ctn_model_create(ctx, &c->m);
@@ -441,7 +443,7 @@ static void solve_escaped(ctn_ctx *ctx, model_case *c)
 static void solve_big(ctn_ctx *ctx, model_case *c)
 {
     double A[3] = { 0, 0, 0 }, B[3] = { 200, 0, 0 }, g[3] = { 0, -1, 0 };
-    ctn_cable_spec spec = { 2000, 250.8777, CTN_SHAPE_ARC, 1e-3, CTN_START_CATENARY, CTN_PRESTRESS_NONE, 0 };
+    ctn_cable_spec spec = { .n = 2000, .length = 250.8777, .shape = CTN_SHAPE_ARC, .guess_strain = 1e-3, .start = CTN_START_CATENARY, .prestress = CTN_PRESTRESS_NONE };
     c->name = "2000 elements";
     c->s = NULL;
     ctn_model_create(ctx, &c->m);

@@ -59,6 +59,15 @@ typedef enum ctn_prestress {
     CTN_PRESTRESS_STRESS = 2, /* s0 = N0 / A [force/length^2] (families with a section) */
     CTN_PRESTRESS_STRAIN = 3  /* eps0, of the material's strain measure (spring: (l-l0)/l0) */
 } ctn_prestress;
+/* A cable set by a target instead of its length: the unstressed length that gives the
+ * target in the solved model (under the span's weight and the loads acting with it) is
+ * found by an outer root find (docs/theory.md, "Cables set by a target"). */
+typedef enum ctn_cable_target {
+    CTN_TARGET_NONE = 0,      /* the length is given */
+    CTN_TARGET_H = 1,         /* horizontal tension at the first end (normal to gravity) */
+    CTN_TARGET_SAG = 2,       /* largest distance below the chord, along gravity */
+    CTN_TARGET_TENSION = 3    /* largest tension at the two ends */
+} ctn_cable_target;
 /* Parameters of a generated cable (ctn_model_add_cable). */
 typedef struct ctn_cable_spec {
     int n;               /* number of elements, >= 1 */
@@ -72,6 +81,10 @@ typedef struct ctn_cable_spec {
     ctn_prestress prestress;  /* every element's l0 from this prestress in its generated
                                  chord instead of length / n (default none) */
     double prestress_value;
+    const char *group;   /* every element joins this group (NULL: none) */
+    ctn_cable_target target;  /* instead of `length`: the length is found to meet it
+                                 (ctn_model_resolve_targets, or the solve) */
+    double target_value;      /* H [force], sag [length] or tension [force] */
 } ctn_cable_spec;
 
 /* Create an empty model bound to ctx (errors are recorded there; ctx must outlive it). */
@@ -99,6 +112,7 @@ typedef struct ctn_material_spec {
     double E;             /* Young's modulus > 0 [force/length^2] */
     ctn_strain strain;    /* strain measure (default CTN_STRAIN_GREEN_LAGRANGE) */
     int tension_only;     /* 1: members carry no compression (default 0) */
+    double alpha;         /* coefficient of thermal expansion [1/K] (default 0) */
 } ctn_material_spec;
 void ctn_material_spec_init(ctn_material_spec *s);
 int ctn_model_add_material_spec(ctn_model *m, const ctn_material_spec *s);
@@ -110,6 +124,8 @@ typedef struct ctn_section_spec {
     const char *material; /* name of a defined material */
     double A;             /* area > 0 [length^2] */
     double w;             /* weight per unit unstressed length >= 0 [force/length] (default 0) */
+    double mbl;           /* minimum breaking load > 0 [force] (default 0: not given) */
+    double safety;        /* safety factor > 0 on mbl: capacity = mbl / safety (default 1) */
 } ctn_section_spec;
 void ctn_section_spec_init(ctn_section_spec *s);
 int ctn_model_add_section_spec(ctn_model *m, const ctn_section_spec *s);
@@ -131,6 +147,7 @@ typedef struct ctn_element_spec {
     double k;             /* spring: stiffness [force/length] */
     ctn_prestress prestress;  /* instead of l0 (then l0 must stay CTN_L0_DEFAULT) */
     double prestress_value;   /* its value N0, s0 or eps0 */
+    const char *group;    /* the group it joins (created if new; NULL: none) */
 } ctn_element_spec;
 void ctn_element_spec_init(ctn_element_spec *s);
 int ctn_model_add_element_spec(ctn_model *m, const ctn_element_spec *s);
@@ -186,6 +203,19 @@ typedef enum ctn_projection {
 } ctn_projection;
 int ctn_model_add_hload(ctn_model *m, double q, int first, int last);   /* deformed */
 int ctn_model_add_hload_projected(ctn_model *m, double q, int first, int last, ctn_projection proj);
+/* The same on the elements of a defined group. */
+int ctn_model_add_hload_group(ctn_model *m, double q, const char *group, ctn_projection proj);
+/* Groups of elements (names: a letter first, then letters, digits, '_', '-' or '.'; not
+ * "all"). An element belongs to at most one group. Adds the elements with ids first..last
+ * (the ids in the range that exist; at least one must) to group `name`, created if new. */
+int ctn_model_add_group(ctn_model *m, const char *name, int first, int last);
+size_t ctn_model_group_count(const ctn_model *m);
+const char *ctn_model_group_name(const ctn_model *m, size_t g);   /* NULL if out of range */
+/* A temperature change dT [K] from the reference temperature, of `target`: "all", a
+ * group name, or an element id in decimal. Belongs to the current step (increments add
+ * up over the steps, ramped in its substeps like loads). An element's unstressed length
+ * becomes l0 (1 + alpha dT), alpha its material's; its weight stays w l0. */
+int ctn_model_add_temperature(ctn_model *m, const char *target, double dT);
 /* Reference "file:line" recorded with the next definitions, used in later validation
  * messages (the reader sets it; API users may ignore it). file is copied. */
 int ctn_model_set_origin(ctn_model *m, const char *file, int line);
@@ -214,6 +244,9 @@ typedef struct ctn_element_info {
     ctn_strain strain;
     int tension_only;
     double k;        /* spring stiffness [force/length]; 0 for other families */
+    const char *group;   /* its group's name, NULL if none */
+    double capacity; /* mbl / safety of its section [force], 0 if no mbl */
+    double alpha;    /* thermal expansion of its material [1/K] */
 } ctn_element_info;
 
 /* A cable made by the generator: its end nodes and its element index range. */
@@ -221,7 +254,11 @@ typedef struct ctn_cable_info {
     int node[2];     /* end node indices */
     size_t first;    /* index of its first element */
     size_t count;    /* number of elements, consecutive from first, ordered end 0 -> 1 */
-    double length;   /* unstressed length */
+    double length;   /* unstressed length (for a target: the length found) */
+    ctn_cable_target target;  /* CTN_TARGET_NONE, or what set the length */
+    double target_value;      /* the target asked */
+    double target_achieved;   /* its value in the solved first step, once resolved */
+    int target_iterations;    /* outer iterations of the root find (0 before it) */
 } ctn_cable_info;
 
 size_t ctn_model_node_count(const ctn_model *m);

@@ -166,6 +166,17 @@ typedef struct ctn_element_state {
     int slack;            /* 1 if a tension-only element carries no force */
 } ctn_element_state;
 
+/* Cables set by a target (ctn_cable_spec.target: H, sag or tension): find the unstressed
+ * lengths that meet every target at the end of the first load step, under the loads
+ * acting in it, to 1e-10 relative, by Newton's method on the lengths with sensitivities
+ * from the FE tangent (docs/theory.md). The model is changed in place: the cables'
+ * elements get the lengths found (ctn_model_cable reports them with the value reached)
+ * and the nodes' starting displacements become the first step's solution. *outer (may be
+ * NULL) gets the outer iterations. A target no length can reach is CTN_ERR_MODEL naming
+ * the cable's line and the closest value reached. No-op without targets. Until it has
+ * run, ctn_problem_create refuses a model with targets. */
+int ctn_model_resolve_targets(ctn_ctx *ctx, ctn_model *m, const ctn_solve_options *opt, int *outer);
+
 /* The analysis of model m with options opt (NULL: the defaults), set up once. The model
  * must outlive the problem and not change while it exists. On CTN_OK *out owns it. */
 typedef struct ctn_problem ctn_problem;
@@ -248,6 +259,33 @@ int ctn_solution_cable_sag(const ctn_model *m, const ctn_solution *s, size_t i, 
  * polyline of its straight elements. */
 int ctn_solution_cable_max_sag_from_chord(const ctn_model *m, const ctn_solution *s, size_t i,
                                           double *d);
+
+/* Capacity: the utilisation of an element is its force / (mbl / safety) of its section
+ * (ctn_element_info.capacity); it is defined only when the section has an mbl. */
+static inline double ctn_utilisation(const ctn_element_info *e, const ctn_element_state *st)
+{
+    return e->capacity > 0 ? st->force / e->capacity : 0.0;
+}
+
+/* Totals and extremes of group g (ctn_model_group_name) at the end of step k. */
+typedef struct ctn_group_result {
+    const char *name;
+    size_t elements;         /* members */
+    double max_force, min_force;   /* [force] */
+    double max_stress;       /* largest N / A of the members with a section [force/length^2] */
+    double max_strain;
+    int has_capacity;        /* 1 if some member's section has an mbl */
+    double max_utilisation;  /* largest utilisation of those members (0 if none) */
+    int worst_element;       /* id of the member with it (0 if none) */
+    size_t slack;            /* slack tension-only members */
+    double length;           /* sum of unstressed lengths (reference temperature) [length] */
+    double stressed_length;  /* sum of current lengths [length] */
+    double weight;           /* sum of w l0 |g| [force] */
+} ctn_group_result;
+int ctn_solution_group(const ctn_model *m, const ctn_solution *s, size_t k, size_t g, ctn_group_result *out);
+/* The most utilised element at the end of step k: its index in *e and its utilisation
+ * in *u; CTN_ERR_INVALID when no section has an mbl. */
+int ctn_solution_worst_utilisation(const ctn_model *m, const ctn_solution *s, size_t k, size_t *e, double *u);
 
 CTN_API_END
 #ifdef __cplusplus

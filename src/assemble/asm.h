@@ -76,6 +76,10 @@ size_t ctn_asm_count_compressed(const ctn_asm *a, const double *d);
 /* Family and properties of element e. */
 const ctn_asm_block *ctn_asm_block_of(const ctn_asm *a, size_t e);
 const void *ctn_asm_props(const ctn_asm *a, size_t e);
+/* Temperature change dT (ne, model order) of every element whose family expands. */
+void ctn_asm_set_temperatures(ctn_asm *a, const double *dT);
+/* Properties of element e afresh from the model (after its l0 changed). */
+void ctn_asm_setup_element(ctn_asm *a, size_t e);
 
 /* Build steps of ctn_asm_create (blocks.c, pattern.c). */
 int ctn_asm_blocks(ctn_ctx *ctx, ctn_asm *a);

@@ -106,3 +106,19 @@ const void *ctn_asm_props(const ctn_asm *a, size_t e)
     const ctn_asm_block *b = ctn_asm_block_of(a, e);
     return a->props + b->props0 + (e - b->e0) * b->ops->props_size;
 }
+
+void ctn_asm_set_temperatures(ctn_asm *a, const double *dT)
+{
+    for (size_t k = 0; k < a->nblocks; k++) {
+        const ctn_asm_block *b = &a->blocks[k];
+        if (!b->ops->temperature) continue;
+        for (size_t i = 0; i < b->count; i++)
+            b->ops->temperature(a->props + b->props0 + i * b->ops->props_size, dT[b->e0 + i]);
+    }
+}
+
+void ctn_asm_setup_element(ctn_asm *a, size_t e)
+{
+    const ctn_asm_block *b = ctn_asm_block_of(a, e);
+    b->ops->setup(a->m, e, a->props + b->props0 + (e - b->e0) * b->ops->props_size);
+}

@@ -10,7 +10,7 @@ static int add_span(ctn_model *m, const ctn_model *base, const ctn_span *sp, dou
     ctn_element_info e;
     int rc = ctn_model_element(base, 0, &e), first = 0, last = 0;
     double chord = hypot(sp->l, sp->h);
-    ctn_cable_spec spec = { (int)n, L0, L0 > chord ? CTN_SHAPE_ARC : CTN_SHAPE_STRAIGHT, 1e-3, CTN_START_ARC, CTN_PRESTRESS_NONE, 0 };
+    ctn_cable_spec spec = { .n = (int)n, .length = L0, .shape = L0 > chord ? CTN_SHAPE_ARC : CTN_SHAPE_STRAIGHT, .guess_strain = 1e-3, .start = CTN_START_ARC, .prestress = CTN_PRESTRESS_NONE };
     if (!rc && *sp->force_unit && *sp->length_unit) rc = ctn_model_set_units(m, sp->force_unit, sp->length_unit);
     if (!rc) rc = ctn_model_set_gravity(m, sp->g);
     if (!rc) rc = ctn_model_add_material(m, "span", e.E, strain, e.tension_only);

@@ -71,6 +71,14 @@ static void cable_setup(const ctn_model *m, size_t e, void *props)
     p->A = s->A;
     p->strain = (int)mat->strain;
     p->tension_only = mat->tension_only;
+    p->l0_ref = el->l0;
+    p->alpha = mat->alpha;
+}
+
+static void cable_temperature(void *props, double dT)
+{
+    ctn_cable_props *p = props;
+    p->l0 = p->l0_ref * (1 + p->alpha * dT);
 }
 
 /* Self-weight: w l0 g, half to each node (a dead load). */
@@ -140,4 +148,5 @@ const ctn_element_ops ctn_cable2_ops = {
     .flags = CTN_ELEM_FLEXIBLE | CTN_ELEM_SECTION,
     .check = cable_check, .setup = cable_setup, .eval = cable_eval, .load = cable_load,
     .stiffness = cable_stiffness, .rest_length = cable_rest_length, .prestress_l0 = cable_prestress_l0,
+    .temperature = cable_temperature,
 };

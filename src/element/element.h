@@ -71,6 +71,10 @@ typedef struct ctn_element_ops {
     /* Optional: the unstressed length l0 that gives element e (its section or k set) the
      * prestress `kind` of value v at length l; a model error (ctn_model_error) if none. */
     int (*prestress_l0)(const ctn_model *m, const ctn_element *e, int kind, double v, double l, double *l0);
+    /* Optional: a temperature change dT [K] from the reference state: the unstressed
+     * length becomes l0 (1 + alpha dT) (alpha of the element's material); weight and mass
+     * stay those of l0. Families without it do not expand. */
+    void (*temperature)(void *props, double dT);
 } ctn_element_ops;
 
 /* Entries of the packed upper triangle of an n x n matrix. */
@@ -100,6 +104,8 @@ typedef struct ctn_cable_props {
     double A;           /* area [length^2], for the stress */
     int strain;         /* ctn_strain */
     int tension_only;   /* 1: N = max(N, 0) */
+    double l0_ref;      /* unstressed length at the reference temperature */
+    double alpha;       /* thermal expansion [1/K] */
 } ctn_cable_props;
 
 /* Properties of a two-node axial spring (spring2.c). */

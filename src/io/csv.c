@@ -53,10 +53,11 @@ static int nodes_step(void *p, const ctn_solution *s, size_t k)
 
 static int elements_begin(void *p, const ctn_model *m, ctn_sink *sink)
 {
-    return csv_begin(p, m, sink, "id,node1,node2,l0,length,strain,force,stress,slack\n");
+    return csv_begin(p, m, sink, "id,node1,node2,l0,length,strain,force,stress,slack,utilisation,group\n");
 }
 
-/* id,node1,node2,l0,length,strain,force,stress,slack */
+/* id,node1,node2,l0,length,strain,force,stress,slack,utilisation,group (utilisation and
+ * group empty when the section has no mbl / the element no group) */
 static int element_row(ctn_writer *w, const ctn_element_info *e, const ctn_element_state *es)
 {
     ctn_node_info a, b;
@@ -70,6 +71,10 @@ static int element_row(ctn_writer *w, const ctn_element_info *e, const ctn_eleme
     double v[5] = { e->l0, es->length, es->strain, es->force, es->stress };
     for (int k = 0; k < 5; k++) field(&w->out, v[k]);
     ctn_wbuf_int(&w->out, es->slack);
+    ctn_wbuf_putc(&w->out, ',');
+    if (e->capacity > 0) ctn_wbuf_g17(&w->out, ctn_utilisation(e, es));
+    ctn_wbuf_putc(&w->out, ',');
+    if (e->group) ctn_wbuf_puts(&w->out, e->group);
     ctn_wbuf_putc(&w->out, '\n');
     return CTN_OK;
 }

@@ -2,6 +2,7 @@
 #include "io/parse.h"
 #include "solve/problem.h"
 
+#include <ctype.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -52,29 +53,43 @@ static int d_gravity(ctn_line *l)
 
 static int d_material(ctn_line *l)
 {
-    double E = 0;
+    ctn_material_spec spec;
+    ctn_material_spec_init(&spec);
     ctn_strain strain = CTN_STRAIN_GREEN_LAGRANGE;
-    int rc = ctn_parse_positional(l, 1, "material NAME E=VALUE [strain=green-lagrange|engineering] [tension-only]");
-    if (!rc) rc = ctn_parse_key_num(l, 2, "E", 1, &E);
+    int rc = ctn_parse_positional(l, 1, "material NAME E=VALUE [strain=green-lagrange|engineering] [tension-only] [alpha=PER_KELVIN]");
+    if (!rc) rc = ctn_parse_key_num(l, 2, "E", 1, &spec.E);
+    if (!rc) rc = ctn_parse_key_num(l, 2, "alpha", 0, &spec.alpha);
     const char *s = rc ? NULL : ctn_parse_key(l, 2, "strain");
     if (s && !strcmp(s, "engineering")) strain = CTN_STRAIN_ENGINEERING;
     else if (s && strcmp(s, "green-lagrange"))
         return ctn_parse_error(l, "unknown strain measure '%.40s' (expected green-lagrange or engineering)", s);
     int tension_only = rc ? 0 : ctn_parse_flag(l, 2, "tension-only");
     if (!rc) rc = ctn_parse_leftovers(l, 2, "material");
-    return rc ? rc : ctn_model_add_material(l->m, l->tok[1], E, strain, tension_only);
+    spec.name = l->tok[1];
+    spec.strain = strain;
+    spec.tension_only = tension_only;
+    return rc ? rc : ctn_model_add_material_spec(l->m, &spec);
 }
 
 static int d_section(ctn_line *l)
 {
-    double A = 0, w = 0;
-    int rc = ctn_parse_positional(l, 1, "section NAME material=MATERIAL A=AREA [w=WEIGHT]");
+    ctn_section_spec spec;
+    ctn_section_spec_init(&spec);
+    int rc = ctn_parse_positional(l, 1, "section NAME material=MATERIAL A=AREA [w=WEIGHT] [mbl=FORCE] [safety=FACTOR]");
     const char *mat = rc ? NULL : ctn_parse_key(l, 2, "material");
     if (!rc && !mat) return ctn_parse_error(l, "section: missing required key 'material='");
-    if (!rc) rc = ctn_parse_key_num(l, 2, "A", 1, &A);
-    if (!rc) rc = ctn_parse_key_num(l, 2, "w", 0, &w);
+    if (!rc) rc = ctn_parse_key_num(l, 2, "A", 1, &spec.A);
+    if (!rc) rc = ctn_parse_key_num(l, 2, "w", 0, &spec.w);
+    if (!rc) rc = ctn_parse_key_num(l, 2, "mbl", 0, &spec.mbl);
+    if (!rc) rc = ctn_parse_key_num(l, 2, "safety", 0, &spec.safety);
+    if (!rc && ctn_parse_key(l, 2, "mbl") && !(spec.mbl > 0))
+        return ctn_parse_error(l, "section %s: mbl must be positive (found %g)", l->tok[1], spec.mbl);
+    if (!rc && ctn_parse_key(l, 2, "safety") && !ctn_parse_key(l, 2, "mbl"))
+        return ctn_parse_error(l, "section %s: safety= applies to mbl=, which is missing", l->tok[1]);
     if (!rc) rc = ctn_parse_leftovers(l, 2, "section");
-    return rc ? rc : ctn_model_add_section(l->m, l->tok[1], mat, A, w);
+    spec.name = l->tok[1];
+    spec.material = mat;
+    return rc ? rc : ctn_model_add_section_spec(l->m, &spec);
 }
 
 static int parse_fix(ctn_line *l, unsigned *fix)
@@ -130,7 +145,7 @@ static int d_element(ctn_line *l)
 {
     int id = 0, a = 0, b = 0;
     double l0 = CTN_L0_DEFAULT;
-    int rc = ctn_parse_positional(l, 3, "element ID NODE1 NODE2 section=SECTION [l0=LENGTH|N0=FORCE|s0=STRESS|eps0=STRAIN]");
+    int rc = ctn_parse_positional(l, 3, "element ID NODE1 NODE2 section=SECTION [l0=LENGTH|N0=FORCE|s0=STRESS|eps0=STRAIN] [group=NAME]");
     if (!rc) rc = ctn_parse_int(l, "the element id", l->tok[1], &id);
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[2], &a);
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[3], &b);
@@ -142,6 +157,7 @@ static int d_element(ctn_line *l)
     int nodes[2] = { a, b };
     ctn_element_spec_init(&spec);
     if (!rc) rc = prestress_keys(l, 4, what, &l0, &spec.prestress, &spec.prestress_value);
+    spec.group = rc ? NULL : ctn_parse_key(l, 4, "group");
     if (!rc) rc = ctn_parse_leftovers(l, 4, "element");
     spec.id = id;
     spec.nnodes = 2;
@@ -156,7 +172,7 @@ static int d_spring(ctn_line *l)
     int id = 0, nodes[2] = { 0, 0 };
     ctn_element_spec spec;
     ctn_element_spec_init(&spec);
-    int rc = ctn_parse_positional(l, 3, "spring ID NODE1 NODE2 k=STIFFNESS [l0=LENGTH]");
+    int rc = ctn_parse_positional(l, 3, "spring ID NODE1 NODE2 k=STIFFNESS [l0=LENGTH] [group=NAME]");
     if (!rc) rc = ctn_parse_int(l, "the element id", l->tok[1], &id);
     for (int k = 0; k < 2 && !rc; k++) rc = ctn_parse_int(l, "a node id", l->tok[2 + k], &nodes[k]);
     if (!rc) rc = ctn_parse_key_num(l, 4, "k", 1, &spec.k);
@@ -164,6 +180,7 @@ static int d_spring(ctn_line *l)
     snprintf(what, sizeof what, "spring %d", id);
     if (!rc) rc = prestress_keys(l, 4, what, &spec.l0, &spec.prestress, &spec.prestress_value);
     if (!rc && !(spec.k > 0)) return ctn_parse_error(l, "spring %d: k must be positive (found %g)", id, spec.k);
+    spec.group = rc ? NULL : ctn_parse_key(l, 4, "group");
     if (!rc) rc = ctn_parse_leftovers(l, 4, "spring");
     spec.type = "spring";
     spec.id = id;
@@ -186,20 +203,44 @@ static int cable_shape(ctn_line *l, ctn_cable_spec *spec)
     return rc ? rc : ctn_parse_key_num(l, 3, "guess", 0, &spec->guess_strain);
 }
 
+/* Exactly one of length=, H=, sag=, tension=: the length, or the target that sets it. */
+static int cable_length(ctn_line *l, ctn_cable_spec *spec)
+{
+    static const char *const keys[4] = { "length", "H", "sag", "tension" };
+    int given = -1;
+    for (int k = 0; k < 4; k++) {
+        if (!ctn_parse_key(l, 3, keys[k])) continue;
+        if (given >= 0)
+            return ctn_parse_error(l, "cable: give one of length=, H=, sag=, tension= (found %s= and %s=)", keys[given], keys[k]);
+        given = k;
+    }
+    if (given < 0) return ctn_parse_error(l, "cable: missing required key 'length=' (or a target H=, sag= or tension=)");
+    double v = 0;
+    int rc = ctn_parse_key_num(l, 3, keys[given], 1, &v);
+    if (!rc && given && !(v > 0)) return ctn_parse_error(l, "cable: %s must be positive (found %g)", keys[given], v);
+    if (given == 0) spec->length = v;
+    spec->target = (ctn_cable_target)given;
+    spec->target_value = given ? v : 0;
+    return rc;
+}
+
 static int d_cable(ctn_line *l)
 {
     int a = 0, b = 0, n = 0;
-    ctn_cable_spec spec = { 0, 0, CTN_SHAPE_ARC, 1e-3, CTN_START_ARC, CTN_PRESTRESS_NONE, 0 };
-    int rc = ctn_parse_positional(l, 2, "cable NODE1 NODE2 section=SECTION n=COUNT length=LENGTH [shape=arc|straight] [start=auto|arc|catenary] [guess=STRAIN] [N0=|s0=|eps0=]");
+    ctn_cable_spec spec = { .n = 0, .length = 0, .shape = CTN_SHAPE_ARC, .guess_strain = 1e-3, .start = CTN_START_ARC, .prestress = CTN_PRESTRESS_NONE };
+    int rc = ctn_parse_positional(l, 2, "cable NODE1 NODE2 section=SECTION n=COUNT length=LENGTH|H=FORCE|sag=LENGTH|tension=FORCE [shape=arc|straight] [start=auto|arc|catenary] [guess=STRAIN] [N0=|s0=|eps0=] [group=NAME]");
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[1], &a);
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[2], &b);
     const char *sec = rc ? NULL : ctn_parse_key(l, 3, "section");
     if (!rc && !sec) return ctn_parse_error(l, "cable: missing required key 'section='");
     if (!rc && !ctn_parse_key(l, 3, "n")) return ctn_parse_error(l, "cable: missing required key 'n='");
     if (!rc) rc = key_int(l, "n", 1, CTN_CABLE_MAX_N, &n);
-    if (!rc) rc = ctn_parse_key_num(l, 3, "length", 1, &spec.length);
+    if (!rc) rc = cable_length(l, &spec);
     if (!rc) rc = cable_shape(l, &spec);
     if (!rc) rc = prestress_keys(l, 3, "cable", NULL, &spec.prestress, &spec.prestress_value);
+    if (!rc && spec.target && spec.prestress)
+        return ctn_parse_error(l, "cable: a target (H=, sag=, tension=) sets the length: give no N0=, s0= or eps0= with it");
+    spec.group = rc ? NULL : ctn_parse_key(l, 3, "group");
     if (!rc) rc = ctn_parse_leftovers(l, 3, "cable");
     spec.n = n;
     return rc ? rc : ctn_model_add_cable(l->m, a, b, sec, &spec, NULL, NULL);
@@ -243,12 +284,17 @@ static int d_hload(ctn_line *l)
     int first = 0, last = 0;
     static const char *const projections[] = { "deformed", "reference" };
     int proj = CTN_PROJECT_DEFORMED;
-    int rc = ctn_parse_positional(l, 0, "hload q=LOAD [elements=FIRST-LAST|ID|all] [projection=deformed|reference]");
+    int rc = ctn_parse_positional(l, 0, "hload q=LOAD [elements=FIRST-LAST|ID|GROUP|all] [projection=deformed|reference]");
+    const char *target = rc ? NULL : ctn_parse_key(l, 1, "elements");
+    int group = target && isalpha((unsigned char)*target) && strcmp(target, "all") &&
+                (ctn_model_find_group(l->m, target) >= 0 || !strchr(target, '-'));
     if (!rc) rc = ctn_parse_key_num(l, 1, "q", 1, &q);
-    if (!rc) rc = parse_range(l, ctn_parse_key(l, 1, "elements"), &first, &last);
+    if (!rc && !group) rc = parse_range(l, target, &first, &last);
     if (!rc) rc = key_word(l, "projection", projections, 2, &proj);
     if (!rc) rc = ctn_parse_leftovers(l, 1, "hload");
-    return rc ? rc : ctn_model_add_hload_projected(l->m, q, first, last, (ctn_projection)proj);
+    if (rc) return rc;
+    return group ? ctn_model_add_hload_group(l->m, q, target, (ctn_projection)proj)
+                 : ctn_model_add_hload_projected(l->m, q, first, last, (ctn_projection)proj);
 }
 
 static int d_solve(ctn_line *l)
@@ -311,6 +357,33 @@ static int d_displace(ctn_line *l)
     return rc ? rc : ctn_model_add_displacement(l->m, id, dofs, u);
 }
 
+/* group NAME ID|FIRST-LAST ... */
+static int d_group(ctn_line *l)
+{
+    int rc = ctn_parse_positional(l, 2, "group NAME ID|FIRST-LAST ...");
+    for (int k = 2; k < l->ntok && !rc; k++) {
+        int first = 0, last = 0;
+        if (strchr(l->tok[k], '='))
+            return ctn_parse_error(l, "group: '%.40s' is not an element id or range (group takes no keys)", l->tok[k]);
+        if (!strcmp(l->tok[k], "all"))
+            return ctn_parse_error(l, "group: give element ids or ranges FIRST-LAST ('all' is not one)");
+        rc = parse_range(l, l->tok[k], &first, &last);
+        if (!rc) rc = ctn_model_add_group(l->m, l->tok[1], first, last);
+    }
+    l->used = ~0ull;
+    return rc;
+}
+
+/* temperature TARGET dT=KELVIN */
+static int d_temperature(ctn_line *l)
+{
+    double dT = 0;
+    int rc = ctn_parse_positional(l, 1, "temperature TARGET dT=KELVIN (TARGET: all, an element id or a group)");
+    if (!rc) rc = ctn_parse_key_num(l, 2, "dT", 1, &dT);
+    if (!rc) rc = ctn_parse_leftovers(l, 2, "temperature");
+    return rc ? rc : ctn_model_add_temperature(l->m, l->tok[1], dT);
+}
+
 typedef struct directive {
     const char *name;
     int (*fn)(ctn_line *l);
@@ -321,7 +394,7 @@ static const directive directives[] = {
     { "section", d_section }, { "node", d_node },       { "element", d_element },
     { "cable", d_cable },     { "load", d_load },       { "hload", d_hload },
     { "solve", d_solve },     { "step", d_step },       { "displace", d_displace },
-    { "spring", d_spring },
+    { "spring", d_spring },   { "group", d_group },     { "temperature", d_temperature },
 };
 
 int ctn_parse_directive(ctn_line *l)

@@ -125,6 +125,8 @@ static void put_element(json_writer *jw, const ctn_element_info *e, const ctn_el
         if (mpa > 0) ctn_jw_number(j, "stress_mpa", es->stress * mpa);
     }
     if (e->tension_only) ctn_jw_bool(j, "slack", es->slack);
+    if (e->capacity > 0) ctn_jw_number(j, "utilisation", ctn_utilisation(e, es));
+    if (e->group) ctn_jw_string(j, "group", e->group);
     ctn_jw_end(j);
 }
 
@@ -167,6 +169,46 @@ static void put_cables(json_writer *jw, const ctn_solution *s)
         ctn_jw_number(j, "length", c.length);
         if (!ctn_solution_cable_sag(m, s, i, &sag)) ctn_jw_number(j, "sag", sag);
         if (!ctn_solution_cable_max_sag_from_chord(m, s, i, &dmax)) ctn_jw_number(j, "max_sag_from_chord", dmax);
+        if (c.target != CTN_TARGET_NONE) {
+            static const char *const kind[] = { "length", "H", "sag", "tension" };
+            ctn_jw_object(j, "target");
+            ctn_jw_string(j, "kind", kind[c.target]);
+            ctn_jw_number(j, "value", c.target_value);
+            ctn_jw_number(j, "achieved", c.target_achieved);
+            ctn_jw_number(j, "iterations", c.target_iterations);
+            ctn_jw_end(j);
+        }
+        ctn_jw_end(j);
+    }
+    ctn_jw_end(j);
+}
+
+/* "groups": totals and extremes of each group at the end of step k. */
+static void put_groups(json_writer *jw, const ctn_solution *s, size_t k)
+{
+    ctn_jw *j = &jw->j;
+    ctn_jw_array(j, "groups");
+    for (size_t g = 0; g < ctn_model_group_count(jw->w.m) && !jw->w.out.err; g++) {
+        ctn_group_result r;
+        if (ctn_solution_group(jw->w.m, s, k, g, &r)) {
+            ctn_writer_mismatch(&jw->w);
+            break;
+        }
+        ctn_jw_object(j, NULL);
+        ctn_jw_string(j, "name", r.name);
+        ctn_jw_number(j, "elements", (double)r.elements);
+        ctn_jw_number(j, "max_force", r.max_force);
+        ctn_jw_number(j, "min_force", r.min_force);
+        ctn_jw_number(j, "max_stress", r.max_stress);
+        ctn_jw_number(j, "max_strain", r.max_strain);
+        if (r.has_capacity) {
+            ctn_jw_number(j, "max_utilisation", r.max_utilisation);
+            ctn_jw_number(j, "worst_element", r.worst_element);
+        }
+        ctn_jw_number(j, "slack", (double)r.slack);
+        ctn_jw_number(j, "length", r.length);
+        ctn_jw_number(j, "stressed_length", r.stressed_length);
+        ctn_jw_number(j, "weight", r.weight);
         ctn_jw_end(j);
     }
     ctn_jw_end(j);
@@ -184,6 +226,7 @@ static void put_step(json_writer *jw, const ctn_solution *s, size_t k, const ctn
     ctn_jw_number(j, "iterations", st->iterations);
     put_nodes(jw, st);
     put_elements(jw, s, k);
+    if (ctn_model_group_count(jw->w.m)) put_groups(jw, s, k);
     ctn_jw_end(j);
 }
 
@@ -210,6 +253,7 @@ static int json_step(void *p, const ctn_solution *s, size_t k)
         put_nodes(jw, &st);
         put_elements(jw, s, jw->nsteps - 1);
         put_cables(jw, s);
+        if (ctn_model_group_count(jw->w.m)) put_groups(jw, s, jw->nsteps - 1);
         if (jw->nsteps > 1) ctn_jw_array(&jw->j, "steps");
     }
     if (jw->nsteps > 1) {

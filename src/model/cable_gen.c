@@ -3,6 +3,7 @@
  * stretched arc through the same ends (docs/theory.md). */
 #include "model/arc.h"
 #include "model/cable_start.h"
+#include "model/cable_target.h"
 #include "model/model.h"
 
 #include <math.h>
@@ -44,6 +45,7 @@ static int add_element(ctn_model *m, const ctn_cable_spec *spec, int prev, int n
     e.l0 = spec->prestress == CTN_PRESTRESS_NONE ? spec->length / spec->n : CTN_L0_DEFAULT;
     e.prestress = spec->prestress;
     e.prestress_value = spec->prestress_value;
+    e.group = spec->group;
     return ctn_model_add_element_spec(m, &e);
 }
 
@@ -74,8 +76,11 @@ int ctn_model_add_cable(ctn_model *m, int a, int b, const char *section,
     memcpy(B, m->nodes.v[ib].X, sizeof B);
     double chord = sqrt((B[0] - A[0]) * (B[0] - A[0]) + (B[1] - A[1]) * (B[1] - A[1]) + (B[2] - A[2]) * (B[2] - A[2]));
     if (!(chord > 0)) return ctn_model_error(m, CTN_ERR_MODEL, "cable: nodes %d and %d coincide", a, b);
-    int rc = check_spec(m, spec, chord);
+    ctn_cable_spec given = *spec;
+    int rc = ctn_cable_target_check(m, spec, section, A, B, chord, &given.length);
     if (rc) return rc;
+    spec = &given;
+    if ((rc = check_spec(m, spec, chord))) return rc;
     if (ctn_arc_make(A, B, m->gravity, spec->shape == CTN_SHAPE_ARC ? spec->length : chord, &f))
         return ctn_model_error(m, CTN_ERR_MODEL, "cable: shape=arc needs a gravity direction not parallel to the chord (set gravity before the cable, or use shape=straight)");
     if (m->max_node_id > 0x7fffffff - spec->n || m->max_element_id > 0x7fffffff - spec->n)
@@ -118,6 +123,9 @@ int ctn_model_add_cable(ctn_model *m, int a, int b, const char *section,
     c->length = spec->length;
     c->start = (int)spec->start;
     c->shape = (int)spec->shape;
+    c->target = (int)spec->target;
+    c->target_value = spec->target_value;
+    c->line = m->line;
     if (first_elem) *first_elem = first;
     if (last_elem) *last_elem = m->max_element_id;
     return CTN_OK;

@@ -56,6 +56,7 @@ void ctn_section_spec_init(ctn_section_spec *s)
     if (!s) return;
     memset(s, 0, sizeof *s);
     s->size = sizeof *s;
+    s->safety = 1;
 }
 
 int ctn_model_add_material(ctn_model *m, const char *name, double E, ctn_strain strain,
@@ -99,12 +100,15 @@ int ctn_model_add_material_spec(ctn_model *m, const ctn_material_spec *spec)
         return ctn_model_error(m, CTN_ERR_MODEL, "material '%s': E must be positive and finite (got %g)", name, E);
     if (strain != CTN_STRAIN_GREEN_LAGRANGE && strain != CTN_STRAIN_ENGINEERING)
         return ctn_model_error(m, CTN_ERR_MODEL, "material '%s': unknown strain measure", name);
+    if (!isfinite(s.alpha) || fabs(s.alpha) >= 0.01)
+        return ctn_model_error(m, CTN_ERR_MODEL, "material '%s': alpha must be finite and below 0.01 per kelvin in size (got %g)", name, s.alpha);
     if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->materials, 1))) return rc;
     ctn_material *p = &m->materials.v[m->materials.n++];
     snprintf(p->name, sizeof p->name, "%s", name);
     p->E = E;
     p->strain = strain;
     p->tension_only = tension_only != 0;
+    p->alpha = s.alpha;
     return CTN_OK;
 }
 
@@ -128,6 +132,10 @@ int ctn_model_add_section_spec(ctn_model *m, const ctn_section_spec *spec)
         return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': A must be positive and finite (got %g)", name, A);
     if (!isfinite(w) || w < 0)
         return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': w must be >= 0 and finite (got %g)", name, w);
+    if (!isfinite(s.mbl) || s.mbl < 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': mbl must be positive and finite (got %g)", name, s.mbl);
+    if (!isfinite(s.safety) || s.safety <= 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': safety must be positive and finite (got %g)", name, s.safety);
     if (!isfinite(m->materials.v[mat].E * A))
         return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': E A = %g * %g overflows", name, m->materials.v[mat].E, A);
     if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->sections, 1))) return rc;
@@ -137,5 +145,7 @@ int ctn_model_add_section_spec(ctn_model *m, const ctn_section_spec *spec)
     p->A = A;
     p->w = w;
     p->line = m->line;
+    p->mbl = s.mbl;
+    p->safety = s.safety;
     return CTN_OK;
 }

@@ -65,6 +65,7 @@ static int make_record(const ctn_model *m, const ctn_element_spec *s, int type, 
     e->type = type;
     e->nnodes = s->nnodes;
     e->section = -1;
+    e->group = -1;
     if (!(ops->flags & CTN_ELEM_SECTION) && s->section)
         return ctn_model_error(m, CTN_ERR_MODEL, "element %d: a %s element takes no section", s->id, ops->name);
     if (ops->flags & CTN_ELEM_SECTION) {
@@ -102,6 +103,7 @@ int ctn_model_add_element_spec(ctn_model *m, const ctn_element_spec *spec)
         return ctn_model_error(m, CTN_ERR_MODEL, "duplicate element id %d", s.id);
     ctn_element e;
     if ((rc = make_record(m, &s, type, &e, idx)) || (rc = check_room(m))) return rc;
+    if (s.group && (rc = ctn_model_group_get(m, s.group, &e.group))) return rc;
     if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->elements, 1))) return rc;
     if ((rc = ctn_array_reserve(m->ctx, (void **)&m->conn.v, &m->conn.cap, m->conn.n + (size_t)e.nnodes, sizeof(int))))
         return rc;

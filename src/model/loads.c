@@ -40,7 +40,7 @@ static void add_hloads(const ctn_model *m, int step, int dead_only, double *f)
         if (hl->step > step || (dead_only && !hl->reference)) continue;
         for (size_t i = 0; i < m->elements.n; i++) {
             const ctn_element *e = &m->elements.v[i];
-            if (e->id < hl->first || e->id > hl->last) continue;
+            if (!ctn_hload_on(m, hl, i)) continue;
             const int *nd = ctn_elem_nodes(m, i);
             for (int s = 0; s + 1 < e->nnodes; s++)
                 add_segment_hload(m, hl->q, u, nd[s], nd[s + 1], f);
@@ -127,7 +127,10 @@ static int check_hload_targets(const ctn_model *m)
         const ctn_hload *hl = &m->hloads.v[h];
         int hit = 0;
         for (size_t i = 0; i < m->elements.n && !hit; i++)
-            hit = m->elements.v[i].id >= hl->first && m->elements.v[i].id <= hl->last;
+            hit = ctn_hload_on(m, hl, i);
+        if (!hit && hl->group >= 0)
+            return ctn_error_at(m->ctx, CTN_ERR_MODEL, m->file, hl->line, "hload: group '%s' has no element",
+                                m->groups.v[hl->group].name);
         if (!hit)
             return ctn_error_at(m->ctx, CTN_ERR_MODEL, m->file, hl->line,
                                 "hload: no element with id in %d-%d", hl->first, hl->last);

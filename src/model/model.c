@@ -40,6 +40,8 @@ void ctn_model_destroy(ctn_model **m)
     ctn_free(p->steps.v);
     ctn_free(p->hloads.v);
     ctn_free(p->cables.v);
+    ctn_free(p->groups.v);
+    ctn_free(p->tloads.v);
     ctn_idmap_free(&p->node_ids);
     ctn_idmap_free(&p->element_ids);
     ctn_free(p);

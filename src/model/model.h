@@ -21,6 +21,7 @@ typedef struct ctn_material {
     double E;
     ctn_strain strain;
     int tension_only;
+    double alpha;    /* coefficient of thermal expansion [1/K] */
 } ctn_material;
 
 typedef struct ctn_section {
@@ -28,6 +29,8 @@ typedef struct ctn_section {
     int material;    /* index */
     double A, w;
     int line;
+    double mbl;      /* minimum breaking load [force], 0 if not given */
+    double safety;   /* factor on mbl: capacity = mbl / safety */
 } ctn_section;
 
 typedef struct ctn_element {
@@ -39,12 +42,29 @@ typedef struct ctn_element {
     double l0;       /* unstressed (free) length */
     double k;        /* spring stiffness [force/length], 0 for other families */
     int line;        /* defining line in the source, 0 if from the API */
+    int group;       /* group index, -1 if none */
 } ctn_element;
+
+typedef struct ctn_group {
+    char name[CTN_NAME_MAX];
+    int line;        /* first line that named it */
+} ctn_group;
+
+/* A temperature change dT of the elements it targets, from its step on. */
+enum { CTN_TARGET_ALL = 0, CTN_TARGET_ELEMENT = 1, CTN_TARGET_GROUP = 2 };
+typedef struct ctn_tload {
+    int kind;        /* CTN_TARGET_* */
+    int target;      /* element index or group index */
+    double dT;       /* [K] */
+    int step;
+    int line;
+} ctn_tload;
 
 typedef struct ctn_hload {
     double q;
     int reference;   /* 1: on the reference projection (a dead load); 0: the deformed one */
     int first, last; /* element ids, inclusive */
+    int group;       /* or a group index (then first, last are unused); -1 if none */
     int line;
     int step;        /* 0: before any step directive, else the step number */
 } ctn_hload;
@@ -72,6 +92,12 @@ typedef struct ctn_cable {
     double length;
     int start;       /* ctn_cable_start as given */
     int shape;       /* ctn_cable_shape */
+    int target;      /* ctn_cable_target: the length is found to meet it */
+    double target_value;
+    int line;
+    int resolved;    /* the length meets the target (ctn_model_resolve_targets) */
+    double target_achieved;  /* the target's value in the solved first step */
+    int target_iterations;   /* outer iterations that found the length */
 } ctn_cable;
 
 /* A growable array: data, count and capacity. */
@@ -95,6 +121,8 @@ struct ctn_model {
     CTN_ARRAY(ctn_hload) hloads;
     CTN_ARRAY(ctn_step) steps;      /* empty: one implicit step */
     CTN_ARRAY(ctn_cable) cables;
+    CTN_ARRAY(ctn_group) groups;
+    CTN_ARRAY(ctn_tload) tloads;
     ctn_idmap node_ids, element_ids;
     int max_node_id, max_element_id;
 };
@@ -103,6 +131,13 @@ struct ctn_model {
 #define CTN_ARRAY_RESERVE(ctx, a, extra)                                                 \
     ctn_array_reserve((ctx), (void **)&(a).v, &(a).cap, (a).n + (extra), sizeof *(a).v)
 int ctn_array_reserve(ctn_ctx *ctx, void **v, size_t *cap, size_t need, size_t size);
+
+/* Whether horizontal load h acts on element index e. */
+static inline int ctn_hload_on(const ctn_model *m, const ctn_hload *h, size_t e)
+{
+    const ctn_element *el = &m->elements.v[e];
+    return h->group >= 0 ? el->group == h->group : el->id >= h->first && el->id <= h->last;
+}
 
 /* Report an error located at the model's current origin (file:line if known). */
 int ctn_model_error(const ctn_model *m, int code, const char *fmt, ...)
@@ -128,6 +163,15 @@ void ctn_spec_copy(void *dst, size_t dst_size, const void *src);
 int ctn_model_check_parts(const ctn_model *m);
 
 int ctn_model_find_section(const ctn_model *m, const char *name);
+/* Group index of a name, -1 if none (groups.c). */
+int ctn_model_find_group(const ctn_model *m, const char *name);
+/* Group index of name, created (named at the current line) if new; a model error if the
+ * name is not a valid group name. */
+int ctn_model_group_get(ctn_model *m, const char *name, int *index);
+/* Put element index e in group g: a model error if it is in another group. */
+int ctn_model_group_put(ctn_model *m, size_t e, int g);
+/* Temperature change of every element at the end of step k (0-based) into dT (ne). */
+void ctn_model_step_temperatures(const ctn_model *m, size_t k, double *dT);
 int ctn_model_find_material(const ctn_model *m, const char *name);
 
 #endif

@@ -31,6 +31,7 @@ int ctn_model_element(const ctn_model *m, size_t i, ctn_element_info *out)
     out->node[1] = out->nodes[e->nnodes - 1];
     out->l0 = e->l0;
     out->k = e->k;
+    out->group = e->group >= 0 ? m->groups.v[e->group].name : NULL;
     if (e->section < 0) return CTN_OK;
     const ctn_section *s = &m->sections.v[e->section];
     const ctn_material *mat = &m->materials.v[s->material];
@@ -40,6 +41,8 @@ int ctn_model_element(const ctn_model *m, size_t i, ctn_element_info *out)
     out->w = s->w;
     out->strain = mat->strain;
     out->tension_only = mat->tension_only;
+    out->alpha = mat->alpha;
+    out->capacity = s->mbl > 0 ? s->mbl / s->safety : 0;
     return CTN_OK;
 }
 
@@ -52,6 +55,10 @@ int ctn_model_cable(const ctn_model *m, size_t i, ctn_cable_info *out)
     out->first = c->first;
     out->count = c->count;
     out->length = c->length;
+    out->target = (ctn_cable_target)c->target;
+    out->target_value = c->target_value;
+    out->target_achieved = c->resolved ? c->target_achieved : 0;
+    out->target_iterations = c->target_iterations;
     return CTN_OK;
 }
 

@@ -91,7 +91,18 @@ int ctn_model_add_hload_projected(ctn_model *m, double q, int first, int last, c
     h->reference = proj == CTN_PROJECT_REFERENCE;
     h->first = first;
     h->last = last;
+    h->group = -1;
     h->line = m->line;
     h->step = (int)m->steps.n;
     return CTN_OK;
+}
+
+int ctn_model_add_hload_group(ctn_model *m, double q, const char *group, ctn_projection proj)
+{
+    if (!m || !group) return CTN_ERR_INVALID;
+    int g = ctn_model_find_group(m, group);
+    if (g < 0) return ctn_model_error(m, CTN_ERR_MODEL, "hload: undefined group '%.63s'", group);
+    int rc = ctn_model_add_hload_projected(m, q, 1, 1, proj);
+    if (!rc) m->hloads.v[m->hloads.n - 1].group = g;
+    return rc;
 }

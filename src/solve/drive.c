@@ -55,8 +55,11 @@ static int run_steps(ctn_problem *p, ctn_solution *s, double *d)
     int rc = dstep ? CTN_OK : CTN_ERR_NOMEM;
     memset(p->f1, 0, p->ns * sizeof(double));
     memset(p->p1, 0, p->ns * sizeof(double));
+    if (p->dT1) memset(p->dT1, 0, p->a->ne * sizeof(double));
     ctn_follow_reset(p);
-    for (size_t k = 0; !rc && k < ctn_model_step_count(p->m); k++) {
+    size_t nsteps = ctn_model_step_count(p->m);
+    if (p->max_steps && p->max_steps < nsteps) nsteps = p->max_steps;
+    for (size_t k = 0; !rc && k < nsteps; k++) {
         size_t idx;
         if ((rc = ctn_solution_add_step(s, ctn_model_step_name(p->m, k), &idx))) break;
         memcpy(p->f0, p->f1, p->ns * sizeof(double));
@@ -116,6 +119,10 @@ static void start_state(ctn_problem *p, double *d)
     ctn_dofmap_from3(&p->a->map, p->v3, d);
     for (size_t i = 0; i < p->ns; i++)
         if (p->a->map.eq[i] < 0) d[i] = 0.0;
+    if (p->dT) {                                     /* the reference temperature */
+        memset(p->dT, 0, p->a->ne * sizeof(double));
+        ctn_asm_set_temperatures(p->a, p->dT);
+    }
 }
 
 /* The stability of the converged state. The last Newton iteration factored the tangent a

@@ -34,10 +34,10 @@ struct ctn_follow {
 static double element_q(const ctn_model *m, size_t e, size_t k)
 {
     double q = 0;
-    int id = m->elements.v[e].id, step = (int)k + 1;
+    int step = (int)k + 1;
     for (size_t h = 0; h < m->hloads.n; h++) {
         const ctn_hload *hl = &m->hloads.v[h];
-        if (!hl->reference && hl->step <= step && id >= hl->first && id <= hl->last) q += hl->q;
+        if (!hl->reference && hl->step <= step && ctn_hload_on(m, hl, e)) q += hl->q;
     }
     return q;
 }

@@ -30,6 +30,9 @@ static int alloc_vectors(ctn_problem *p)
         if (!(*vn[i] = ctn_calloc(ctx, p->ndof ? p->ndof : 1, sizeof(double)))) return CTN_ERR_NOMEM;
     if (!(p->v3 = ctn_calloc(ctx, 3 * p->a->nn, sizeof(double)))) return CTN_ERR_NOMEM;
     if (!(p->Kx = ctn_calloc(ctx, p->a->nnz ? p->a->nnz : 1, sizeof(double)))) return CTN_ERR_NOMEM;
+    double **vt[] = { &p->dT0, &p->dT1, &p->dT };
+    for (size_t i = 0; i < 3 && p->m->tloads.n; i++)
+        if (!(*vt[i] = ctn_calloc(ctx, p->a->ne, sizeof(double)))) return CTN_ERR_NOMEM;
     return CTN_OK;
 }
 
@@ -49,8 +52,26 @@ static int setup(ctn_problem *p)
     return ctn_linsolve_create(p->ctx, name, &pat, p->opt.ordering, &p->ls);
 }
 
+/* A cable set by a target whose length has not been found yet, or NULL. */
+static const ctn_cable *unresolved(const ctn_model *m)
+{
+    for (size_t i = 0; i < m->cables.n; i++)
+        if (m->cables.v[i].target != CTN_TARGET_NONE && !m->cables.v[i].resolved) return &m->cables.v[i];
+    return NULL;
+}
+
 int ctn_problem_create(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options *opt,
                        ctn_problem **out)
+{
+    const ctn_cable *c = m ? unresolved(m) : NULL;
+    if (c)
+        return ctn_error_at(ctx, CTN_ERR_INVALID, m->file, c->line,
+                            "cable %d-%d is set by a target: find its length first (ctn_model_resolve_targets)",
+                            m->nodes.v[c->node[0]].id, m->nodes.v[c->node[1]].id);
+    return ctn_problem_create_any(ctx, m, opt, out);
+}
+
+int ctn_problem_create_any(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options *opt, ctn_problem **out)
 {
     if (!out) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_problem_create: out is NULL");
     *out = NULL;
@@ -61,6 +82,10 @@ int ctn_problem_create(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options
     int rc = ctn_solve_options_check(ctx, &o);
     if (!rc) rc = ctn_model_validate(m);
     if (rc) return rc;
+    if (m->tloads.n && o.method == CTN_METHOD_ARCLENGTH)
+        return ctn_error_at(ctx, CTN_ERR_MODEL, m->file, m->tloads.v[0].line,
+                            "temperature changes are applied in load steps: method=arclength follows a single load "
+                            "pattern (use method=auto or method=newton)");
     double t0 = ctn_clock();
     ctn_problem *p = ctn_calloc(ctx, 1, sizeof *p);
     if (!p) return CTN_ERR_NOMEM;
@@ -86,7 +111,8 @@ void ctn_problem_destroy(ctn_problem **pp)
     ctn_asm_destroy(&p->a);
     ctn_linsolve_destroy(&p->ls);
     ctn_follow_destroy(&p->fl);
-    double *v[] = { p->fint, p->fext, p->f0, p->f1, p->p0, p->p1, p->dsave, p->react, p->r, p->dd, p->w, p->v3, p->Kx };
+    double *v[] = { p->fint, p->fext, p->f0, p->f1, p->p0, p->p1, p->dsave, p->react, p->r, p->dd, p->w, p->v3, p->Kx,
+                    p->dT0, p->dT1, p->dT };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
     ctn_free(p);
     *pp = NULL;
@@ -100,6 +126,9 @@ void ctn_problem_set_t(ctn_problem *p, double t, double *d)
         p->fext[i] = p->f0[i] + t * (p->f1[i] - p->f0[i]);
         if (eq[i] < 0) d[i] = p->p0[i] + t * (p->p1[i] - p->p0[i]);
     }
+    if (!p->dT) return;
+    for (size_t e = 0; e < p->a->ne; e++) p->dT[e] = p->dT0[e] + t * (p->dT1[e] - p->dT0[e]);
+    ctn_asm_set_temperatures(p->a, p->dT);
 }
 
 void ctn_problem_step_loads(ctn_problem *p, size_t k)
@@ -109,6 +138,9 @@ void ctn_problem_step_loads(ctn_problem *p, size_t k)
     ctn_model_step_loads_ex(p->m, k, 1, NULL, p->v3);
     ctn_follow_step(p, k);
     ctn_dofmap_from3(&p->a->map, p->v3, p->p1);
+    if (!p->dT) return;
+    memcpy(p->dT0, p->dT1, p->a->ne * sizeof(double));
+    ctn_model_step_temperatures(p->m, k, p->dT1);
 }
 
 int ctn_problem_residual(ctn_problem *p, const double *d, int with_K, double *rnorm, double *pi,

@@ -58,8 +58,15 @@ struct ctn_problem {
                                   and succeeded: K was positive definite there */
     double shift;              /* of the last factorization */
     ctn_follow *fl;            /* loads that follow the geometry, NULL if none */
+    size_t max_steps;          /* solve at most this many model steps (0: all) */
+    double *dT0, *dT1, *dT;    /* ne: temperature changes at the step's start, end and at
+                                  t; NULL when the model has no temperature load */
     ctn_solve_summary *sum;    /* where timings accumulate (the current solution's) */
 };
+
+/* ctn_problem_create without the check that every cable target is resolved (for the
+ * root find that resolves them, target.c). */
+int ctn_problem_create_any(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options *opt, ctn_problem **out);
 
 /* Set t: fext and the fixed entries of d. */
 void ctn_problem_set_t(ctn_problem *p, double t, double *d);

@@ -163,11 +163,11 @@ for f in examples/paper/*.cable; do
         WHY+=("-o: no nodes.csv")
     fi
     if [ -s "$dir/elements.csv" ]; then
-        [ "$(head -n 1 "$dir/elements.csv")" = "id,node1,node2,l0,length,strain,force,stress,slack" ] ||
+        [ "$(head -n 1 "$dir/elements.csv")" = "id,node1,node2,l0,length,strain,force,stress,slack,utilisation,group" ] ||
             WHY+=("elements.csv header: $(head -n 1 "$dir/elements.csv")")
         [ "$(tail -n +2 "$dir/elements.csv" | wc -l)" = 20 ] || WHY+=("elements.csv: not 20 rows")
-        awk -F, 'NR > 1 && NF != 9 { bad = 1 } END { exit bad }' "$dir/elements.csv" ||
-            WHY+=("elements.csv: a row without 9 fields")
+        awk -F, 'NR > 1 && NF != 11 { bad = 1 } END { exit bad }' "$dir/elements.csv" ||
+            WHY+=("elements.csv: a row without 11 fields")
         # l0 = S / n for a generated cable; tension positive.
         awk -F, -v s="$S" 'NR > 1 && (($4 - s / 20) ^ 2 > (1e-12 * s) ^ 2 || $7 <= 0) { bad = 1 } END { exit bad }' \
             "$dir/elements.csv" || WHY+=("elements.csv: l0 != length/n or a non-positive force")

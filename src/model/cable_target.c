@@ -1,0 +1,55 @@
+/* Cables set by a target: checks and the first length of the root find. The first length
+ * comes from the shallow parabola through the chord with the weight w per unit length
+ * across it (docs/theory.md, "Cables set by a target"): sag d = w_n c^2 / (8 H),
+ * length = c + 8 d^2 / (3 c) - H c / EA, c the chord, w_n the weight's part normal to it. */
+#include "model/cable_target.h"
+
+#include <math.h>
+
+static const char *const names[] = { "length", "H", "sag", "tension" };
+
+/* Weight per unit length normal to the chord AB, and |g|. */
+static double normal_weight(const ctn_model *m, double w, const double A[3], const double B[3], double chord)
+{
+    double g2 = 0, gc = 0;
+    for (int k = 0; k < 3; k++) {
+        g2 += m->gravity[k] * m->gravity[k];
+        gc += m->gravity[k] * (B[k] - A[k]) / chord;
+    }
+    double gn2 = g2 - gc * gc;
+    return w * sqrt(gn2 > 0 ? gn2 : 0);
+}
+
+int ctn_cable_target_check(const ctn_model *m, const ctn_cable_spec *s, const char *section, const double A[3],
+                           const double B[3], double chord, double *length)
+{
+    if (s->target == CTN_TARGET_NONE) return CTN_OK;
+    if (s->target < CTN_TARGET_NONE || s->target > CTN_TARGET_TENSION)
+        return ctn_model_error(m, CTN_ERR_MODEL, "cable: unknown target");
+    const char *key = names[s->target];
+    double v = s->target_value;
+    if (!isfinite(v) || v <= 0) return ctn_model_error(m, CTN_ERR_MODEL, "cable: %s= must be positive and finite (got %g)", key, v);
+    if (s->prestress != CTN_PRESTRESS_NONE)
+        return ctn_model_error(m, CTN_ERR_MODEL, "cable: a target (%s=) sets the length: give no prestress with it", key);
+    double g2 = m->gravity[0] * m->gravity[0] + m->gravity[1] * m->gravity[1] + m->gravity[2] * m->gravity[2];
+    if (s->target != CTN_TARGET_TENSION && !(g2 > 0))
+        return ctn_model_error(m, CTN_ERR_MODEL, "cable: %s= is measured against gravity, and there is none (set gravity before the cable)", key);
+    int si = ctn_model_find_section(m, section);
+    if (si < 0) return ctn_model_error(m, CTN_ERR_MODEL, "cable: undefined section '%s'", section);
+    const ctn_section *sec = &m->sections.v[si];
+    double EA = m->materials.v[sec->material].E * sec->A, wn = normal_weight(m, sec->w, A, B, chord);
+    double H, d;
+    if (s->target == CTN_TARGET_SAG) {
+        d = v;
+        H = wn > 0 ? wn * chord * chord / (8 * d) : 0;
+    } else {
+        H = v;
+        d = wn > 0 ? wn * chord * chord / (8 * H) : 0;
+    }
+    double L = chord + 8 * d * d / (3 * chord) - H * chord / EA;
+    /* on an arc the nodes need a length above the chord: the root find goes below it if
+     * the target asks for a cable shorter than its span */
+    double floor = s->shape == CTN_SHAPE_ARC ? 1.001 * chord : 0.5 * chord;
+    *length = isfinite(L) && L > floor ? L : floor;
+    return CTN_OK;
+}

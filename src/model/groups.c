@@ -1,0 +1,153 @@
+/* Groups of elements and temperature changes (loads that target elements or groups). */
+#include "element/element.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <stdio.h>
+#include <string.h>
+
+int ctn_model_find_group(const ctn_model *m, const char *name)
+{
+    for (size_t i = 0; i < m->groups.n; i++)
+        if (!strcmp(m->groups.v[i].name, name)) return (int)i;
+    return -1;
+}
+
+/* A letter first (so that a group never reads as an element id), then letters, digits,
+ * '_', '-', '.'; not "all". */
+static int valid_name(const char *s)
+{
+    if (!s || !isalpha((unsigned char)*s) || !strcmp(s, "all") || strlen(s) >= CTN_NAME_MAX) return 0;
+    for (const char *p = s; *p; p++)
+        if (!isalnum((unsigned char)*p) && !strchr("_-.", *p)) return 0;
+    return 1;
+}
+
+int ctn_model_group_get(ctn_model *m, const char *name, int *index)
+{
+    if (!valid_name(name))
+        return ctn_model_error(m, CTN_ERR_MODEL, "group name '%.63s' is not valid (a letter first, then letters, "
+                               "digits, '_', '-' or '.', at most %d characters; not 'all')", name ? name : "",
+                               CTN_NAME_MAX - 1);
+    int g = ctn_model_find_group(m, name);
+    if (g < 0) {
+        int rc = CTN_ARRAY_RESERVE(m->ctx, m->groups, 1);
+        if (rc) return rc;
+        g = (int)m->groups.n++;
+        snprintf(m->groups.v[g].name, CTN_NAME_MAX, "%s", name);
+        m->groups.v[g].line = m->line;
+    }
+    *index = g;
+    return CTN_OK;
+}
+
+int ctn_model_group_put(ctn_model *m, size_t e, int g)
+{
+    ctn_element *el = &m->elements.v[e];
+    if (el->group >= 0 && el->group != g)
+        return ctn_model_error(m, CTN_ERR_MODEL, "element %d is already in group '%s' (an element belongs to at most one group)",
+                               el->id, m->groups.v[el->group].name);
+    el->group = g;
+    return CTN_OK;
+}
+
+int ctn_model_add_group(ctn_model *m, const char *name, int first, int last)
+{
+    if (!m) return CTN_ERR_INVALID;
+    if (last < first) return ctn_model_error(m, CTN_ERR_MODEL, "group '%s': empty element range %d-%d", name ? name : "", first, last);
+    int g = -1, rc = ctn_model_group_get(m, name, &g), hit = 0;
+    if (rc) return rc;
+    if (first == last) {                       /* one id: it must exist */
+        int e = ctn_idmap_get(&m->element_ids, first);
+        if (e < 0) return ctn_model_error(m, CTN_ERR_MODEL, "group '%s': undefined element %d", name, first);
+        return ctn_model_group_put(m, (size_t)e, g);
+    }
+    for (size_t i = 0; i < m->elements.n && !rc; i++) {
+        int id = m->elements.v[i].id;
+        if (id < first || id > last) continue;
+        hit = 1;
+        rc = ctn_model_group_put(m, i, g);
+    }
+    if (!rc && !hit) return ctn_model_error(m, CTN_ERR_MODEL, "group '%s': no element with id in %d-%d", name, first, last);
+    return rc;
+}
+
+size_t ctn_model_group_count(const ctn_model *m) { return m ? m->groups.n : 0; }
+
+const char *ctn_model_group_name(const ctn_model *m, size_t g)
+{
+    return m && g < m->groups.n ? m->groups.v[g].name : NULL;
+}
+
+/* Whether element e expands with temperature (a family with a material). */
+static int thermal(const ctn_model *m, size_t e)
+{
+    return ctn_element_family(m->elements.v[e].type)->temperature != NULL;
+}
+
+static int resolve_target(ctn_model *m, const char *target, ctn_tload *t)
+{
+    if (!strcmp(target, "all")) {
+        t->kind = CTN_TARGET_ALL;
+        return CTN_OK;
+    }
+    if (isdigit((unsigned char)*target) || *target == '-' || *target == '+') {
+        char *end;
+        errno = 0;
+        long id = strtol(target, &end, 10);
+        int e = *end || errno || id <= 0 || id > 0x7fffffff ? -1 : ctn_idmap_get(&m->element_ids, (int)id);
+        if (e < 0) return ctn_model_error(m, CTN_ERR_MODEL, "temperature: undefined element '%.40s'", target);
+        if (!thermal(m, (size_t)e))
+            return ctn_model_error(m, CTN_ERR_MODEL, "temperature: element %ld is a %s, which has no thermal expansion",
+                                   id, ctn_element_family(m->elements.v[e].type)->name);
+        t->kind = CTN_TARGET_ELEMENT;
+        t->target = e;
+        return CTN_OK;
+    }
+    int g = ctn_model_find_group(m, target);
+    if (g < 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "temperature: '%.63s' is not 'all', an element id or a defined group", target);
+    t->kind = CTN_TARGET_GROUP;
+    t->target = g;
+    return CTN_OK;
+}
+
+int ctn_model_add_temperature(ctn_model *m, const char *target, double dT)
+{
+    if (!m || !target) return CTN_ERR_INVALID;
+    if (!isfinite(dT) || fabs(dT) > 1e4)
+        return ctn_model_error(m, CTN_ERR_MODEL, "temperature: dT must be finite and at most 1e4 K in size (got %g)", dT);
+    ctn_tload t = { 0, -1, dT, (int)m->steps.n, m->line };
+    int rc = resolve_target(m, target, &t);
+    if (!rc) rc = CTN_ARRAY_RESERVE(m->ctx, m->tloads, 1);
+    if (rc) return rc;
+    for (size_t i = 0; i < m->elements.n; i++) {   /* 1 + alpha dT must stay positive */
+        if (!thermal(m, i) || (t.kind == CTN_TARGET_ELEMENT && (int)i != t.target) ||
+            (t.kind == CTN_TARGET_GROUP && m->elements.v[i].group != t.target))
+            continue;
+        const ctn_element *el = &m->elements.v[i];
+        double alpha = m->materials.v[m->sections.v[el->section].material].alpha;
+        if (!(1 + alpha * dT > 0.5))
+            return ctn_model_error(m, CTN_ERR_MODEL, "temperature: dT = %g K would shrink element %d by more than half "
+                                   "(alpha = %g)", dT, el->id, alpha);
+    }
+    m->tloads.v[m->tloads.n++] = t;
+    return CTN_OK;
+}
+
+void ctn_model_step_temperatures(const ctn_model *m, size_t k, double *dT)
+{
+    memset(dT, 0, m->elements.n * sizeof *dT);
+    for (size_t j = 0; j < m->tloads.n; j++) {
+        const ctn_tload *t = &m->tloads.v[j];
+        if (t->step > (int)k + 1) continue;
+        if (t->kind == CTN_TARGET_ELEMENT) {
+            dT[t->target] += t->dT;
+            continue;
+        }
+        for (size_t i = 0; i < m->elements.n; i++)
+            if (thermal(m, i) && (t->kind == CTN_TARGET_ALL || m->elements.v[i].group == t->target)) dT[i] += t->dT;
+    }
+}

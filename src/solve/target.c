@@ -1,0 +1,426 @@
+/* Cables set by a target (H=, sag=, tension=): the unstressed lengths that meet every
+ * target in the solved first load step, by Newton's method on the lengths (outer loop)
+ * with the sensitivities from the FE tangent (docs/theory.md, "Cables set by a target"):
+ *   F(u, L) = f_ext(L) - f_int(u, L) = 0  =>  du/dL_j = K^-1 dF/dL_j,
+ *   dQ_i/dL_j = d/dh Q_i(u + h du/dL_j, L + h e_j) at h = 0,
+ * dF/dL_j and the directional derivative of Q by central differences (the partial
+ * derivatives of closed-form element quantities; the solution's sensitivity itself comes
+ * from the tangent). Each outer step is a full non-linear solve started from the last. */
+#include "solve/problem.h"
+#include "solve/sag.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define TARGET_MAXIT 60
+#define TARGET_RTOL 1e-10
+
+typedef struct targets {
+    ctn_ctx *ctx;
+    ctn_model *m;
+    ctn_problem *p;
+    size_t nt, *cab;         /* cables with a target */
+    double *L, *Q, *J, *dL, *Lold;
+    double *d, *dp, *u3, *f, *fm, *b, *v;   /* state, state, 3 nn, state, state, ndof, ndof */
+    int outer;               /* outer iterations */
+    ctn_solve_summary sum;   /* where the sensitivity solves count */
+} targets;
+
+static const char *const target_key[] = { "length", "H", "sag", "tension" };
+
+/* ---- the target quantities at a state (u3: 3 displacements per node) ---- */
+
+static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+static void node_pos(const ctn_model *m, const double *u3, size_t i, double x[3])
+{
+    for (int k = 0; k < 3; k++) x[k] = m->nodes.v[i].X[k] + u3[3 * i + (size_t)k];
+}
+
+/* Tension N and unit chord t (node 0 to node 1) of two-node element e. */
+static void element_force(const targets *tg, const double *u3, size_t e, double *N, double t[3])
+{
+    const ctn_model *m = tg->m;
+    const int *nd = ctn_elem_nodes(m, e);
+    double X[6], u[6], f[6], x0[3], x1[3];
+    for (int a = 0; a < 2; a++)
+        for (int k = 0; k < 3; k++) {
+            X[3 * a + k] = m->nodes.v[nd[a]].X[k];
+            u[3 * a + k] = u3[3 * (size_t)nd[a] + (size_t)k];
+        }
+    ctn_elem_state st;
+    const ctn_asm_block *b = ctn_asm_block_of(tg->p->a, e);
+    b->ops->eval(ctn_asm_props(tg->p->a, e), 0, X, u, f, NULL, &st);
+    node_pos(m, u3, (size_t)nd[0], x0);
+    node_pos(m, u3, (size_t)nd[1], x1);
+    double l = 0;
+    for (int k = 0; k < 3; k++) {
+        t[k] = x1[k] - x0[k];
+        l += t[k] * t[k];
+    }
+    l = sqrt(l);
+    for (int k = 0; k < 3; k++) t[k] = l > 0 ? t[k] / l : 0;
+    *N = st.N;
+}
+
+static void unit_down(const ctn_model *m, double g[3])
+{
+    double n = sqrt(dot3(m->gravity, m->gravity));
+    for (int k = 0; k < 3; k++) g[k] = n > 0 ? m->gravity[k] / n : 0;
+}
+
+/* Force of the cable on its end node (end 0 or 1): the end element's pull plus the half
+ * of its weight that the end node carries. */
+static double end_tension(const targets *tg, const double *u3, const ctn_cable *c, int end)
+{
+    size_t e = end ? c->first + c->count - 1 : c->first;
+    const ctn_model *m = tg->m;
+    double N, t[3], F[3];
+    element_force(tg, u3, e, &N, t);
+    double W = 0.5 * m->sections.v[m->elements.v[e].section].w * m->elements.v[e].l0;
+    for (int k = 0; k < 3; k++) F[k] = (end ? -N : N) * t[k] + W * m->gravity[k];
+    return sqrt(dot3(F, F));
+}
+
+/* Largest vertical distance (along gravity) of a node below the chord, read at the
+ * chord's point with the same horizontal position along the chord's horizontal part. */
+static double vertical_sag(const targets *tg, const double *u3, const ctn_cable *c)
+{
+    const ctn_model *m = tg->m;
+    double g[3], A[3], B[3], ch[3], h[3], best = 0;
+    unit_down(m, g);
+    node_pos(m, u3, (size_t)c->node[0], A);
+    node_pos(m, u3, (size_t)c->node[1], B);
+    for (int k = 0; k < 3; k++) ch[k] = B[k] - A[k];
+    double cg = dot3(ch, g);
+    for (int k = 0; k < 3; k++) h[k] = ch[k] - cg * g[k];      /* horizontal part of the chord */
+    double hh = dot3(h, h);
+    if (!(hh > 0)) return NAN;
+    for (size_t j = 0; j + 1 < c->count; j++) {
+        double P[3], r[3];
+        node_pos(m, u3, (size_t)ctn_elem_nodes(m, c->first + j)[1], P);
+        for (int k = 0; k < 3; k++) r[k] = P[k] - A[k];
+        double s = dot3(r, h) / hh;                            /* chord parameter */
+        double y = dot3(r, g) - s * cg;
+        best = fmax(best, y);
+    }
+    return best;
+}
+
+static double quantity(const targets *tg, const double *u3, size_t j)
+{
+    const ctn_cable *c = &tg->m->cables.v[tg->cab[j]];
+    switch (c->target) {
+    case CTN_TARGET_H: {
+        double N, t[3], g[3];
+        element_force(tg, u3, c->first, &N, t);
+        unit_down(tg->m, g);
+        double tg_ = dot3(t, g), hz = 1 - tg_ * tg_;
+        return N * sqrt(hz > 0 ? hz : 0);
+    }
+    case CTN_TARGET_SAG: return vertical_sag(tg, u3, c);
+    default: return fmax(end_tension(tg, u3, c, 0), end_tension(tg, u3, c, 1));
+    }
+}
+
+/* ---- lengths, solves, sensitivities ---- */
+
+static void set_length(targets *tg, size_t j, double L)
+{
+    ctn_cable *c = &tg->m->cables.v[tg->cab[j]];
+    for (size_t e = c->first; e < c->first + c->count; e++) {
+        tg->m->elements.v[e].l0 = L / (double)c->count;
+        ctn_asm_setup_element(tg->p->a, e);
+    }
+    c->length = L;
+}
+
+/* Solve the first step at the current lengths from the model's start; on convergence the
+ * state goes to tg->d (state layout) and tg->u3, and becomes the next start. */
+static int solve_at(targets *tg, int *ok)
+{
+    ctn_solution *s = NULL;
+    int rc = ctn_problem_solve(tg->p, &s);
+    if (rc) return rc;
+    ctn_solve_summary sum;
+    ctn_solution_summary(s, &sum);
+    *ok = sum.reason == CTN_CONVERGED;
+    if (*ok) {
+        memcpy(tg->u3, ctn_solution_displacements(s), 3 * tg->m->nodes.n * sizeof(double));
+        for (size_t i = 0; i < tg->m->nodes.n; i++) memcpy(tg->m->nodes.v[i].guess, tg->u3 + 3 * i, 3 * sizeof(double));
+        ctn_dofmap_from3(&tg->p->a->map, tg->u3, tg->d);
+    }
+    ctn_solution_destroy(&s);
+    return CTN_OK;
+}
+
+/* f_ext (dead loads of step 1) - f_int at state d, into f (state layout). */
+static void residual_at(targets *tg, const double *d, double *f)
+{
+    ctn_problem *p = tg->p;
+    ctn_model_step_loads_ex(tg->m, 0, 1, p->v3, NULL);
+    ctn_dofmap_from3(&p->a->map, p->v3, f);
+    ctn_asm_eval(p->a, d, 0, p->fint, NULL, NULL, NULL);
+    for (size_t i = 0; i < p->ns; i++) f[i] -= p->fint[i];
+}
+
+/* Q_i at (d + h v, L + h e_j) for every i, into q. */
+static void quantities_along(targets *tg, size_t j, double h, double *q)
+{
+    ctn_problem *p = tg->p;
+    memcpy(tg->dp, tg->d, p->ns * sizeof(double));
+    ctn_problem_axpy(p, tg->dp, h, tg->v);
+    set_length(tg, j, tg->L[j] + h);
+    double *u3 = p->v3;
+    ctn_dofmap_to3(&p->a->map, tg->dp, u3);
+    for (size_t i = 0; i < tg->nt; i++) q[i] = quantity(tg, u3, i);
+    set_length(tg, j, tg->L[j]);
+}
+
+/* The Jacobian dQ/dL at the converged state (tangent factored there). */
+static int jacobian(targets *tg, int *ok)
+{
+    ctn_problem *p = tg->p;
+    double rn;
+    int valid = 0, posdef = 0;
+    long col = -1;
+    p->sum = &tg->sum;
+    int rc = ctn_problem_residual(p, tg->d, 1, &rn, NULL, &valid);
+    if (!rc && valid) rc = ctn_problem_factor(p, 0, &posdef, &col);
+    *ok = !rc && valid && posdef;
+    if (!*ok) {
+        p->sum = NULL;
+        return rc;
+    }
+    double qp[64], qm[64];
+    for (size_t j = 0; j < tg->nt && !rc; j++) {
+        double h = 1e-6 * tg->L[j];
+        set_length(tg, j, tg->L[j] + h);
+        residual_at(tg, tg->d, tg->f);
+        set_length(tg, j, tg->L[j] - h);
+        residual_at(tg, tg->d, tg->fm);
+        set_length(tg, j, tg->L[j]);
+        for (size_t i = 0; i < p->ns; i++) {
+            int q = p->a->map.eq[i];
+            if (q >= 0) tg->b[q] = (tg->f[i] - tg->fm[i]) / (2 * h);
+        }
+        if (p->ndof) rc = ctn_problem_linsolve(p, tg->b, tg->v);
+        quantities_along(tg, j, h, qp);
+        quantities_along(tg, j, -h, qm);
+        for (size_t i = 0; i < tg->nt; i++) tg->J[i * tg->nt + j] = (qp[i] - qm[i]) / (2 * h);
+    }
+    p->sum = NULL;
+    return rc;
+}
+
+/* Solve J x = b (n x n, row-major, overwritten) by elimination with partial pivoting;
+ * 0 if singular. */
+static int dense_solve(size_t n, double *J, double *b)
+{
+    for (size_t k = 0; k < n; k++) {
+        size_t piv = k;
+        for (size_t i = k + 1; i < n; i++)
+            if (fabs(J[i * n + k]) > fabs(J[piv * n + k])) piv = i;
+        if (!(fabs(J[piv * n + k]) > 0)) return 0;
+        for (size_t c = 0; c < n; c++) {
+            double t = J[k * n + c];
+            J[k * n + c] = J[piv * n + c];
+            J[piv * n + c] = t;
+        }
+        double t = b[k];
+        b[k] = b[piv];
+        b[piv] = t;
+        for (size_t i = k + 1; i < n; i++) {
+            double f = J[i * n + k] / J[k * n + k];
+            for (size_t c = k; c < n; c++) J[i * n + c] -= f * J[k * n + c];
+            b[i] -= f * b[k];
+        }
+    }
+    for (size_t k = n; k-- > 0;) {
+        for (size_t c = k + 1; c < n; c++) b[k] -= J[k * n + c] * b[c];
+        b[k] /= J[k * n + k];
+    }
+    return 1;
+}
+
+static double misfit(const targets *tg)
+{
+    double worst = 0;
+    for (size_t i = 0; i < tg->nt; i++) {
+        const ctn_cable *c = &tg->m->cables.v[tg->cab[i]];
+        worst = fmax(worst, fabs(tg->Q[i] - c->target_value) / c->target_value);
+    }
+    return isfinite(worst) ? worst : INFINITY;
+}
+
+static void evaluate(targets *tg)
+{
+    for (size_t i = 0; i < tg->nt; i++) tg->Q[i] = quantity(tg, tg->u3, i);
+}
+
+/* The error when the targets are not met: which cable, what it asked, what was reached. */
+static int not_met(targets *tg, const char *why)
+{
+    size_t worst = 0;
+    double w = -1;
+    for (size_t i = 0; i < tg->nt; i++) {
+        const ctn_cable *c = &tg->m->cables.v[tg->cab[i]];
+        double e = fabs(tg->Q[i] - c->target_value) / c->target_value;
+        if (!(e <= w)) {
+            w = e;
+            worst = i;
+        }
+    }
+    const ctn_cable *c = &tg->m->cables.v[tg->cab[worst]];
+    return ctn_error_at(tg->ctx, CTN_ERR_MODEL, tg->m->file, c->line,
+                        "cable %d-%d: no unstressed length gives %s=%g: %s", tg->m->nodes.v[c->node[0]].id,
+                        tg->m->nodes.v[c->node[1]].id, target_key[c->target], c->target_value, why);
+}
+
+/* For one target not met: the range of the target over unstressed lengths from just
+ * below the chord to four chords (solved in order, each from the last), into msg. */
+static int reachable(targets *tg, char *msg, size_t size)
+{
+    static const double s[] = { -2e-3, -1e-3, -3e-4, 0, 1e-4, 3e-4, 1e-3, 3e-3, 0.01, 0.02, 0.05, 0.1,
+                                0.2, 0.35, 0.5, 0.75, 1, 1.5, 2, 3 };
+    const ctn_cable *c = &tg->m->cables.v[tg->cab[0]];
+    const double *A = tg->m->nodes.v[c->node[0]].X, *B = tg->m->nodes.v[c->node[1]].X;
+    double chord = sqrt((B[0] - A[0]) * (B[0] - A[0]) + (B[1] - A[1]) * (B[1] - A[1]) + (B[2] - A[2]) * (B[2] - A[2]));
+    double lo = INFINITY, hi = -INFINITY, Llo = 0, Lhi = 0, L0 = INFINITY, L1 = 0;
+    for (size_t k = 0; k < sizeof s / sizeof *s; k++) {
+        double L = chord * (1 + s[k]);
+        int ok = 0;
+        set_length(tg, 0, L);
+        int rc = solve_at(tg, &ok);
+        if (rc) return rc;
+        if (!ok) continue;
+        double q = quantity(tg, tg->u3, 0);
+        L0 = fmin(L0, L);
+        L1 = fmax(L1, L);
+        if (q < lo) { lo = q; Llo = L; }
+        if (q > hi) { hi = q; Lhi = L; }
+    }
+    tg->L[0] = Llo;
+    set_length(tg, 0, tg->L[0]);
+    if (!(L1 > 0)) snprintf(msg, size, "the model converges with none of the lengths tried");
+    else
+        snprintf(msg, size, "over unstressed lengths %.6g to %.6g it ranges from %.6g (length %.6g) to %.6g (length %.6g)",
+                 L0, L1, lo, Llo, hi, Lhi);
+    return CTN_OK;
+}
+
+/* Outer Newton on the lengths. */
+static int find_lengths(targets *tg)
+{
+    int ok = 0, rc = solve_at(tg, &ok);
+    if (rc) return rc;
+    if (!ok) {
+        evaluate(tg);
+        return not_met(tg, "the model does not converge with the first lengths tried");
+    }
+    evaluate(tg);
+    double best = misfit(tg);
+    for (tg->outer = 0; best > TARGET_RTOL; tg->outer++) {
+        if (tg->outer == TARGET_MAXIT || (tg->nt == 1 && tg->outer >= 12 && best > 1e-3)) {
+            char msg[256] = "the root find does not converge";
+            if (tg->nt == 1 && (rc = reachable(tg, msg, sizeof msg))) return rc;
+            return not_met(tg, msg);
+        }
+        if ((rc = jacobian(tg, &ok))) return rc;
+        if (!ok) return not_met(tg, "the equilibrium reached is not stable");
+        for (size_t i = 0; i < tg->nt; i++) tg->dL[i] = tg->m->cables.v[tg->cab[i]].target_value - tg->Q[i];
+        if (!dense_solve(tg->nt, tg->J, tg->dL))
+            return not_met(tg, "the target does not change with the length there (a slack or straight cable?)");
+        memcpy(tg->Lold, tg->L, tg->nt * sizeof(double));
+        double scale = 1;                           /* at most halve or double a length */
+        for (size_t i = 0; i < tg->nt; i++) {
+            double r = tg->dL[i] / tg->L[i];
+            if (r < -0.5) scale = fmin(scale, -0.5 / r);
+            if (r > 1) scale = fmin(scale, 1 / r);
+        }
+        int accepted = 0;
+        for (int cut = 0; cut < 30 && !accepted; cut++, scale *= 0.5) {
+            for (size_t i = 0; i < tg->nt; i++) {
+                tg->L[i] = tg->Lold[i] + scale * tg->dL[i];
+                set_length(tg, i, tg->L[i]);
+            }
+            if ((rc = solve_at(tg, &ok))) return rc;
+            if (!ok) continue;
+            evaluate(tg);
+            double mis = misfit(tg);
+            accepted = mis < best || mis <= TARGET_RTOL || cut >= 8;
+            if (accepted) best = mis;
+        }
+        if (!accepted) return not_met(tg, "the model does not converge near the lengths that the target needs");
+    }
+    return CTN_OK;
+}
+
+static int alloc_targets(targets *tg)
+{
+    ctn_ctx *ctx = tg->ctx;
+    size_t nt = tg->nt ? tg->nt : 1, ns = tg->p->ns, nd = tg->p->ndof ? tg->p->ndof : 1;
+    double **small[] = { &tg->L, &tg->Q, &tg->dL, &tg->Lold };
+    double **state[] = { &tg->d, &tg->dp, &tg->f, &tg->fm };
+    if (!(tg->cab = ctn_calloc(ctx, nt, sizeof(size_t))) || !(tg->J = ctn_calloc(ctx, nt * nt, sizeof(double))))
+        return CTN_ERR_NOMEM;
+    for (size_t i = 0; i < 4; i++)
+        if (!(*small[i] = ctn_calloc(ctx, nt, sizeof(double))) || !(*state[i] = ctn_calloc(ctx, ns, sizeof(double))))
+            return CTN_ERR_NOMEM;
+    if (!(tg->u3 = ctn_calloc(ctx, 3 * tg->m->nodes.n, sizeof(double))) || !(tg->b = ctn_calloc(ctx, nd, sizeof(double))) ||
+        !(tg->v = ctn_calloc(ctx, nd, sizeof(double))))
+        return CTN_ERR_NOMEM;
+    return CTN_OK;
+}
+
+static void free_targets(targets *tg)
+{
+    double *v[] = { tg->L, tg->Q, tg->dL, tg->Lold, tg->d, tg->dp, tg->f, tg->fm, tg->u3, tg->b, tg->v, tg->J };
+    for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
+    ctn_free(tg->cab);
+    ctn_problem_destroy(&tg->p);
+}
+
+int ctn_model_resolve_targets(ctn_ctx *ctx, ctn_model *m, const ctn_solve_options *opt, int *outer)
+{
+    if (!m) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_model_resolve_targets: model is NULL");
+    if (outer) *outer = 0;
+    size_t nt = 0;
+    for (size_t i = 0; i < m->cables.n; i++) nt += m->cables.v[i].target != CTN_TARGET_NONE && !m->cables.v[i].resolved;
+    if (!nt) return CTN_OK;
+    if (nt > 64)
+        return ctn_error(ctx, CTN_ERR_MODEL, "%s%smore than 64 cables set by a target (%zu)", m->file, *m->file ? ": " : "", nt);
+    ctn_solve_options o;
+    if (opt) o = *opt;
+    else ctn_solve_options_default(&o);
+    if (o.method == CTN_METHOD_ARCLENGTH) o.method = CTN_METHOD_AUTO;   /* the lengths are found under the full loads */
+    o.tol = fmin(o.tol, 1e-12);
+    o.monitor = NULL;
+    targets tg;
+    memset(&tg, 0, sizeof tg);
+    tg.ctx = ctx;
+    tg.m = m;
+    tg.nt = nt;
+    for (size_t i = 0; i < m->cables.n; i++) m->cables.v[i].resolved |= m->cables.v[i].target == CTN_TARGET_NONE;
+    int rc = ctn_problem_create_any(ctx, m, &o, &tg.p);
+    if (!rc) rc = alloc_targets(&tg);
+    if (!rc) {
+        tg.p->max_steps = 1;
+        for (size_t i = 0, j = 0; i < m->cables.n; i++)
+            if (!m->cables.v[i].resolved) {
+                tg.cab[j] = i;
+                tg.L[j++] = m->cables.v[i].length;
+            }
+        rc = find_lengths(&tg);
+    }
+    for (size_t j = 0; !rc && j < nt; j++) {
+        ctn_cable *c = &m->cables.v[tg.cab[j]];
+        c->resolved = 1;
+        c->target_achieved = tg.Q[j];
+        c->target_iterations = tg.outer;
+    }
+    if (outer) *outer = tg.outer;
+    free_targets(&tg);
+    return rc;
+}
