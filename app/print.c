@@ -170,6 +170,7 @@ void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s)
     print_element_line(out, "min", m, s, imin);
     print_slack(out, m, s);
     print_cables(out, m, s);
+    ctn_print_groups(out, m, s);
     print_reactions(out, m, s);
 }
 
@@ -230,4 +231,5 @@ void ctn_print_warnings(FILE *out, const char *model, const ctn_model *m, const 
     if (big > 1e7)
         fprintf(out, "catena: %s: warning: the deformed model reaches %.3g m from the origin (over 10,000 km); "
                      "check the lengths, the loads and the units\n", model, big);
+    ctn_print_capacity_warning(out, model, m, s);
 }

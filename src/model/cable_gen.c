@@ -116,6 +116,7 @@ int ctn_model_add_cable(ctn_model *m, int a, int b, const char *section,
         prev = next;
     }
     ctn_cable *c = &m->cables.v[m->cables.n++];
+    memset(c, 0, sizeof *c);
     c->node[0] = ia;
     c->node[1] = ib;
     c->first = e0;
