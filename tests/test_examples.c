@@ -94,6 +94,7 @@ static int run_example(const char *path)
     ctn_ctx_create(&ctx);
     int rc = ctn_read_file(ctx, path, &m, &opt);
     CHECK_MSG(rc == CTN_OK, "%s", ctn_ctx_message(ctx));
+    if (!rc) rc = ctn_model_resolve_targets(ctx, m, &opt, NULL);
     if (!rc) rc = ctn_solve(ctx, m, &opt, &s);
     CHECK_MSG(rc == CTN_OK, "%s: %s", path, ctn_ctx_message(ctx));
     int lines = 0;

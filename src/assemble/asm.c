@@ -154,16 +154,18 @@ int ctn_asm_eval(const ctn_asm *a, const double *d, unsigned mode, double *f, do
 
 typedef struct compressed {
     size_t n;
+    const unsigned char *mask;
 } compressed;
 
 static void compressed_visit(void *data, const ctn_asm *a, const ctn_asm_elem *el)
 {
+    compressed *c = data;
     (void)a;
-    if ((el->b->ops->flags & CTN_ELEM_FLEXIBLE) && el->st->N < 0) ((compressed *)data)->n++;
+    if ((el->b->ops->flags & CTN_ELEM_FLEXIBLE) && el->st->N < 0 && (!c->mask || c->mask[el->e])) c->n++;
 }
 
-size_t ctn_asm_count_compressed(const ctn_asm *a, const double *d)
+size_t ctn_asm_count_compressed(const ctn_asm *a, const double *d, const unsigned char *mask)
 {
-    compressed c = { 0 };
+    compressed c = { 0, mask };
     return ctn_asm_loop(a, d, 0, 0, compressed_visit, &c, NULL) ? 0 : c.n;
 }

@@ -70,8 +70,9 @@ int ctn_asm_eval(const ctn_asm *a, const double *d, unsigned mode, double *f, do
                  double *U, size_t *bad);
 
 /* Flexible members (CTN_ELEM_FLEXIBLE) whose own material takes compression and that are
- * compressed at d (0 if an element collapsed). */
-size_t ctn_asm_count_compressed(const ctn_asm *a, const double *d);
+ * compressed at d (0 if an element collapsed); only those with mask[e] != 0 unless mask is
+ * NULL. */
+size_t ctn_asm_count_compressed(const ctn_asm *a, const double *d, const unsigned char *mask);
 
 /* Family and properties of element e. */
 const ctn_asm_block *ctn_asm_block_of(const ctn_asm *a, size_t e);

@@ -234,14 +234,15 @@ static int correct(ctn_problem *e, ctn_solution *s, double *d, ctn_reason *reaso
     return CTN_OK;
 }
 
-/* Globalized: a start with compressed two-way members (a straight or unstressed start
- * of a cable longer than its chord) is first relaxed with compression cut off, so no
+/* Globalized: a start with compressed two-way members of cables (members of a chain: a
+ * free node joins exactly two members; a straight or unstressed start of a cable longer
+ * than its chord) is first relaxed with compression cut off, so no
  * compression energy barrier holds it on the chord; then the real materials take over
  * from that state. The final iterations use the true residual, so the equilibrium is
  * not biased by the first phase. */
 int ctn_newton_correct(ctn_problem *e, ctn_solution *s, double *d, ctn_reason *reason)
 {
-    if (!e->strategy->globalized || !ctn_asm_count_compressed(e->a, d))
+    if (!e->strategy->globalized || !ctn_asm_count_compressed(e->a, d, e->in_chain))
         return correct(e, s, d, reason);
     e->mode = CTN_EVAL_CUT_COMPRESSION;
     int rc = correct(e, s, d, reason);

@@ -193,6 +193,7 @@ static int place_catenary(const ctn_problem *e, const ctn_cable *cb, chains *c, 
 {
     const ctn_model *m = e->m;
     if (cb->start != CTN_START_AUTO || cb->shape != CTN_SHAPE_ARC || cb->count < 2) return 0;
+    if (cb->target != CTN_TARGET_NONE && cb->resolved) return 0;   /* its start is the state found */
     if (!weight_only(e, cb, loads)) return 0;          /* the catenary of its weight is not its shape */
     const ctn_element *el = &m->elements.v[cb->first];
     if (el->section < 0) return 0;

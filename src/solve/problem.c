@@ -19,6 +19,29 @@ static double model_size(const ctn_model *m)
     return sqrt(s);
 }
 
+/* The in_chain mask (problem.h). */
+static unsigned char *chain_members(const ctn_problem *p)
+{
+    const ctn_model *m = p->m;
+    unsigned char *mask = ctn_calloc(p->ctx, m->elements.n ? m->elements.n : 1, 1);
+    int *deg = ctn_calloc(p->ctx, m->nodes.n ? m->nodes.n : 1, sizeof(int));
+    if (mask && deg) {
+        for (size_t k = 0; k < m->conn.n; k++) deg[m->conn.v[k]]++;
+        for (size_t e = 0; e < m->elements.n; e++) {
+            const int *nd = ctn_elem_nodes(m, e);
+            int n = m->elements.v[e].nnodes;
+            for (int k = 0; k < n && !mask[e]; k++)
+                mask[e] = n == 2 && deg[nd[k]] == 2 && m->nodes.v[nd[k]].fix == 0;
+        }
+    }
+    ctn_free(deg);
+    if (!deg) {
+        ctn_free(mask);
+        return NULL;
+    }
+    return mask;
+}
+
 static int alloc_vectors(ctn_problem *p)
 {
     ctn_ctx *ctx = p->ctx;
@@ -30,6 +53,7 @@ static int alloc_vectors(ctn_problem *p)
         if (!(*vn[i] = ctn_calloc(ctx, p->ndof ? p->ndof : 1, sizeof(double)))) return CTN_ERR_NOMEM;
     if (!(p->v3 = ctn_calloc(ctx, 3 * p->a->nn, sizeof(double)))) return CTN_ERR_NOMEM;
     if (!(p->Kx = ctn_calloc(ctx, p->a->nnz ? p->a->nnz : 1, sizeof(double)))) return CTN_ERR_NOMEM;
+    if (!(p->in_chain = chain_members(p))) return CTN_ERR_NOMEM;
     double **vt[] = { &p->dT0, &p->dT1, &p->dT };
     for (size_t i = 0; i < 3 && p->m->tloads.n; i++)
         if (!(*vt[i] = ctn_calloc(ctx, p->a->ne, sizeof(double)))) return CTN_ERR_NOMEM;
@@ -114,6 +138,7 @@ void ctn_problem_destroy(ctn_problem **pp)
     double *v[] = { p->fint, p->fext, p->f0, p->f1, p->p0, p->p1, p->dsave, p->react, p->r, p->dd, p->w, p->v3, p->Kx,
                     p->dT0, p->dT1, p->dT };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
+    ctn_free(p->in_chain);
     ctn_free(p);
     *pp = NULL;
 }

@@ -58,6 +58,9 @@ struct ctn_problem {
                                   and succeeded: K was positive definite there */
     double shift;              /* of the last factorization */
     ctn_follow *fl;            /* loads that follow the geometry, NULL if none */
+    unsigned char *in_chain;   /* ne: 1 for a two-node member with a free node that joins
+                                  exactly two members (a cable's), the members a relaxation
+                                  may free of compression; bars between joints are not */
     size_t max_steps;          /* solve at most this many model steps (0: all) */
     double *dT0, *dT1, *dT;    /* ne: temperature changes at the step's start, end and at
                                   t; NULL when the model has no temperature load */
