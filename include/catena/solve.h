@@ -262,10 +262,7 @@ int ctn_solution_cable_max_sag_from_chord(const ctn_model *m, const ctn_solution
 
 /* Capacity: the utilisation of an element is its force / (mbl / safety) of its section
  * (ctn_element_info.capacity); it is defined only when the section has an mbl. */
-static inline double ctn_utilisation(const ctn_element_info *e, const ctn_element_state *st)
-{
-    return e->capacity > 0 ? st->force / e->capacity : 0.0;
-}
+double ctn_utilisation(const ctn_element_info *e, const ctn_element_state *st);   /* 0 without */
 
 /* Totals and extremes of group g (ctn_model_group_name) at the end of step k. */
 typedef struct ctn_group_result {

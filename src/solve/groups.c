@@ -5,6 +5,11 @@
 #include <math.h>
 #include <string.h>
 
+double ctn_utilisation(const ctn_element_info *e, const ctn_element_state *st)
+{
+    return e && st && e->capacity > 0 ? st->force / e->capacity : 0.0;
+}
+
 static void add_member(ctn_group_result *r, const ctn_model *m, const ctn_element_info *e,
                        const ctn_element_state *st)
 {
