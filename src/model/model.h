@@ -39,6 +39,8 @@ typedef struct ctn_element {
     double l0;       /* unstressed (free) length */
     double k;        /* spring stiffness [force/length], 0 for other families */
     int line;        /* defining line in the source, 0 if from the API */
+    double ff_q;     /* form finding: force density q = N / l [force/length], 0 if none */
+    double ff_force; /* form finding: target force [force], 0 if none */
 } ctn_element;
 
 typedef struct ctn_hload {
