@@ -2,7 +2,8 @@
  * of the free nodes for the current densities and loads, measures the members, gives
  * each the unstressed length that carries N = q l (its family's prestress_l0), recomputes
  * the loads from that state, and updates the densities of targeted members, q <- force / l.
- * It stops when the largest relative force mismatch and the load change are both <= tol. */
+ * It stops when the largest relative force mismatch and the load change are both <= tol
+ * and the loads have stopped changing (their change no longer halves: round-off). */
 #include "formfind/ff.h"
 #include "element/element.h"
 
@@ -132,7 +133,7 @@ static double residual(const ctn_ff *f, double scale)
 
 static int iterate(ctn_ff *f, const ctn_formfind_options *o, ctn_formfind_report *rep)
 {
-    double best = INFINITY, scale = 0;
+    double best = INFINITY, scale = 0, last_change = INFINITY;
     int best_it = 0, rc = CTN_OK;
     rep->reason = CTN_FF_MAXIT;
     for (int it = 1; it <= o->maxit && !rc; it++) {
@@ -143,7 +144,9 @@ static int iterate(ctn_ff *f, const ctn_formfind_options *o, ctn_formfind_report
         rep->force_mismatch = log.force_mismatch;
         rep->load_change = log.load_change;
         if (o->monitor) o->monitor(o->monitor_data, &log);
-        if (log.force_mismatch <= o->tol && log.load_change <= o->tol) {
+        int settled = log.load_change == 0 || log.load_change > 0.5 * last_change;   /* at round-off */
+        last_change = log.load_change;
+        if (log.force_mismatch <= o->tol && log.load_change <= o->tol && settled) {
             rep->reason = CTN_FF_CONVERGED;
             break;
         }
