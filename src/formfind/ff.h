@@ -33,6 +33,7 @@ typedef struct ctn_ff {
     double *X0, *l00;       /* the model's coordinates and l0 as given (restored on failure) */
     int factored;           /* 1 while the factorizations hold the current q */
     int saved;              /* 1 once X0 and l00 hold the model as given */
+    size_t targets;         /* members with a target force */
 } ctn_ff;
 
 /* The systems of the three coordinates (system.c). */

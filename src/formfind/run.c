@@ -60,9 +60,10 @@ static int measure(ctn_ff *f, double *scale)
         double l = f->len[e] = ctn_ff_length(m, e), N = f->q[e] * l, l0 = 0;
         if (!(l > 0) || !isfinite(N)) {
             const int *nd = ctn_elem_nodes(m, e);
-            return ctn_error_at(f->ctx, CTN_ERR_MODEL, m->file, el->line, "element %d has no length in the shape found "
-                                "(nodes %d and %d meet): no shape with these force densities and loads keeps them apart",
-                                el->id, m->nodes.v[nd[0]].id, m->nodes.v[nd[1]].id);
+            return ctn_error_at(f->ctx, CTN_ERR_MODEL, m->file, el->line, "element %d shrank to zero length (nodes %d and "
+                                "%d met) %s", el->id, m->nodes.v[nd[0]].id, m->nodes.v[nd[1]].id, f->targets ?
+                                "while the densities followed the target forces: no shape gives these targets" :
+                                "in the shape of these force densities and loads");
         }
         *scale = fmax(*scale, N);
         m->line = el->line;                              /* messages at the member's line */
@@ -192,6 +193,7 @@ static int setup(ctn_ff *f, ctn_formfind_report *rep)
         f->q[e] = el->ff_q > 0 ? el->ff_q : el->ff_force / ctn_ff_length(f->m, e);
         rep->targets += el->ff_force > 0;
     }
+    f->targets = rep->targets;
     ctn_model_step_loads(f->m, 0, f->p, NULL);
     if ((rc = ctn_ff_check_targets(f))) return rc;
     return ctn_ff_systems_create(f);
