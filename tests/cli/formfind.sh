@@ -9,6 +9,7 @@
 #   - the example net: found, written, and `catena solve OUT` stays put (|u| <= 1e-10 m)
 #     with the forces q l; the written file is the committed examples/formfind/
 #     hypar_net.found.cable to 1e-9 (a regression test);
+#   - the ```cable-formfind blocks of docs/format.md: found, and the found model solved;
 #   - usage errors (exit 1), an output that cannot be written (exit 4), --help, and the
 #     note of `catena solve` on a model with q=.
 set -u
@@ -90,6 +91,20 @@ sys.exit(0 if ok else 1)
 PY
 fi
 finish example_found_stays_put
+
+# ---- the form-finding examples of docs/format.md (```cable-formfind blocks) -------------
+awk -v dir="$T" '
+    /^```cable-formfind[[:space:]]*$/ { n++; f = sprintf("%s/docff_%02d.cable", dir, n); inblk = 1; next }
+    /^```/ && inblk { inblk = 0; close(f); next }
+    inblk { print > f }
+    END { print n + 0 > (dir "/docff_count") }' docs/format.md
+[ "$(cat "$T/docff_count")" -ge 2 ] || WHY+=("fewer than 2 form-finding examples in docs/format.md")
+for f in "$T"/docff_*.cable; do
+    [ -e "$f" ] || continue
+    "$BIN" formfind "$f" -q -o "$f.found" 2>"$T/err" || WHY+=("$(basename "$f"): formfind exit $?: $(cat "$T/err")")
+    "$BIN" solve "$f.found" -q 2>"$T/err" || WHY+=("$(basename "$f"): solve of the found model: exit $?: $(cat "$T/err")")
+done
+finish docs_format_examples
 
 # ---- the command line ------------------------------------------------------------------
 "$BIN" formfind --help >"$T/help" 2>&1 && grep -q "^usage: catena formfind MODEL" "$T/help" && grep -q "force / l" "$T/help" ||
