@@ -465,31 +465,32 @@ static void test_errors(void)
 {
     const char *head = "material s E=1e7\nsection c material=s A=1e-3\nnode 1 0 0 0 fix=xyz\nnode 2 4 0 0 fix=xyz\n"
                        "node 3 2 -1 0\n";
+    static const char *const cases[][2] = {             /* the lines after head; the message */
+        { "element 1 1 3 section=c q=0\n", "bad.cable:6: element 1: q must be positive (found 0)" },
+        { "element 1 1 3 section=c force=-2\n", "bad.cable:6: element 1: force must be positive (found -2)" },
+        { "element 1 1 3 section=c q=1 force=2\n", "bad.cable:6: element 1: give q= or force=, not both" },
+        { "element 1 1 3 section=c q=1 l0=2\n", "bad.cable:6: element 1: q= is for form finding" },
+        { "element 1 1 3 section=c q=1\nelement 2 3 2 section=c\n",
+          "bad.cable:7: element 2: form finding needs a force density q= or a target force" },
+        { "element 1 1 3 section=c q=1\nelement 2 3 2 section=c q=1\nnode 4 9 9 0\nnode 5 9 8 0\nelement 3 4 5 section=c q=1\n",
+          "part that no support reaches" },                             /* ctn_model_validate first */
+        { "element 1 1 3 section=c q=1\nelement 2 3 2 section=c q=1\nnode 4 2 3 0 fix=yz\nnode 5 3 3 0 fix=yz\n"
+          "element 3 5 4 section=c q=1\n",
+          "bad.cable:8: node 4 is free in x but no chain of members joins it to a node fixed in x" },
+        { "element 1 1 3 section=c force=10\nelement 2 3 2 section=c force=4\nload 3 0 -1 0\n",
+          "bad.cable:6: element 1: its target force 10 is larger than the other forces at node 3 together (5" },
+        { "element 1 1 3 section=c force=1\nelement 2 3 2 section=c force=1\nload 3 0 -5 0\n",
+          "bad.cable:5: node 3: its load (5) is larger than the target forces of its members together (2)" },
+        { "element 1 1 3 section=c q=1\nelement 2 3 2 section=c q=1\nstep a\ndisplace 2 x=1\n",
+          "bad.cable:4: node 2: a displacement is prescribed in the first step" },
+        { "spring 1 1 3 k=1 q=5\nelement 2 3 2 section=c q=1\n",
+          "bad.cable:6: spring 1: no positive free length gives that prestress" },
+    };
     char t[1024];
-    snprintf(t, sizeof t, "%selement 1 1 3 section=c q=0\n", head);
-    expect_error(t, CTN_ERR_MODEL, "bad.cable:6: element 1: q must be positive (found 0)");
-    snprintf(t, sizeof t, "%selement 1 1 3 section=c force=-2\n", head);
-    expect_error(t, CTN_ERR_MODEL, "bad.cable:6: element 1: force must be positive (found -2)");
-    snprintf(t, sizeof t, "%selement 1 1 3 section=c q=1 force=2\n", head);
-    expect_error(t, CTN_ERR_MODEL, "bad.cable:6: element 1: give q= or force=, not both");
-    snprintf(t, sizeof t, "%selement 1 1 3 section=c q=1 l0=2\n", head);
-    expect_error(t, CTN_ERR_MODEL, "bad.cable:6: element 1: q= is for form finding");
-    snprintf(t, sizeof t, "%selement 1 1 3 section=c q=1\nelement 2 3 2 section=c\n", head);
-    expect_error(t, CTN_ERR_MODEL, "bad.cable:7: element 2: form finding needs a force density q= or a target force");
-    snprintf(t, sizeof t, "%selement 1 1 3 section=c q=1\nelement 2 3 2 section=c q=1\nnode 4 9 9 0\nnode 5 9 8 0\n"
-             "element 3 4 5 section=c q=1\n", head);
-    expect_error(t, CTN_ERR_MODEL, "part that no support reaches");              /* ctn_model_validate first */
-    snprintf(t, sizeof t, "%selement 1 1 3 section=c q=1\nelement 2 3 2 section=c q=1\nnode 4 2 3 0 fix=yz\n"
-             "node 5 3 3 0 fix=yz\nelement 3 5 4 section=c q=1\n", head);
-    expect_error(t, CTN_ERR_MODEL, "bad.cable:8: node 4 is free in x but no chain of members joins it to a node fixed in x");
-    snprintf(t, sizeof t, "%selement 1 1 3 section=c force=10\nelement 2 3 2 section=c force=4\nload 3 0 -1 0\n", head);
-    expect_error(t, CTN_ERR_MODEL, "bad.cable:6: element 1: its target force 10 is larger than the other forces at node 3 together (5");
-    snprintf(t, sizeof t, "%selement 1 1 3 section=c force=1\nelement 2 3 2 section=c force=1\nload 3 0 -5 0\n", head);
-    expect_error(t, CTN_ERR_MODEL, "bad.cable:5: node 3: its load (5) is larger than the target forces of its members together (2)");
-    snprintf(t, sizeof t, "%selement 1 1 3 section=c q=1\nelement 2 3 2 section=c q=1\nstep a\ndisplace 2 x=1\n", head);
-    expect_error(t, CTN_ERR_MODEL, "bad.cable:4: node 2: a displacement is prescribed in the first step");
-    snprintf(t, sizeof t, "%sspring 1 1 3 k=1 q=5\nelement 2 3 2 section=c q=1\n", head);
-    expect_error(t, CTN_ERR_MODEL, "bad.cable:6: spring 1: no positive free length gives that prestress");
+    for (size_t k = 0; k < sizeof cases / sizeof *cases; k++) {
+        snprintf(t, sizeof t, "%s%s", head, cases[k][0]);
+        expect_error(t, CTN_ERR_MODEL, cases[k][1]);
+    }
     /* Equal forces in three members to a node in an obtuse triangle of anchors (an angle
      * above 120 degrees): no shape has them (the node runs into the obtuse corner). */
     snprintf(t, sizeof t, "%snode 4 2 0.2 0 fix=xyz\nelement 1 1 3 section=c force=1\nelement 2 3 2 section=c force=1\n"
