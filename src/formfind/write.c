@@ -19,10 +19,11 @@ typedef struct ff_writer {
 } ff_writer;
 
 /* Keys that set or imply the unstressed length (element, spring), and those of a cable's
- * generation: form finding replaces them. */
+ * generation (its length or a target for it, placement, start, prestress): form finding
+ * replaces them. Any other key (group=, ...) carries over to the lines written. */
 static const char *const length_keys[] = { "l0", "N0", "s0", "eps0", "q", "force" };
-static const char *const cable_keys[] = { "section", "n", "length", "shape", "start", "guess",
-                                          "N0", "s0", "eps0", "q", "force" };
+static const char *const cable_keys[] = { "section", "n", "length", "H", "sag", "tension", "shape", "start",
+                                          "guess", "N0", "s0", "eps0", "q", "force" };
 
 static int has_key(const char *tok, const char *const *keys, size_t n)
 {
