@@ -97,7 +97,8 @@ typedef struct ctn_formfind_report {
  * displacement in the first step, targets that no shape can reach at a node (one force
  * larger than all the others and the load there together), a member of zero length in the
  * found shape, no unstressed length giving a member its force; and the checks of
- * ctn_model_validate. opt may be NULL (defaults); rep may be NULL. */
+ * ctn_model_validate. Errors are recorded in the model's context (ctx: the same one).
+ * opt may be NULL (defaults); rep may be NULL. */
 int ctn_formfind(ctn_ctx *ctx, ctn_model *m, const ctn_formfind_options *opt, ctn_formfind_report *rep);
 
 /* Write the found model m as a .cable file at path, atomically (a temporary renamed on
