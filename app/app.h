@@ -16,6 +16,7 @@ enum {
 };
 
 int ctn_cmd_solve(int argc, char **argv);
+int ctn_cmd_formfind(int argc, char **argv);
 
 /* The commands (help.c): one table of name, entry point and help text. */
 typedef struct ctn_app_command {

@@ -60,6 +60,9 @@ int ctn_cmd_solve(int argc, char **argv)
             printf("%s: %zu nodes, %zu elements\n", a.model, ctn_model_node_count(m), ctn_model_element_count(m));
             printf("%-16s it  |f_ext - f_int|   |dd|        order\n", method_title(opt.method));
         }
+        size_t nq = ctn_model_force_density_count(m);
+        if (nq) fprintf(stderr, "catena: %s: note: %zu member%s carr%s q= or force=, which only `catena formfind` uses; "
+                        "solve uses their l0\n", a.model, nq, nq == 1 ? "" : "s", nq == 1 ? "ies" : "y");
         rc = ctn_solve(ctx, m, &opt, &s);
     }
     if (rc) code = ctn_app_fail(ctx, rc);

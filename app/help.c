@@ -78,6 +78,31 @@ static const ctn_app_command commands[] = {
       "\n"
       "exit codes: 0 every n converged, 1 usage, 2 bad model or not a span under self-weight,\n"
       "            3 some n did not converge, 4 I/O or other error\n" },
+    { "formfind", ctn_cmd_formfind, "MODEL [-o OUT] [--tol T] [--maxit N] [-q]", "MODEL [-o OUT] [...]",
+      "form finding by force density (Schek)",
+      "Find the shape of a cable net from the force density q= (force/length) or the target\n"
+      "force force= of every member (docs/format.md): nodes with fix= are anchors, the free\n"
+      "ones go where the members and the loads of the first step balance (self-weight and\n"
+      "hload computed from the shape found). The linear equilibrium of the free nodes is\n"
+      "solved by sparse Cholesky; targeted members iterate q <- force / l until every force\n"
+      "matches its target and the loads have settled (docs/theory.md). OUT is a complete\n"
+      "model: the source with the found coordinates, each member's l0= (the unstressed\n"
+      "length that carries q l there) in place of q=/force=, cables expanded into nodes and\n"
+      "elements, every other line copied. `catena solve OUT` stays where it is.\n"
+      "\n"
+      "options (in any order):\n"
+      "  MODEL          the model file\n"
+      "  -o OUT         write the found model to OUT (atomically; only when it converged)\n"
+      "  --tol T        stop when the largest relative force mismatch and load change are\n"
+      "                 both <= T (default 1e-10)\n"
+      "  --maxit N      most iterations, 1 to 1000000 (default 1000)\n"
+      "  -q, --quiet    print nothing on stdout\n"
+      "  -h, --help     print this help and exit\n"
+      "\n"
+      "exit codes: 0 found (and written), 1 usage, 2 bad model (the message names file:line: a\n"
+      "            member without q= or force=, a free node no member joins to an anchor,\n"
+      "            targets no shape can balance, ...), 3 not converged (nothing written),\n"
+      "            4 I/O or other error\n" },
 };
 
 const ctn_app_command *ctn_app_command_find(const char *name)

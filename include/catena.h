@@ -24,6 +24,8 @@
  *   catena/compare.h   a model's single span against those closed forms; the length
  *                      study and the mesh-convergence study
  *   catena/plot.h      figures as gnuplot scripts and data files
+ *   catena/formfind.h  form finding by force density: the shape that carries the
+ *                      members' force densities or target forces, written as a model
  *
  * How to use it:
  *
@@ -83,5 +85,6 @@
 #include "catena/analytic.h"
 #include "catena/compare.h"
 #include "catena/plot.h"
+#include "catena/formfind.h"
 
 #endif

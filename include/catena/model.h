@@ -148,6 +148,10 @@ typedef struct ctn_element_spec {
     ctn_prestress prestress;  /* instead of l0 (then l0 must stay CTN_L0_DEFAULT) */
     double prestress_value;   /* its value N0, s0 or eps0 */
     const char *group;    /* the group it joins (created if new; NULL: none) */
+    double q;             /* form finding (catena/formfind.h): force density N / l
+                             [force/length], > 0; 0 (default): none. ctn_solve ignores it */
+    double force;         /* form finding: target force [force], > 0; 0 (default): none.
+                             At most one of q and force; ctn_solve ignores it */
 } ctn_element_spec;
 void ctn_element_spec_init(ctn_element_spec *s);
 int ctn_model_add_element_spec(ctn_model *m, const ctn_element_spec *s);

@@ -1,5 +1,6 @@
 /* The directives of the .cable format (docs/format.md), one handler each. */
 #include "io/parse.h"
+#include "catena/formfind.h"
 #include "solve/problem.h"
 
 #include <ctype.h>
@@ -141,11 +142,28 @@ static int prestress_keys(ctn_line *l, int from, const char *what, double *l0, c
     return rc;
 }
 
+/* Form-finding keys q= (force density) and force= (target force), positive, at most
+ * one, and not with a key that sets the unstressed length (other: one of those given). */
+static int density_keys(ctn_line *l, int from, const char *what, int other, double *q, double *force)
+{
+    int hq = ctn_parse_key(l, from, "q") != NULL, hf = ctn_parse_key(l, from, "force") != NULL;
+    if (hq && hf) return ctn_parse_error(l, "%s: give q= or force=, not both", what);
+    if ((hq || hf) && other)
+        return ctn_parse_error(l, "%s: %s= is for form finding, which computes the unstressed length: "
+                               "give it without l0=, N0=, s0=, eps0= (or a cable target H=, sag=, tension=)", what, hq ? "q" : "force");
+    const char *key = hq ? "q" : "force";
+    double *v = hq ? q : force;
+    if (!hq && !hf) return CTN_OK;
+    int rc = ctn_parse_key_num(l, from, key, 1, v);
+    if (!rc && !(*v > 0)) return ctn_parse_error(l, "%s: %s must be positive (found %g)", what, key, *v);
+    return rc;
+}
+
 static int d_element(ctn_line *l)
 {
     int id = 0, a = 0, b = 0;
     double l0 = CTN_L0_DEFAULT;
-    int rc = ctn_parse_positional(l, 3, "element ID NODE1 NODE2 section=SECTION [l0=LENGTH|N0=FORCE|s0=STRESS|eps0=STRAIN] [group=NAME]");
+    int rc = ctn_parse_positional(l, 3, "element ID NODE1 NODE2 section=SECTION [l0=LENGTH|N0=FORCE|s0=STRESS|eps0=STRAIN|q=DENSITY|force=FORCE] [group=NAME]");
     if (!rc) rc = ctn_parse_int(l, "the element id", l->tok[1], &id);
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[2], &a);
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[3], &b);
@@ -157,6 +175,7 @@ static int d_element(ctn_line *l)
     int nodes[2] = { a, b };
     ctn_element_spec_init(&spec);
     if (!rc) rc = prestress_keys(l, 4, what, &l0, &spec.prestress, &spec.prestress_value);
+    if (!rc) rc = density_keys(l, 4, what, l0 != CTN_L0_DEFAULT || spec.prestress, &spec.q, &spec.force);
     spec.group = rc ? NULL : ctn_parse_key(l, 4, "group");
     if (!rc) rc = ctn_parse_leftovers(l, 4, "element");
     spec.id = id;
@@ -179,6 +198,7 @@ static int d_spring(ctn_line *l)
     char what[32];
     snprintf(what, sizeof what, "spring %d", id);
     if (!rc) rc = prestress_keys(l, 4, what, &spec.l0, &spec.prestress, &spec.prestress_value);
+    if (!rc) rc = density_keys(l, 4, what, spec.l0 != CTN_L0_DEFAULT || spec.prestress, &spec.q, &spec.force);
     if (!rc && !(spec.k > 0)) return ctn_parse_error(l, "spring %d: k must be positive (found %g)", id, spec.k);
     spec.group = rc ? NULL : ctn_parse_key(l, 4, "group");
     if (!rc) rc = ctn_parse_leftovers(l, 4, "spring");
@@ -226,9 +246,10 @@ static int cable_length(ctn_line *l, ctn_cable_spec *spec)
 
 static int d_cable(ctn_line *l)
 {
-    int a = 0, b = 0, n = 0;
+    int a = 0, b = 0, n = 0, first = 0, last = 0;
+    double q = 0, force = 0;
     ctn_cable_spec spec = { .n = 0, .length = 0, .shape = CTN_SHAPE_ARC, .guess_strain = 1e-3, .start = CTN_START_ARC, .prestress = CTN_PRESTRESS_NONE };
-    int rc = ctn_parse_positional(l, 2, "cable NODE1 NODE2 section=SECTION n=COUNT length=LENGTH|H=FORCE|sag=LENGTH|tension=FORCE [shape=arc|straight] [start=auto|arc|catenary] [guess=STRAIN] [N0=|s0=|eps0=] [group=NAME]");
+    int rc = ctn_parse_positional(l, 2, "cable NODE1 NODE2 section=SECTION n=COUNT length=LENGTH|H=FORCE|sag=LENGTH|tension=FORCE [shape=arc|straight] [start=auto|arc|catenary] [guess=STRAIN] [N0=|s0=|eps0=|q=|force=] [group=NAME]");
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[1], &a);
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[2], &b);
     const char *sec = rc ? NULL : ctn_parse_key(l, 3, "section");
@@ -240,10 +261,12 @@ static int d_cable(ctn_line *l)
     if (!rc) rc = prestress_keys(l, 3, "cable", NULL, &spec.prestress, &spec.prestress_value);
     if (!rc && spec.target && spec.prestress)
         return ctn_parse_error(l, "cable: a target (H=, sag=, tension=) sets the length: give no N0=, s0= or eps0= with it");
+    if (!rc) rc = density_keys(l, 3, "cable", spec.prestress || spec.target, &q, &force);
     spec.group = rc ? NULL : ctn_parse_key(l, 3, "group");
     if (!rc) rc = ctn_parse_leftovers(l, 3, "cable");
     spec.n = n;
-    return rc ? rc : ctn_model_add_cable(l->m, a, b, sec, &spec, NULL, NULL);
+    if (!rc) rc = ctn_model_add_cable(l->m, a, b, sec, &spec, &first, &last);
+    return rc || !(q > 0 || force > 0) ? rc : ctn_model_set_force_density(l->m, first, last, q, force);
 }
 
 static int d_load(ctn_line *l)

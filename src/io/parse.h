@@ -41,6 +41,15 @@ int ctn_parse_key_num(ctn_line *l, int from, const char *key, int required, doub
 /* After a handler took what it knows: any token left is an unknown key. */
 int ctn_parse_leftovers(const ctn_line *l, int from, const char *directive);
 
+/* The reader's pieces (reader.c), shared with the form-finding writer, which walks the
+ * same lines. Split one line (modified in place) into tokens; comments start with '#'. */
+int ctn_read_tokenize(ctn_line *l, char *s);
+/* End of the line starting at `start`: the index of its LF, CR or CRLF (len if none);
+ * *next gets the start of the next line. */
+size_t ctn_read_line_end(const char *text, size_t start, size_t len, size_t *next);
+/* A whole file into memory (*data allocated, *len bytes; at most 2 GiB). */
+int ctn_read_all(ctn_ctx *ctx, const char *path, char **data, size_t *len);
+
 /* The directive handlers (directives.c). */
 int ctn_parse_directive(ctn_line *l);
 

@@ -11,8 +11,7 @@
 
 #define CTN_MAX_FILE ((size_t)1 << 31)
 
-/* Split one line (modified in place) into tokens; comments start with '#'. */
-static int tokenize(ctn_line *l, char *s)
+int ctn_read_tokenize(ctn_line *l, char *s)
 {
     char *hash = strchr(s, '#');
     if (hash) *hash = '\0';
@@ -27,9 +26,7 @@ static int tokenize(ctn_line *l, char *s)
     return CTN_OK;
 }
 
-/* End of the line starting at `start`: the index of its LF, CR or CRLF (len if none);
- * *next gets the start of the next line. */
-static size_t line_end(const char *text, size_t start, size_t len, size_t *next)
+size_t ctn_read_line_end(const char *text, size_t start, size_t len, size_t *next)
 {
     size_t i = start;
     while (i < len && text[i] != '\n' && text[i] != '\r') i++;
@@ -46,11 +43,11 @@ static int parse_text(ctn_model *m, ctn_solve_options *opt, const char *name, ch
     l.file = name;
     size_t start = len >= 3 && !memcmp(text, "\xef\xbb\xbf", 3) ? 3 : 0;   /* UTF-8 BOM */
     for (l.line = 1; start < len || (start == len && l.line == 1); l.line++) {
-        size_t next, end = line_end(text, start, len, &next);
+        size_t next, end = ctn_read_line_end(text, start, len, &next);
         if (memchr(text + start, '\0', end - start))
             return ctn_parse_error(&l, "binary data (a NUL byte) in the model file");
         text[end] = '\0';
-        int rc = tokenize(&l, text + start);
+        int rc = ctn_read_tokenize(&l, text + start);
         if (!rc && l.ntok) {
             ctn_model_set_origin(m, name, l.line);
             rc = ctn_parse_directive(&l);
@@ -96,7 +93,7 @@ int ctn_read_string(ctn_ctx *ctx, const char *name, const char *text, size_t len
     return rc;
 }
 
-static int read_all(ctn_ctx *ctx, const char *path, char **data, size_t *len)
+int ctn_read_all(ctn_ctx *ctx, const char *path, char **data, size_t *len)
 {
     FILE *f = fopen(path, "rb");
     if (!f) return ctn_error(ctx, CTN_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
@@ -136,7 +133,7 @@ int ctn_read_file(ctn_ctx *ctx, const char *path, ctn_model **out, ctn_solve_opt
     *out = NULL;
     char *data = NULL;
     size_t len = 0;
-    int rc = read_all(ctx, path, &data, &len);
+    int rc = ctn_read_all(ctx, path, &data, &len);
     if (rc) return rc;
     rc = ctn_read_string(ctx, path, data, len, out, opt);
     ctn_free(data);

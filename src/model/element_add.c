@@ -53,6 +53,20 @@ static int resolve_nodes(const ctn_model *m, const ctn_element_spec *s, const ct
     return CTN_OK;
 }
 
+/* Form-finding keys: a force density q or a target force, positive, not both. */
+static int density(const ctn_model *m, const ctn_element_spec *s, ctn_element *e)
+{
+    if (!isfinite(s->q) || s->q < 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "element %d: q must be positive and finite (got %g)", s->id, s->q);
+    if (!isfinite(s->force) || s->force < 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "element %d: force must be positive and finite (got %g)", s->id, s->force);
+    if (s->q > 0 && s->force > 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "element %d: give q= or force=, not both", s->id);
+    e->ff_q = s->q;
+    e->ff_force = s->force;
+    return CTN_OK;
+}
+
 /* The record of spec s (defaults resolved), checked by its family. */
 static int make_record(const ctn_model *m, const ctn_element_spec *s, int type, ctn_element *e, int *idx)
 {
@@ -76,6 +90,7 @@ static int make_record(const ctn_model *m, const ctn_element_spec *s, int type, 
     e->l0 = s->l0 == CTN_L0_DEFAULT ? chord : s->l0;
     e->k = s->k;
     e->line = m->line;
+    if ((rc = density(m, s, e))) return rc;
     if (s->prestress != CTN_PRESTRESS_NONE) {
         if (s->prestress < CTN_PRESTRESS_FORCE || s->prestress > CTN_PRESTRESS_STRAIN)
             return ctn_model_error(m, CTN_ERR_MODEL, "element %d: unknown prestress", s->id);

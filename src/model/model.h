@@ -43,6 +43,8 @@ typedef struct ctn_element {
     double k;        /* spring stiffness [force/length], 0 for other families */
     int line;        /* defining line in the source, 0 if from the API */
     int group;       /* group index, -1 if none */
+    double ff_q;     /* form finding: force density q = N / l [force/length], 0 if none */
+    double ff_force; /* form finding: target force [force], 0 if none */
 } ctn_element;
 
 typedef struct ctn_group {

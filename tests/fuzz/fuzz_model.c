@@ -2,10 +2,12 @@
  * parsed from memory; valid models (within a size limit) are solved with small
  * iteration budgets by every method, and their results turned into JSON; errors must
  * come back as status codes with messages. Any crash, hang, leak or sanitizer report
- * is a bug. Build: make fuzz (clang). */
+ * is a bug. Models with force densities (q=, force=) are form-found too, and the found
+ * model solved. Build: make fuzz (clang). */
 #include "catena.h"
 
 #include <cjson/cJSON.h>
+#include <math.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -57,6 +59,27 @@ static void solve_all(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options 
     }
 }
 
+/* Models with force densities: form finding (a short budget), then the found model
+ * solved; an error has a message, a found model holds no NaN. */
+static void formfind(ctn_ctx *ctx, ctn_model *m, const ctn_solve_options *file_opt)
+{
+    if (!ctn_model_force_density_count(m)) return;
+    ctn_formfind_options o;
+    ctn_formfind_report rep;
+    ctn_formfind_options_init(&o);
+    o.maxit = 50;
+    if (ctn_formfind(ctx, m, &o, &rep) != CTN_OK) {
+        if (!*ctn_ctx_message(ctx)) __builtin_trap();
+        return;
+    }
+    for (size_t i = 0; i < ctn_model_node_count(m) && rep.reason == CTN_FF_CONVERGED; i++) {
+        ctn_node_info p;
+        ctn_model_node(m, i, &p);
+        if (!isfinite(p.X[0] + p.X[1] + p.X[2])) __builtin_trap();
+    }
+    if (rep.reason == CTN_FF_CONVERGED) solve_all(ctx, m, file_opt);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -68,6 +91,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     ctn_solve_options opt;
     int rc = ctn_read_string(ctx, "fuzz.cable", (const char *)data, size, &m, &opt);
     if (rc == CTN_OK) solve_all(ctx, m, &opt);
+    if (rc == CTN_OK) formfind(ctx, m, &opt);
     else if (!*ctn_ctx_message(ctx)) __builtin_trap();
     ctn_model_destroy(&m);
     ctn_ctx_destroy(&ctx);
