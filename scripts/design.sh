@@ -4,6 +4,7 @@
 #   examples/design/transmission_line.cable  conductor profiles at 15 C (sag set), -20 C
 #                                             with ice, +60 C
 #   examples/design/guyed_mast.cable          the guys' tensions before and under wind
+#   examples/design/hypar_snow.cable          the force-density hypar net under snow and cold
 # Figures (data, gnuplot scripts, SVG) go to out/design/; with DOCS=1 the SVGs are also
 # copied to docs/figures/.
 #     bash scripts/design.sh [build/catena]
@@ -72,7 +73,28 @@ GP
 gnuplot "$out/mast.gp"
 
 echo
-echo "figures: $out/design_line.svg $out/design_mast.svg"
+echo "== Hypar net found by force density: prestress, snow 0.8 kN/m2, snow at -30 K =="
+"$cli" solve examples/design/hypar_snow.cable --json > "$out/hypar.json"
+extract "$out/hypar.json" "$out/hypar"
+python3 - "$out/hypar.json" <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+for s in r["steps"]:
+    print("%-11s" % s["name"], "  ".join("%s: max force %.2f kN, utilisation %.3f, %d slack" % (g["name"], g["max_force"], g.get("max_utilisation", 0), g["slack"]) for g in s["groups"]))
+PY
+cat > "$out/hypar.gp" <<GP
+set terminal svg size 800,420 font "sans,12"
+set output "$out/design_hypar.svg"
+set title "Hypar net: member utilisation (strands 1-576, edge cables 577-624)"
+set xlabel "element id"; set ylabel "utilisation N / (mbl / safety)"; set key top left; set grid
+plot "$out/hypar.forces.dat" index 0 using 1:3 with points pt 7 ps 0.3 title "prestress", \
+     "" index 1 using 1:3 with points pt 7 ps 0.3 title "snow 0.8 kN/m²", \
+     "" index 2 using 1:3 with points pt 7 ps 0.3 title "snow, -30 K"
+GP
+gnuplot "$out/hypar.gp"
+
+echo
+echo "figures: $out/design_line.svg $out/design_mast.svg $out/design_hypar.svg"
 if [ "${DOCS:-0}" = 1 ]; then
     cp "$out"/design_*.svg docs/figures/
 fi

@@ -36,6 +36,11 @@ static int check_displacements(const ctn_ff *f)
         return ctn_error_at(f->ctx, CTN_ERR_MODEL, f->m->file, p->line, "node %d: a displacement is prescribed in the "
                             "first step; form finding holds the supports where they are (move it in a later step)", p->id);
     }
+    for (size_t i = 0; i < f->m->tloads.n; i++)      /* the lengths are found at the reference temperature */
+        if (f->m->tloads.v[i].step <= 1)
+            return ctn_error_at(f->ctx, CTN_ERR_MODEL, f->m->file, f->m->tloads.v[i].line,
+                                "a temperature change in the first step; form finding finds the shape at the reference "
+                                "temperature (change it in a later step)");
     return CTN_OK;
 }
 
