@@ -71,6 +71,7 @@ static void cable_setup(const ctn_model *m, size_t e, void *props)
     p->A = s->A;
     p->strain = (int)mat->strain;
     p->tension_only = mat->tension_only;
+    p->mass = ctn_model_section_mass(m, el->section) * el->l0;   /* m' l0 */
 }
 
 /* Self-weight: w l0 g, half to each node (a dead load). */
@@ -87,6 +88,11 @@ static double cable_stiffness(const void *props)
 {
     const ctn_cable_props *p = props;
     return p->EA / p->l0;
+}
+
+static void cable_mass(const void *props, int lumped, double *M)
+{
+    ctn_axial_mass(((const ctn_cable_props *)props)->mass, lumped, M);
 }
 
 static double cable_rest_length(const void *props) { return ((const ctn_cable_props *)props)->l0; }
@@ -140,4 +146,5 @@ const ctn_element_ops ctn_cable2_ops = {
     .flags = CTN_ELEM_FLEXIBLE | CTN_ELEM_SECTION,
     .check = cable_check, .setup = cable_setup, .eval = cable_eval, .load = cable_load,
     .stiffness = cable_stiffness, .rest_length = cable_rest_length, .prestress_l0 = cable_prestress_l0,
+    .mass = cable_mass,
 };

@@ -71,6 +71,11 @@ typedef struct ctn_element_ops {
     /* Optional: the unstressed length l0 that gives element e (its section or k set) the
      * prestress `kind` of value v at length l; a model error (ctn_model_error) if none. */
     int (*prestress_l0)(const ctn_model *m, const ctn_element *e, int kind, double v, double l, double *l0);
+    /* Optional: the element's mass matrix, packed upper triangle like the tangent
+     * (ctn_packed_index, ndof_node per node), lumped (1) or consistent (0). Mass is per
+     * unstressed length and conserved under stretch, so the matrix does not depend on
+     * the state. NULL: the family is massless (springs). */
+    void (*mass)(const void *props, int lumped, double *M);
 } ctn_element_ops;
 
 /* Entries of the packed upper triangle of an n x n matrix. */
@@ -100,6 +105,8 @@ typedef struct ctn_cable_props {
     double A;           /* area [length^2], for the stress */
     int strain;         /* ctn_strain */
     int tension_only;   /* 1: N = max(N, 0) */
+    double mass;        /* m' l0: the element's mass [force s^2/length]; NAN when the
+                           model cannot tell it (no units, a weight and no mass=) */
 } ctn_cable_props;
 
 /* Properties of a two-node axial spring (spring2.c). */

@@ -56,6 +56,7 @@ void ctn_section_spec_init(ctn_section_spec *s)
     if (!s) return;
     memset(s, 0, sizeof *s);
     s->size = sizeof *s;
+    s->mass = CTN_MASS_DEFAULT;
 }
 
 int ctn_model_add_material(ctn_model *m, const char *name, double E, ctn_strain strain,
@@ -128,6 +129,8 @@ int ctn_model_add_section_spec(ctn_model *m, const ctn_section_spec *spec)
         return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': A must be positive and finite (got %g)", name, A);
     if (!isfinite(w) || w < 0)
         return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': w must be >= 0 and finite (got %g)", name, w);
+    if (s.mass != CTN_MASS_DEFAULT && !(isfinite(s.mass) && s.mass >= 0))
+        return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': mass must be >= 0 and finite (got %g)", name, s.mass);
     if (!isfinite(m->materials.v[mat].E * A))
         return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': E A = %g * %g overflows", name, m->materials.v[mat].E, A);
     if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->sections, 1))) return rc;
@@ -137,5 +140,6 @@ int ctn_model_add_section_spec(ctn_model *m, const ctn_section_spec *spec)
     p->A = A;
     p->w = w;
     p->line = m->line;
+    p->mass = s.mass;
     return CTN_OK;
 }

@@ -14,6 +14,7 @@ typedef struct ctn_node {
     double guess[3]; /* starting displacement */
     unsigned fix;
     int line;        /* defining line in the source, 0 if from the API */
+    double mass;     /* lumped point mass [force s^2/length], 0 if none */
 } ctn_node;
 
 typedef struct ctn_material {
@@ -28,6 +29,7 @@ typedef struct ctn_section {
     int material;    /* index */
     double A, w;
     int line;
+    double mass;     /* per unit unstressed length; CTN_MASS_DEFAULT: w / g */
 } ctn_section;
 
 typedef struct ctn_element {
@@ -128,6 +130,11 @@ void ctn_spec_copy(void *dst, size_t dst_size, const void *src);
 int ctn_model_check_parts(const ctn_model *m);
 
 int ctn_model_find_section(const ctn_model *m, const char *name);
+
+/* Mass per unit unstressed length of section i: its mass=, else w / g (g standard
+ * gravity in the model's units); NAN when the model has no units and the section a
+ * weight but no mass= (mass.c). */
+double ctn_model_section_mass(const ctn_model *m, int i);
 int ctn_model_find_material(const ctn_model *m, const char *name);
 
 #endif
