@@ -230,8 +230,8 @@ int ctn_solution_stability(const ctn_solution *s, ctn_stability *out);
  * out of range, the model has no mass, or a section's mass cannot be told (a weight and
  * no units); CTN_ERR_INVALID for a solution that did not converge or is not of this
  * problem's model; CTN_ERR_LINALG when the eigen-solver fails or does not converge (its message says why).
- * ARPACK keeps state between calls of one thread: do not run two modal analyses at
- * once in two threads. */
+ * ARPACK keeps state between its calls (Fortran SAVE variables, process-wide): do not
+ * run two modal analyses at once in two threads. */
 int ctn_problem_modes(ctn_problem *p, ctn_solution *s, const ctn_modal_options *opt);
 
 /* What a mode is. */
