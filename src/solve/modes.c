@@ -135,7 +135,7 @@ static void modal_free(ctn_modal *md)
 static int modal_alloc(ctn_modal *md)
 {
     ctn_problem *p = md->p;
-    size_t nz = p->a->nnz ? p->a->nnz : 1, n = p->ndof;
+    size_t nz = p->a->nnz ? p->a->nnz : 1, n = p->ndof ? p->ndof : 1;
     md->Mx = ctn_malloc(p->ctx, nz, sizeof(double));
     md->Ax = ctn_malloc(p->ctx, nz, sizeof(double));
     md->d = ctn_calloc(p->ctx, p->ns, sizeof(double));

@@ -56,8 +56,8 @@ static void moving_nodes(const ctn_model *m, const double *shape, ctn_mode *out)
     }
 }
 
-/* One mode from phi (ndof, changed in sign only). */
-static void describe(ctn_modal *md, double *phi, double lam, ctn_mode *out)
+/* One mode from phi (ndof, changed in sign only); its shape (3 per node) into shape. */
+static void describe(ctn_modal *md, double *phi, double lam, ctn_mode *out, double *shape)
 {
     ctn_problem *p = md->p;
     double *Mphi = md->w0, *Kphi = md->w1, *state = md->d;
@@ -66,7 +66,7 @@ static void describe(ctn_modal *md, double *phi, double lam, ctn_mode *out)
     frequencies(md, lam, out);
     memset(state, 0, p->ns * sizeof(double));
     ctn_problem_axpy(p, state, 1.0, phi);
-    ctn_dofmap_to3(&p->a->map, state, (double *)out->shape);
+    ctn_dofmap_to3(&p->a->map, state, shape);
     ctn_problem_symv(p, md->Mx, phi, Mphi);
     ctn_problem_symv(p, p->Kx, phi, Kphi);
     for (size_t q = 0; q < n; q++) {
@@ -87,7 +87,7 @@ void ctn_modes_fill(ctn_modal *md, double *V, ctn_modes *res)
     size_t n = md->p->ndof;
     for (int k = 0; k < md->opt->count; k++) {
         double *phi = V + n * (size_t)k;
-        describe(md, phi, md->lambda[k], &res->mode[k]);
+        describe(md, phi, md->lambda[k], &res->mode[k], res->shapes + 3 * md->p->m->nodes.n * (size_t)k);
         md->sum.zero_modes += res->mode[k].kind == CTN_MODE_ZERO;
         md->sum.unstable_modes += res->mode[k].kind == CTN_MODE_UNSTABLE;
     }
