@@ -18,7 +18,7 @@ static const char *mass_unit(const ctn_model *m)
 static void mode_line(FILE *out, size_t k, const ctn_mode *md)
 {
     fprintf(out, "%6zu %-9s %14.8g %12.6g %14.8g %12.4g %12.4g %12.4g %8d\n", k + 1,
-            md->kind == CTN_MODE_ZERO ? "zero" : md->kind == CTN_MODE_UNSTABLE ? "unstable" : "",
+            md->kind == CTN_MODE_VIBRATION ? "" : ctn_mode_kind_name(md->kind),
             md->frequency, md->period, md->angular_frequency, md->effective_mass[0], md->effective_mass[1],
             md->effective_mass[2], md->node);
     if (md->kind != CTN_MODE_ZERO) return;

@@ -243,6 +243,9 @@ typedef enum ctn_mode_kind {
                                  (frequency 0; the growth rate is sqrt(-omega^2)) */
 } ctn_mode_kind;
 
+/* Name of a mode kind: "vibration", "zero", "unstable" (as the results spell it). */
+const char *ctn_mode_kind_name(ctn_mode_kind k);
+
 #define CTN_MODE_MAX_NODES 8  /* nodes a zero mode names */
 
 /* Mode k of a solution (k = 0 .. count - 1, by increasing omega^2). */

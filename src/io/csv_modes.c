@@ -14,13 +14,12 @@ static int modes_begin(void *p, const ctn_model *m, ctn_sink *sink)
 
 static void mode_row(ctn_wbuf *b, size_t k, const ctn_mode *md)
 {
-    static const char *const kinds[3] = { "vibration", "zero", "unstable" };
     double v[10] = { md->frequency, md->period, md->angular_frequency, md->eigenvalue, md->participation[0],
                      md->participation[1], md->participation[2], md->effective_mass[0], md->effective_mass[1],
                      md->effective_mass[2] };
     ctn_wbuf_int(b, (int)k + 1);
     ctn_wbuf_putc(b, ',');
-    ctn_wbuf_puts(b, kinds[md->kind]);
+    ctn_wbuf_puts(b, ctn_mode_kind_name(md->kind));
     for (int i = 0; i < 10; i++) {
         ctn_wbuf_putc(b, ',');
         ctn_wbuf_g17(b, v[i]);

@@ -5,8 +5,6 @@
 
 #include <math.h>
 
-static const char *const kinds[3] = { "vibration", "zero", "unstable" };
-
 static void xyz_object(ctn_jw *j, const char *key, const double v[3])
 {
     ctn_jw_object(j, key);
@@ -53,7 +51,7 @@ static void put_mode(ctn_jw *j, const ctn_model *m, size_t k, const ctn_mode *md
 {
     ctn_jw_object(j, NULL);
     ctn_jw_number(j, "mode", (double)(k + 1));
-    ctn_jw_string(j, "kind", kinds[md->kind]);
+    ctn_jw_string(j, "kind", ctn_mode_kind_name(md->kind));
     ctn_jw_number(j, "frequency", md->frequency);
     ctn_jw_number(j, "period", md->period);
     ctn_jw_number(j, "angular_frequency", md->angular_frequency);

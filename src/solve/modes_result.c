@@ -43,3 +43,13 @@ int ctn_solution_modal_summary(const ctn_solution *s, ctn_modal_summary *out)
     *out = s->modes->sum;
     return CTN_OK;
 }
+
+const char *ctn_mode_kind_name(ctn_mode_kind k)
+{
+    switch (k) {
+    case CTN_MODE_VIBRATION: return "vibration";
+    case CTN_MODE_ZERO: return "zero";
+    case CTN_MODE_UNSTABLE: return "unstable";
+    default: return "unknown";
+    }
+}
