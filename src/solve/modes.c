@@ -127,7 +127,7 @@ static int eigenpairs(ctn_modal *md, double *lambda, double **V)
 
 static void modal_free(ctn_modal *md)
 {
-    double *v[] = { md->Mx, md->Ax, md->d, md->diag, md->w0, md->w1, md->w2, md->lambda };
+    double *v[] = { md->Mx, md->Ax, md->d, md->diag, md->w0, md->w1, md->lambda };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
     ctn_linsolve_destroy(&md->ldl);
 }
@@ -142,9 +142,8 @@ static int modal_alloc(ctn_modal *md)
     md->diag = ctn_malloc(p->ctx, n, sizeof(double));
     md->w0 = ctn_malloc(p->ctx, n, sizeof(double));
     md->w1 = ctn_malloc(p->ctx, n, sizeof(double));
-    md->w2 = ctn_malloc(p->ctx, n, sizeof(double));
     md->lambda = ctn_malloc(p->ctx, (size_t)md->opt->count, sizeof(double));
-    return md->Mx && md->Ax && md->d && md->diag && md->w0 && md->w1 && md->w2 && md->lambda ? CTN_OK : CTN_ERR_NOMEM;
+    return md->Mx && md->Ax && md->d && md->diag && md->w0 && md->w1 && md->lambda ? CTN_OK : CTN_ERR_NOMEM;
 }
 
 /* Tangent and mass at the solution, the scales, the shift. */

@@ -13,7 +13,7 @@ typedef struct ctn_modal {
     double *Mx, *Ax;          /* nnz: mass and K - sigma M values, pattern order */
     double *d;                /* state: the solution's displacements */
     double *diag;             /* ndof: the lumped mass diagonal */
-    double *w0, *w1, *w2;     /* ndof scratch */
+    double *w0, *w1;          /* ndof scratch */
     double *lambda;           /* count: omega^2, ascending */
     ctn_linsolve *ldl;        /* LDL' on the pattern when LL' of K - sigma M failed */
     ctn_linsolve *ls;         /* the factorization in use */
