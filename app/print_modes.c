@@ -33,10 +33,12 @@ void ctn_print_modes(FILE *out, const ctn_model *m, const ctn_solution *s)
     if (ctn_solution_modal_summary(s, &ms)) return;
     const char *mu = mass_unit(m);
     fprintf(out, "modes (%s mass, %d %s): %d factorization(s), %d solves, %d Lanczos restarts, "
-                 "max |K phi - w^2 M phi| / |K phi| %.1e, %.3f s\n",
+                 "max |K phi - w^2 M phi| / |K phi| %.1e\n",
             ms.mass == CTN_MASS_LUMPED ? "lumped" : "consistent", ms.count,
             ms.shift > 0 ? "nearest the shift" : "lowest", ms.factorizations, ms.solves, ms.lanczos_restarts,
-            ms.max_residual, ms.t_total);
+            ms.max_residual);
+    fprintf(out, "modal time: %.3f s (tangent and mass %.3f s, factorization %.3f s, solves %.3f s)\n", ms.t_total,
+            ms.t_assemble, ms.t_factor, ms.t_solve);
     fprintf(out, "moving mass [%s]: x %.6g, y %.6g, z %.6g\n", *mu ? mu : "model units", ms.total_mass[0],
             ms.total_mass[1], ms.total_mass[2]);
     fprintf(out, "  mode %-9s %14s %12s %14s %12s %12s %12s %8s\n", "", "frequency [Hz]", "period [s]", "omega [rad/s]",
