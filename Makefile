@@ -1,6 +1,6 @@
 # catena - top-level driver around CMake.
 #   make        build build/catena and libcatena
-#   make run    install missing packages, build, run the paper's study
+#   make run    install missing packages, build, run the paper's study and the modal study
 #   make test   install missing packages, build and run every test (plain and ASan+UBSan)
 #               and a 30 s smoke of the libFuzzer harness
 #   make install PREFIX=/usr/local   build, then install headers, libcatena.a, libcatena.so,
@@ -21,6 +21,7 @@ deps:
 
 run: all
 	@bash scripts/paper.sh $(BUILD)/catena
+	@bash scripts/modal.sh $(BUILD)
 
 install: all
 	DESTDIR="$(DESTDIR)" cmake --install $(BUILD) --prefix "$(PREFIX)"

@@ -65,6 +65,8 @@ void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s);
 void ctn_print_groups(FILE *out, const ctn_model *m, const ctn_solution *s);
 /* The warning (exit code unchanged) when an element's utilisation exceeds 1. */
 void ctn_print_capacity_warning(FILE *out, const char *model, const ctn_model *m, const ctn_solution *s);
+/* Its modal part: the analysis and one line per mode (nothing without modes). */
+void ctn_print_modes(FILE *out, const ctn_model *m, const ctn_solution *s);
 /* Iteration log state: the monitor prints one line per Newton iteration with the
  * observed order log(r_k/r_k-1) / log(r_k-1/r_k-2) (2 for quadratic convergence). */
 typedef struct ctn_iter_log {

@@ -14,12 +14,18 @@ static const ctn_app_command commands[] = {
       "options (in any order):\n"
       "  MODEL          the model file\n"
       "  --json         print the result as JSON on stdout instead of the log and summary\n"
-      "  -o DIR         write result.json, nodes.csv and elements.csv into DIR (created if missing)\n"
+      "  -o DIR         write result.json, nodes.csv and elements.csv into DIR (created if missing),\n"
+      "                 and modes.csv when the model has a `modes` line\n"
       "  -q, --quiet    print nothing on stdout (--json still prints the JSON)\n"
       "  -h, --help     print this help and exit\n"
       "\n"
+      "A `modes count=N [mass=consistent|lumped] [shift=HZ]` line in the model adds the N\n"
+      "natural modes about the solved state: a table in the summary, \"modal\" and \"modes\"\n"
+      "in the JSON (frequencies, periods, shapes, participation), modes.csv with -o.\n"
+      "\n"
       "exit codes: 0 converged, 1 usage, 2 bad model (the message names file:line),\n"
-      "            3 not converged (the last converged state is still written), 4 I/O or other error\n" },
+      "            3 not converged (the last converged state is still written) or the\n"
+      "            eigen-solver did not converge, 4 I/O or other error\n" },
     { "compare", ctn_cmd_compare, "MODEL [--json] [-o DIR] [-q]", "MODEL [--json] [-o DIR] [-q]", "FEA of a single span against the closed forms",
       "Solve a single-span model (a `cable` directive or a chain of elements between two\n"
       "fully fixed nodes) with its own solver options and compare the FEA with the closed\n"

@@ -9,6 +9,7 @@ int ctn_app_fail(ctn_ctx *ctx, int status)
     const char *msg = ctn_ctx_message(ctx);
     fprintf(stderr, "catena: %s\n", *msg ? msg : ctn_strerror(status));
     if (status == CTN_ERR_MODEL) return CTN_EXIT_MODEL;
+    if (status == CTN_ERR_NOCONV) return CTN_EXIT_NOCONV;     /* the eigen-solver */
     return CTN_EXIT_IO;
 }
 
@@ -36,6 +37,7 @@ int ctn_app_fail_model(ctn_ctx *ctx, int status, const char *path)
     if (!strncmp(msg, path, n) && msg[n] == ':') return ctn_app_fail(ctx, status);
     fprintf(stderr, "catena: %s: %s\n", path, *msg ? msg : ctn_strerror(status));
     if (status == CTN_ERR_MODEL) return CTN_EXIT_MODEL;
+    if (status == CTN_ERR_NOCONV) return CTN_EXIT_NOCONV;     /* the eigen-solver */
     return CTN_EXIT_IO;
 }
 

@@ -2,7 +2,8 @@
 # bench/hypar_net.py K [MATERIAL_FLAGS] [SNOW]: a K x K hyperbolic-paraboloid cable net on a
 # 100 m square, z = 10 (x^2 - y^2) / 50^2, boundary pinned, every strand prestressed to
 # 10 kN (its l0 computed for Green-Lagrange strain), snow SNOW kN (default 0.5) on every
-# free node, as a .cable model on stdout. Env E, A: the strands (default 1.6e8, 1.5e-4).
+# free node, as a .cable model on stdout. Env E, A: the strands (default 1.6e8, 1.5e-4);
+# MASS: their mass per length (t/m; default none), MODES: a `modes count=MODES` line.
 #   python3 bench/hypar_net.py 100 > net.cable            (tension-only strands)
 #   python3 bench/hypar_net.py 50 "" > net2.cable         (two-way strands)
 import sys, math
@@ -11,7 +12,10 @@ snow = float(sys.argv[3]) if len(sys.argv) > 3 else 0.5
 import os
 E, A, N0 = float(os.environ.get("E", "1.6e8")), float(os.environ.get("A", "1.5e-4")), 10.0
 EA = E * A
-out = ["units kN m", "material strand E=%g %s" % (E, mat), "section s material=strand A=%g" % A]
+mass = os.environ.get("MASS", "")
+out = ["units kN m", "material strand E=%g %s" % (E, mat),
+       "section s material=strand A=%g%s" % (A, " mass=" + mass if mass else "")]
+if os.environ.get("MODES"): out.append("modes count=%d" % int(os.environ["MODES"]))
 h = 100.0 / k
 def nid(i, j): return i * (k + 1) + j + 1
 pos = {}

@@ -16,9 +16,10 @@
  *   catena/io.h        reading .cable model files (docs/format.md) with their solve
  *                      options, writing the results as JSON and CSV, atomic file writes
  *   catena/solve.h     the analysis: options, the problem object (set up once, solved,
- *                      then asked for the stability of its solution), Newton-Raphson /
- *                      globalized Newton / arc-length, convergence reasons,
- *                      displacements, reactions, element forces, per-step results
+ *                      then asked for the stability of its solution and for its natural
+ *                      modes), Newton-Raphson / globalized Newton / arc-length,
+ *                      convergence reasons, displacements, reactions, element forces,
+ *                      per-step results, modes (frequencies, shapes, participation)
  *   catena/analytic.h  closed forms of a single cable: catenary, elastic catenary,
  *                      parabola, funicular polygon (reference solutions)
  *   catena/compare.h   a model's single span against those closed forms; the length
@@ -49,7 +50,9 @@
  * Context. Every call that can fail takes a ctn_ctx (or an object bound to one, such as
  * a model) and records the error there: ctn_ctx_code() and ctn_ctx_message(), which for
  * model input starts with "file:line: ". A context is not thread-safe: use one per
- * thread. The library never prints, never exits and keeps no global state.
+ * thread. The library never prints, never exits and keeps no global state of its own;
+ * the eigen-solver of modal analysis (ARPACK) keeps state between its calls, so run one
+ * modal analysis at a time in a process.
  *
  * Errors. Every function that can fail returns an int status: CTN_OK (0) or a
  * CTN_ERR_* code (catena/core.h; ctn_strerror() names it); results come back through
@@ -59,7 +62,9 @@
  * (or read from a file's `solve` line by ctn_read_file) and changed; NULL means the
  * defaults. ctn_problem_create() + ctn_problem_solve() do the same in two steps and keep
  * the problem (DOF map, pattern, factorization) for what follows a solve, such as
- * ctn_problem_stability(). Non-convergence is an outcome, not an error: ctn_solve() returns CTN_OK and
+ * ctn_problem_stability() and ctn_problem_modes() (natural frequencies and mode shapes
+ * about the solved state; a file's `modes` line sets opt.modal, and ctn_solve then runs
+ * it: read the modes with ctn_solution_mode_count() and ctn_solution_mode()). Non-convergence is an outcome, not an error: ctn_solve() returns CTN_OK and
  * a solution whose summary's reason says why it stopped (positive: converged,
  * negative: diverged, with the last converged state kept).
  *

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Install the Debian packages catena needs, only those that are missing.
 set -eu
-pkgs="gcc binutils make cmake pkg-config libsuitesparse-dev libcjson-dev gnuplot-nox clang libclang-rt-14-dev python3"
+pkgs="gcc binutils make cmake pkg-config libsuitesparse-dev libarpack2-dev liblapack-dev libcjson-dev gnuplot-nox clang libclang-rt-14-dev python3"
 missing=""
 for p in $pkgs; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

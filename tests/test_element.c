@@ -190,8 +190,8 @@ static void test_cable_laws(void)
     for (int k = 0; k < 4; k++) {
         double lam = 0.9 + 0.1 * k;                   /* 0.9 .. 1.2 */
         double u[6] = { 0, 0, 0, 3 * (lam - 1), 4 * (lam - 1), 0 }, f[6];
-        ctn_cable_props gl = { 1000, 5, 2.0, CTN_STRAIN_GREEN_LAGRANGE, 0, 5, 0 };
-        ctn_cable_props en = { 1000, 5, 2.0, CTN_STRAIN_ENGINEERING, 0, 5, 0 };
+        ctn_cable_props gl = { 1000, 5, 2.0, CTN_STRAIN_GREEN_LAGRANGE, 0, 5, 0, 0 };
+        ctn_cable_props en = { 1000, 5, 2.0, CTN_STRAIN_ENGINEERING, 0, 5, 0, 0 };
         ctn_elem_state s;
         ctn_cable2_ops.eval(&gl, CTN_EVAL_STRESS, X, u, f, NULL, &s);
         CHECK_CLOSE(s.l, 5 * lam, 1e-14, 0);
@@ -209,7 +209,7 @@ static void test_cable_laws(void)
 static void test_cable_tension_only(void)
 {
     double X[6] = { 0, 0, 0, 10, 0, 0 }, u[6] = { 0, 0, 0, -0.5, 0, 0 }, f[6], K[21];
-    ctn_cable_props p = { 1000, 10, 1.0, CTN_STRAIN_GREEN_LAGRANGE, 1, 10, 0 };
+    ctn_cable_props p = { 1000, 10, 1.0, CTN_STRAIN_GREEN_LAGRANGE, 1, 10, 0, 0 };
     ctn_elem_state s;
     ctn_cable2_ops.eval(&p, 0, X, u, f, K, &s);
     CHECK(s.slack == 1);

@@ -126,7 +126,12 @@ typedef struct ctn_section_spec {
     double w;             /* weight per unit unstressed length >= 0 [force/length] (default 0) */
     double mbl;           /* minimum breaking load > 0 [force] (default 0: not given) */
     double safety;        /* safety factor > 0 on mbl: capacity = mbl / safety (default 1) */
+    double mass;          /* mass per unit unstressed length >= 0 [force s^2/length^2, the
+                             consistent unit: t/m for kN and m, kg/m for N and m, t/mm for
+                             N and mm] (default CTN_MASS_DEFAULT: w / g, g = 9.80665 m/s^2
+                             in the model's length unit; see ctn_model_set_node_mass) */
 } ctn_section_spec;
+#define CTN_MASS_DEFAULT (-1.0)
 void ctn_section_spec_init(ctn_section_spec *s);
 int ctn_model_add_section_spec(ctn_model *m, const ctn_section_spec *s);
 
@@ -164,6 +169,14 @@ int ctn_model_add_section(ctn_model *m, const char *name, const char *material, 
                           double w);
 /* A node with id > 0 at reference coordinates X, fixed DOFs `fix` (CTN_FIX_*). */
 int ctn_model_add_node(ctn_model *m, int id, const double X[3], unsigned fix);
+/* A lumped point mass >= 0 at node id (an insulator, a clamp), in the model's consistent
+ * mass unit (force s^2/length: t for kN and m, kg for N and m, t for N and mm); it
+ * replaces an earlier one. Mass enters modal analysis only (ctn_problem_modes): the
+ * point's weight is a load (ctn_model_add_load). */
+int ctn_model_set_node_mass(ctn_model *m, int id, double mass);
+/* Standard gravity 9.80665 m/s^2 in the model's length unit per s^2 (9806.65 for mm), 0
+ * for a model without units: the divisor of the default mass w / g. */
+double ctn_model_standard_gravity(const ctn_model *m);
 /* A two-node cable element between existing nodes n1 != n2 (user ids), with unstressed
  * length l0 > 0 or CTN_L0_DEFAULT. */
 int ctn_model_add_element(ctn_model *m, int id, int n1, int n2, const char *section,

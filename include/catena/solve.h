@@ -58,6 +58,24 @@ typedef struct ctn_iterate {
 /* Called after every Newton iteration (the iteration log). */
 typedef void (*ctn_monitor_fn)(void *data, const ctn_iterate *it);
 
+/* The mass matrix of a modal analysis (docs/theory.md, "Modal analysis"). */
+typedef enum ctn_mass_matrix {
+    CTN_MASS_CONSISTENT = 0, /* the elements' consistent mass (linear interpolation of the
+                                motion along each element; the default: its frequencies
+                                converge from above at O(h^2) with a smaller constant) */
+    CTN_MASS_LUMPED = 1      /* half of each element's mass at each of its nodes */
+} ctn_mass_matrix;
+
+/* A modal analysis about a converged state: K_T phi = omega^2 M phi. */
+typedef struct ctn_modal_options {
+    int count;            /* the number of modes N >= 1, at most the free DOFs that carry
+                             mass (0: no modal analysis; the default) */
+    ctn_mass_matrix mass; /* default CTN_MASS_CONSISTENT */
+    double shift;         /* >= 0 [Hz]: the N modes whose frequencies are nearest it
+                             (default 0: the N lowest) */
+    int line;             /* the model file's `modes` line, named by its errors (0: none) */
+} ctn_modal_options;
+
 /* Solver options; ctn_solve_options_default() fills the defaults. */
 typedef struct ctn_solve_options {
     double tol;           /* residual test |r| <= tol * |f_ext| (default 1e-10) */
@@ -82,6 +100,9 @@ typedef struct ctn_solve_options {
     void *monitor_data;
     const char *linear_solver; /* NULL: the method's own ("cholmod", LL'; arc-length:
                                   "cholmod-ldl", LDL' for indefinite tangents) */
+    ctn_modal_options modal;   /* after a converged solve, ctn_problem_solve runs
+                                  ctn_problem_modes with these when modal.count > 0 (the
+                                  file's `modes` line) */
 } ctn_solve_options;
 
 /* Fill the defaults. Options belong to a solve, not to a model: a model file's `solve`
@@ -205,6 +226,86 @@ int ctn_problem_stability(ctn_problem *p, const ctn_solution *s, ctn_stability *
  * last Newton iteration's LL' factorization succeeded, else by ctn_problem_stability).
  * CTN_ERR_INVALID when not checked (the solve did not converge). */
 int ctn_solution_stability(const ctn_solution *s, ctn_stability *out);
+
+/* Modal analysis about the state of a converged solution's last step: the opt->count
+ * natural modes of K_T phi = omega^2 M phi nearest opt->shift (the lowest by default),
+ * K_T the tangent there (geometric stiffness included; slack members add none), M the
+ * mass (sections' mass per unstressed length, conserved under stretch; nodes' point
+ * masses). Sparse shift-invert Lanczos (ARPACK's implicitly restarted Lanczos, mode 3)
+ * whose solves are the problem's linear solver on K_T - sigma M, factored once.
+ * The modes are stored in s (replacing earlier ones) and read back with
+ * ctn_solution_mode; the writers add them to the results.
+ * Modes of zero frequency (a mechanism: a node held only by slack members; a part that
+ * can turn) are results, not errors: CTN_MODE_ZERO with the nodes that move.
+ * Errors: CTN_ERR_MODEL (message at opt->line of the model's file) when the count is
+ * out of range, the model has no mass, or a section's mass cannot be told (a weight and
+ * no units); CTN_ERR_INVALID for a solution that did not converge or is not of this
+ * problem's model; CTN_ERR_LINALG when the eigen-solver fails or does not converge (its message says why).
+ * ARPACK keeps state between its calls (Fortran SAVE variables, process-wide): do not
+ * run two modal analyses at once in two threads. */
+int ctn_problem_modes(ctn_problem *p, ctn_solution *s, const ctn_modal_options *opt);
+
+/* What a mode is. */
+typedef enum ctn_mode_kind {
+    CTN_MODE_VIBRATION = 0,   /* omega^2 > 0: a natural vibration */
+    CTN_MODE_ZERO = 1,        /* |omega^2| within the round-off of the tangent: a
+                                 mechanism or rigid-body motion (frequency 0) */
+    CTN_MODE_UNSTABLE = 2     /* omega^2 < 0: the equilibrium is unstable along it
+                                 (frequency 0; the growth rate is sqrt(-omega^2)) */
+} ctn_mode_kind;
+
+/* Name of a mode kind: "vibration", "zero", "unstable" (as the results spell it). */
+const char *ctn_mode_kind_name(ctn_mode_kind k);
+
+#define CTN_MODE_MAX_NODES 8  /* nodes a zero mode names */
+
+/* Mode k of a solution (k = 0 .. count - 1, by increasing omega^2). */
+typedef struct ctn_mode {
+    ctn_mode_kind kind;
+    double eigenvalue;        /* omega^2 [1/s^2] */
+    double angular_frequency; /* omega = sqrt(omega^2) [rad/s], 0 unless VIBRATION */
+    double frequency;         /* f = omega / (2 pi) [Hz] */
+    double period;            /* T = 1 / f [s]; 0 when f is 0 (no period) */
+    const double *shape;      /* phi, 3 per node in model node order (0 on fixed DOFs),
+                                 mass-normalized: phi^T M phi = 1 [1/sqrt(mass)]. Owned
+                                 by the solution */
+    double participation[3];  /* Gamma_j = phi^T M r_j, r_j the unit translation along
+                                 x, y, z of the free DOFs [sqrt(mass)] */
+    double effective_mass[3]; /* Gamma_j^2 [mass]; over all modes they sum to the total
+                                 moving mass (ctn_modal_summary.total_mass) */
+    int node;                 /* user id of the node that moves most */
+    int nnodes;               /* ZERO: how many nodes move (amplitude >= 1e-3 of the
+                                 largest), else 0 */
+    int nodes[CTN_MODE_MAX_NODES]; /* ZERO: the first min(nnodes, 8) of them, user ids,
+                                 largest amplitude first */
+} ctn_mode;
+
+/* The modal analysis of a solution, as a whole. */
+typedef struct ctn_modal_summary {
+    int count;                /* modes stored (0: none was run) */
+    ctn_mass_matrix mass;
+    double shift;             /* [Hz] as asked */
+    double sigma;             /* the shift of K_T - sigma M that was factored [1/s^2] */
+    double total_mass[3];     /* mass that moves with the free DOFs along x, y, z */
+    int zero_modes;           /* modes of kind ZERO */
+    int unstable_modes;       /* modes of kind UNSTABLE */
+    int lanczos_restarts;     /* ARPACK's implicit restarts */
+    int factorizations;       /* numeric factorizations (1, 2 when LL' failed and LDL'
+                                 took over) */
+    int solves;               /* shift-invert solves (right-hand sides) */
+    double max_residual;      /* max over the modes of |K phi - omega^2 M phi| / |K phi| */
+    double t_assemble;        /* wall seconds: tangent and mass values */
+    double t_factor;          /* wall seconds in the factorization(s) */
+    double t_solve;           /* wall seconds in the shift-invert solves */
+    double t_total;           /* wall seconds of the whole modal analysis */
+} ctn_modal_summary;
+
+/* Modes of a solution: the count (0 if no modal analysis was run) and mode k;
+ * CTN_ERR_INVALID for k out of range. */
+size_t ctn_solution_mode_count(const ctn_solution *s);
+int ctn_solution_mode(const ctn_solution *s, size_t k, ctn_mode *out);
+/* CTN_ERR_INVALID when no modal analysis was run on s. */
+int ctn_solution_modal_summary(const ctn_solution *s, ctn_modal_summary *out);
 
 /* Solve the model: ctn_problem_create + ctn_problem_solve + destroy. opt NULL: defaults. */
 int ctn_solve(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options *opt,

@@ -62,14 +62,18 @@ static inline __attribute__((always_inline)) int block_loop(const ctn_asm *a, co
     const unsigned char *props = a->props + b->props0;
     int two3 = b->nnodes == 2 && ops->ndof_node == 3;
     ctn_elem_state st;
-    ctn_asm_elem el = { 0, b, NULL, NULL, fe, with_K ? Ke : NULL, &st, NULL };
+    ctn_asm_elem el = { 0, b, NULL, NULL, d ? fe : NULL, d && with_K ? Ke : NULL, d ? &st : NULL, NULL };
     for (size_t i = 0; i < b->count; i++) {
         el.e = b->e0 + i;
         el.nodes = conn + i * (size_t)b->nnodes;
         el.slot = a->slot + b->slot0 + i * (size_t)b->nslots;
+        el.props = props + i * ops->props_size;
+        if (!d) {                                       /* properties only: no state */
+            visit(data, a, &el);
+            continue;
+        }
         if (two3) gather(a, el.nodes, 2, 3, d, X, u);
         else gather(a, el.nodes, b->nnodes, ops->ndof_node, d, X, u);
-        el.props = props + i * ops->props_size;
         if (ops->eval(el.props, mode, X, u, fe, with_K ? Ke : NULL, &st)) {
             if (bad) *bad = el.e;
             return 1;

@@ -59,7 +59,9 @@ typedef void (*ctn_asm_visit_fn)(void *data, const ctn_asm *a, const ctn_asm_ele
 
 /* The one element loop: evaluate every element at state d (mode CTN_EVAL_*), with the
  * tangent if with_K, and hand each to visit. Returns 0, or 1 when an element collapsed
- * (its index in *bad; the loop stops there): an outcome, not a status. */
+ * (its index in *bad; the loop stops there): an outcome, not a status. d NULL: no
+ * evaluation, the visitor gets each element's properties and slots (fe, Ke, st NULL),
+ * as the mass matrix needs them. */
 int ctn_asm_loop(const ctn_asm *a, const double *d, unsigned mode, int with_K,
                  ctn_asm_visit_fn visit, void *data, size_t *bad);
 
@@ -68,6 +70,14 @@ int ctn_asm_loop(const ctn_asm *a, const double *d, unsigned mode, int with_K,
  * element collapsed (index in *bad, may be NULL). */
 int ctn_asm_eval(const ctn_asm *a, const double *d, unsigned mode, double *f, double *Kx,
                  double *U, size_t *bad);
+
+/* The mass matrix's values (nnz, the tangent's pattern and order): the elements' mass
+ * ops, lumped or consistent, and the nodes' point masses on the diagonal (mass.c). */
+void ctn_asm_mass(const ctn_asm *a, int lumped, double *Mx);
+/* The diagonal of the lumped mass matrix (ndof) and in tot[3] the total mass that moves
+ * with the free DOFs in x, y, z; 1 with the index of an element whose mass the model
+ * cannot tell (NAN) in *bad. */
+int ctn_asm_mass_diag(const ctn_asm *a, double *diag, double tot[3], size_t *bad);
 
 /* Flexible members (CTN_ELEM_FLEXIBLE) whose own material takes compression and that are
  * compressed at d (0 if an element collapsed); only those with mask[e] != 0 unless mask is

@@ -45,4 +45,17 @@ static inline void ctn_axial_tangent(const double e[3], double l, double N, doub
         for (int j = i; j < 3; j++) K[t++] = k[i][j];          /* node 2 - node 2 */
 }
 
+/* Packed upper triangle of the mass matrix of a two-node member of mass ms (linear
+ * interpolation along it): consistent ms/6 [[2I, I], [I, 2I]], lumped ms/2 [[I, 0], [0, I]]. */
+static inline void ctn_axial_mass(double ms, int lumped, double *M)
+{
+    double d = lumped ? ms / 2 : ms / 3, o = lumped ? 0.0 : ms / 6;
+    for (int t = 0; t < 21; t++) M[t] = 0.0;
+    for (int i = 0; i < 3; i++) {
+        M[ctn_packed_index(6, i, i)] = d;                      /* node 1 - node 1 */
+        M[ctn_packed_index(6, 3 + i, 3 + i)] = d;              /* node 2 - node 2 */
+        M[ctn_packed_index(6, i, 3 + i)] = o;                  /* node 1 - node 2 */
+    }
+}
+
 #endif

@@ -73,6 +73,7 @@ static void cable_setup(const ctn_model *m, size_t e, void *props)
     p->tension_only = mat->tension_only;
     p->l0_ref = el->l0;
     p->alpha = mat->alpha;
+    p->mass = ctn_model_section_mass(m, el->section) * el->l0;   /* m' l0 */
 }
 
 static void cable_temperature(void *props, double dT)
@@ -95,6 +96,11 @@ static double cable_stiffness(const void *props)
 {
     const ctn_cable_props *p = props;
     return p->EA / p->l0;
+}
+
+static void cable_mass(const void *props, int lumped, double *M)
+{
+    ctn_axial_mass(((const ctn_cable_props *)props)->mass, lumped, M);
 }
 
 static double cable_rest_length(const void *props) { return ((const ctn_cable_props *)props)->l0; }
@@ -149,4 +155,5 @@ const ctn_element_ops ctn_cable2_ops = {
     .check = cable_check, .setup = cable_setup, .eval = cable_eval, .load = cable_load,
     .stiffness = cable_stiffness, .rest_length = cable_rest_length, .prestress_l0 = cable_prestress_l0,
     .temperature = cable_temperature,
+    .mass = cable_mass,
 };

@@ -75,6 +75,11 @@ typedef struct ctn_element_ops {
      * length becomes l0 (1 + alpha dT) (alpha of the element's material); weight and mass
      * stay those of l0. Families without it do not expand. */
     void (*temperature)(void *props, double dT);
+    /* Optional: the element's mass matrix, packed upper triangle like the tangent
+     * (ctn_packed_index, ndof_node per node), lumped (1) or consistent (0). Mass is per
+     * unstressed length and conserved under stretch, so the matrix does not depend on
+     * the state. NULL: the family is massless (springs). */
+    void (*mass)(const void *props, int lumped, double *M);
 } ctn_element_ops;
 
 /* Entries of the packed upper triangle of an n x n matrix. */
@@ -106,6 +111,8 @@ typedef struct ctn_cable_props {
     int tension_only;   /* 1: N = max(N, 0) */
     double l0_ref;      /* unstressed length at the reference temperature */
     double alpha;       /* thermal expansion [1/K] */
+    double mass;        /* m' l0: the element's mass [force s^2/length]; NAN when the
+                           model cannot tell it (no units, a weight and no mass=) */
 } ctn_cable_props;
 
 /* Properties of a two-node axial spring (spring2.c). */

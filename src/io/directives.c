@@ -76,11 +76,15 @@ static int d_section(ctn_line *l)
 {
     ctn_section_spec spec;
     ctn_section_spec_init(&spec);
-    int rc = ctn_parse_positional(l, 1, "section NAME material=MATERIAL A=AREA [w=WEIGHT] [mbl=FORCE] [safety=FACTOR]");
+    int rc = ctn_parse_positional(l, 1, "section NAME material=MATERIAL A=AREA [w=WEIGHT] [mass=MASS] [mbl=FORCE] [safety=FACTOR]");
     const char *mat = rc ? NULL : ctn_parse_key(l, 2, "material");
     if (!rc && !mat) return ctn_parse_error(l, "section: missing required key 'material='");
     if (!rc) rc = ctn_parse_key_num(l, 2, "A", 1, &spec.A);
     if (!rc) rc = ctn_parse_key_num(l, 2, "w", 0, &spec.w);
+    if (!rc && ctn_parse_key(l, 2, "mass")) {
+        rc = ctn_parse_key_num(l, 2, "mass", 1, &spec.mass);
+        if (!rc && !(spec.mass >= 0)) return ctn_parse_error(l, "section: mass must be >= 0 (found %g)", spec.mass);
+    }
     if (!rc) rc = ctn_parse_key_num(l, 2, "mbl", 0, &spec.mbl);
     if (!rc) rc = ctn_parse_key_num(l, 2, "safety", 0, &spec.safety);
     if (!rc && ctn_parse_key(l, 2, "mbl") && !(spec.mbl > 0))
@@ -110,12 +114,16 @@ static int d_node(ctn_line *l)
     int id = 0;
     double X[3];
     unsigned fix = 0;
-    int rc = ctn_parse_positional(l, 4, "node ID X Y Z [fix=xyz]");
+    double mass = 0;
+    int rc = ctn_parse_positional(l, 4, "node ID X Y Z [fix=xyz] [mass=MASS]");
     if (!rc) rc = ctn_parse_int(l, "the node id", l->tok[1], &id);
     for (int k = 0; k < 3 && !rc; k++) rc = ctn_parse_num(l, "a coordinate", l->tok[2 + k], &X[k]);
     if (!rc) rc = parse_fix(l, &fix);
+    if (!rc) rc = ctn_parse_key_num(l, 5, "mass", 0, &mass);
+    if (!rc && !(mass >= 0)) return ctn_parse_error(l, "node %d: mass must be >= 0 (found %g)", id, mass);
     if (!rc) rc = ctn_parse_leftovers(l, 5, "node");
-    return rc ? rc : ctn_model_add_node(l->m, id, X, fix);
+    if (!rc) rc = ctn_model_add_node(l->m, id, X, fix);
+    return rc || mass == 0 ? rc : ctn_model_set_node_mass(l->m, id, mass);
 }
 
 /* At most one of l0=, N0=, s0=, eps0= (from token `from`; without l0= when l0 is NULL):
@@ -353,6 +361,29 @@ static int d_solve(ctn_line *l)
     return CTN_OK;
 }
 
+static int d_modes(ctn_line *l)
+{
+    static const char *const masses[] = { "consistent", "lumped" };
+    ctn_modal_options o = l->opt->modal;
+    int mass = (int)CTN_MASS_CONSISTENT;
+    o.count = 0;
+    o.shift = 0;
+    int rc = ctn_parse_positional(l, 0, "modes count=N [mass=lumped|consistent] [shift=HZ]");
+    if (!rc && !ctn_parse_key(l, 1, "count")) return ctn_parse_error(l, "modes: missing required key 'count='");
+    if (!rc) rc = key_int(l, "count", 1, 0x7fffffff, &o.count);
+    if (!rc) rc = key_word(l, "mass", masses, 2, &mass);
+    if (!rc) rc = ctn_parse_key_num(l, 1, "shift", 0, &o.shift);
+    if (!rc) rc = ctn_parse_leftovers(l, 1, "modes");
+    if (rc) return rc;
+    o.mass = (ctn_mass_matrix)mass;
+    o.line = l->line;
+    char msg[256];
+    if (ctn_modal_options_fault(&o, msg, sizeof msg)) return ctn_parse_error(l, "%s", msg);
+    if (l->opt->modal.count > 0) return ctn_parse_error(l, "modes: given twice (first on line %d)", l->opt->modal.line);
+    l->opt->modal = o;
+    return CTN_OK;
+}
+
 static int d_step(ctn_line *l)
 {
     int sub = 0;
@@ -418,6 +449,7 @@ static const directive directives[] = {
     { "cable", d_cable },     { "load", d_load },       { "hload", d_hload },
     { "solve", d_solve },     { "step", d_step },       { "displace", d_displace },
     { "spring", d_spring },   { "group", d_group },     { "temperature", d_temperature },
+    { "modes", d_modes },
 };
 
 int ctn_parse_directive(ctn_line *l)

@@ -35,6 +35,7 @@ typedef struct ctn_writer_ops {
 extern const ctn_writer_ops ctn_writer_json;          /* result.json (docs/format.md) */
 extern const ctn_writer_ops ctn_writer_nodes_csv;     /* nodes.csv: the last step */
 extern const ctn_writer_ops ctn_writer_elements_csv;  /* elements.csv: the last step */
+extern const ctn_writer_ops ctn_writer_modes_csv;     /* modes.csv: the modal analysis */
 
 /* For begin: remember the model, open the buffered output over sink. */
 int ctn_writer_open(ctn_writer *w, const ctn_model *m, ctn_sink *sink);

@@ -57,6 +57,7 @@ void ctn_section_spec_init(ctn_section_spec *s)
     memset(s, 0, sizeof *s);
     s->size = sizeof *s;
     s->safety = 1;
+    s->mass = CTN_MASS_DEFAULT;
 }
 
 int ctn_model_add_material(ctn_model *m, const char *name, double E, ctn_strain strain,
@@ -136,6 +137,8 @@ int ctn_model_add_section_spec(ctn_model *m, const ctn_section_spec *spec)
         return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': mbl must be positive and finite (got %g)", name, s.mbl);
     if (!isfinite(s.safety) || s.safety <= 0)
         return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': safety must be positive and finite (got %g)", name, s.safety);
+    if (s.mass != CTN_MASS_DEFAULT && !(isfinite(s.mass) && s.mass >= 0))
+        return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': mass must be >= 0 and finite (got %g)", name, s.mass);
     if (!isfinite(m->materials.v[mat].E * A))
         return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': E A = %g * %g overflows", name, m->materials.v[mat].E, A);
     if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->sections, 1))) return rc;
@@ -147,5 +150,6 @@ int ctn_model_add_section_spec(ctn_model *m, const ctn_section_spec *spec)
     p->line = m->line;
     p->mbl = s.mbl;
     p->safety = s.safety;
+    p->mass = s.mass;
     return CTN_OK;
 }

@@ -14,6 +14,7 @@ typedef struct ctn_node {
     double guess[3]; /* starting displacement */
     unsigned fix;
     int line;        /* defining line in the source, 0 if from the API */
+    double mass;     /* lumped point mass [force s^2/length], 0 if none */
 } ctn_node;
 
 typedef struct ctn_material {
@@ -31,6 +32,7 @@ typedef struct ctn_section {
     int line;
     double mbl;      /* minimum breaking load [force], 0 if not given */
     double safety;   /* factor on mbl: capacity = mbl / safety */
+    double mass;     /* per unit unstressed length; CTN_MASS_DEFAULT: w / g */
 } ctn_section;
 
 typedef struct ctn_element {
@@ -174,6 +176,11 @@ int ctn_model_group_get(ctn_model *m, const char *name, int *index);
 int ctn_model_group_put(ctn_model *m, size_t e, int g);
 /* Temperature change of every element at the end of step k (0-based) into dT (ne). */
 void ctn_model_step_temperatures(const ctn_model *m, size_t k, double *dT);
+
+/* Mass per unit unstressed length of section i: its mass=, else w / g (g standard
+ * gravity in the model's units); NAN when the model has no units and the section a
+ * weight but no mass= (mass.c). */
+double ctn_model_section_mass(const ctn_model *m, int i);
 int ctn_model_find_material(const ctn_model *m, const char *name);
 
 #endif

@@ -29,6 +29,7 @@ int ctn_model_add_node(ctn_model *m, int id, const double X[3], unsigned fix)
     memset(p->guess, 0, sizeof p->guess);
     p->fix = fix;
     p->line = m->line;
+    p->mass = 0.0;
     if (id > m->max_node_id) m->max_node_id = id;
     return CTN_OK;
 }

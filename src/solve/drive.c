@@ -165,6 +165,7 @@ int ctn_problem_solve(ctn_problem *p, ctn_solution **out)
         if (!rc) rc = check_start(p, d);
         if (!rc) rc = p->strategy->run(p, s, d);
         if (!rc && s->sum.reason == CTN_CONVERGED) rc = check_stability(p, s);
+        if (!rc && s->sum.reason == CTN_CONVERGED && p->opt.modal.count > 0) rc = ctn_problem_modes(p, s, &p->opt.modal);
         if (!s->sum.fext_norm) s->sum.fext_norm = ctn_problem_fref(p);
         s->sum.ordering = p->ls ? ctn_linsolve_ordering(p->ls) : CTN_ORDER_NATURAL;
         s->sum.ndof = p->ndof;

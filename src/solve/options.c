@@ -21,6 +21,21 @@ void ctn_solve_options_default(ctn_solve_options *opt)
     opt->monitor = NULL;
     opt->monitor_data = NULL;
     opt->linear_solver = NULL;
+    opt->modal.count = 0;
+    opt->modal.mass = CTN_MASS_CONSISTENT;
+    opt->modal.shift = 0;
+    opt->modal.line = 0;
+}
+
+int ctn_modal_options_fault(const ctn_modal_options *o, char *msg, size_t size)
+{
+    if (o->count < 0)
+        return snprintf(msg, size, "modes: count must be >= 1 (got %d)", o->count), 1;
+    if (o->mass != CTN_MASS_CONSISTENT && o->mass != CTN_MASS_LUMPED)
+        return snprintf(msg, size, "modes: unknown mass matrix"), 1;
+    if (!(isfinite(o->shift) && o->shift >= 0))
+        return snprintf(msg, size, "modes: shift must be >= 0 and finite (got %g)", o->shift), 1;
+    return 0;
 }
 
 int ctn_solve_options_fault(const ctn_solve_options *opt, char *msg, size_t size)
@@ -45,7 +60,7 @@ int ctn_solve_options_fault(const ctn_solve_options *opt, char *msg, size_t size
         return snprintf(msg, size, "solve: lambda must be finite and non-zero"), 1;
     if (opt->linear_solver && !ctn_linsolve_find(opt->linear_solver))
         return snprintf(msg, size, "solve: unknown linear solver '%.40s' (expected cholmod or cholmod-ldl)", opt->linear_solver), 1;
-    return 0;
+    return ctn_modal_options_fault(&opt->modal, msg, size);
 }
 
 int ctn_solve_options_check(ctn_ctx *ctx, const ctn_solve_options *opt)

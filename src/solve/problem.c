@@ -1,6 +1,6 @@
 /* The problem: setup once per model, residual and potential at a load parameter t,
  * factorization with an optional shift, solves. */
-#include "solve/problem.h"
+#include "solve/modes.h"
 
 #include <math.h>
 #include <string.h>
@@ -84,6 +84,18 @@ static const ctn_cable *unresolved(const ctn_model *m)
     return NULL;
 }
 
+/* A modal analysis asked for in the options is checked before any solve: its count
+ * and the model's mass (errors at the `modes` line). */
+static int modal_precheck(ctn_problem *p)
+{
+    if (p->opt.modal.count < 1) return CTN_OK;
+    double tot[3], *diag = ctn_malloc(p->ctx, p->ndof ? p->ndof : 1, sizeof(double));
+    if (!diag) return CTN_ERR_NOMEM;
+    int rc = ctn_modal_check(p, &p->opt.modal, diag, tot);
+    ctn_free(diag);
+    return rc;
+}
+
 int ctn_problem_create(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options *opt,
                        ctn_problem **out)
 {
@@ -119,7 +131,7 @@ int ctn_problem_create_any(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_opt
     p->strategy = ctn_strategy_of(o.method);
     if (p->opt.steps < 1) p->opt.steps = 1;
     if (p->opt.maxcuts < 0) p->opt.maxcuts = p->strategy->maxcuts;
-    if ((rc = setup(p))) {
+    if ((rc = setup(p)) || (rc = modal_precheck(p))) {
         ctn_problem_destroy(&p);
         return rc;
     }

@@ -116,6 +116,7 @@ int ctn_preshape(ctn_problem *p, double *d, int *count);
 
 /* 1 with a message if an option is out of range, else 0 (options.c). */
 int ctn_solve_options_fault(const ctn_solve_options *opt, char *msg, size_t size);
+int ctn_modal_options_fault(const ctn_modal_options *opt, char *msg, size_t size);
 
 /* Follower loads (follow.c). create: NULL p->fl when the model has none. step: the q of
  * model step k becomes the target (the previous one the start); reset: before the first
@@ -132,6 +133,13 @@ const double *ctn_follow_loads(const ctn_follow *f);
 int ctn_follow_solve(ctn_problem *p, const double *b, double *x);
 /* y = (K + shift I - L) x: the operator GMRES solves with. */
 int ctn_follow_apply(ctn_problem *p, const double *x, double *y);
+
+/* The tangent's values (p->Kx, mode 0: the materials' own laws) and p->fint at the state
+ * d (state layout) of the solution's last step; CTN_ERR_INVALID, naming who, for a
+ * solution of another model or a collapsed element (stability.c). */
+int ctn_problem_tangent_at(ctn_problem *p, const ctn_solution *s, double *d, const char *who);
+/* y = A x (ndof), A symmetric with values Ax in the pattern's order (upper triangle). */
+void ctn_problem_symv(const ctn_problem *p, const double *Ax, const double *x, double *y);
 
 /* Small vector helpers (vec.c). */
 double ctn_vec_norm(const double *v, size_t n);

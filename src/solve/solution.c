@@ -58,6 +58,7 @@ void ctn_solution_destroy(ctn_solution **s)
         ctn_free((*s)->steps[k].react);
         ctn_free((*s)->steps[k].elem);
     }
+    ctn_modes_destroy(&(*s)->modes);
     ctn_free((*s)->steps);
     ctn_free((*s)->rhist);
     ctn_free((*s)->dhist);

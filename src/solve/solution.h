@@ -15,6 +15,13 @@ typedef struct ctn_step_state {
     ctn_element_state *elem;   /* ne */
 } ctn_step_state;
 
+/* The modes of a modal analysis (modes_result.c). */
+typedef struct ctn_modes {
+    ctn_modal_summary sum;
+    ctn_mode *mode;            /* sum.count, by increasing omega^2 */
+    double *shapes;            /* 3 nn per mode; mode[k].shape points into it */
+} ctn_modes;
+
 struct ctn_solution {
     ctn_ctx *ctx;
     ctn_solve_summary sum;
@@ -24,6 +31,7 @@ struct ctn_solution {
     ctn_stability stability;   /* of the last step's state, when checked */
     double *rhist, *dhist;     /* residual and increment norms */
     size_t nr, nd, capr, capd;
+    ctn_modes *modes;          /* the last modal analysis, NULL if none */
 };
 
 int ctn_solution_create(ctn_ctx *ctx, size_t nn, size_t ne, ctn_solution **out);
@@ -33,5 +41,8 @@ int ctn_solution_add_step(ctn_solution *s, const char *name, size_t *k);
 void ctn_solution_drop_step(ctn_solution *s);
 int ctn_solution_push_residual(ctn_solution *s, double r);
 int ctn_solution_push_increment(ctn_solution *s, double d);
+/* A zeroed set of count modes for nn nodes (shape pointers set); NULL when out of memory. */
+ctn_modes *ctn_modes_create(ctn_ctx *ctx, size_t count, size_t nn);
+void ctn_modes_destroy(ctn_modes **m);
 
 #endif

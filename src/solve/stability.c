@@ -8,14 +8,13 @@
 #include <math.h>
 #include <string.h>
 
-/* The tangent's values at the state of the solution's last step. */
-static int tangent_at(ctn_problem *p, const ctn_solution *s, double *d)
+int ctn_problem_tangent_at(ctn_problem *p, const ctn_solution *s, double *d, const char *who)
 {
     const double *d3 = ctn_solution_displacements(s);
-    if (!d3 || s->nn != p->m->nodes.n) return ctn_error(p->ctx, CTN_ERR_INVALID, "ctn_problem_stability: the solution is not of this problem's model");
+    if (!d3 || s->nn != p->m->nodes.n) return ctn_error(p->ctx, CTN_ERR_INVALID, "%s: the solution is not of this problem's model", who);
     ctn_dofmap_from3(&p->a->map, d3, d);
     if (ctn_asm_eval(p->a, d, 0, p->fint, p->Kx, NULL, NULL))
-        return ctn_error(p->ctx, CTN_ERR_INVALID, "ctn_problem_stability: an element has zero length in that state");
+        return ctn_error(p->ctx, CTN_ERR_INVALID, "%s: an element has zero length in that state", who);
     return CTN_OK;
 }
 
@@ -24,19 +23,6 @@ static void locate(const ctn_problem *p, long col, ctn_stability *out)
     if (col < 0) return;
     out->node = p->m->nodes.v[p->a->map.dof_node[col]].id;
     out->dir = p->a->map.dof_dir[col];
-}
-
-/* y = K x with K's upper triangle (pattern order). */
-static void matvec(const ctn_problem *p, const double *x, double *y)
-{
-    const int *cp = p->a->colptr, *ri = p->a->rowind;
-    memset(y, 0, p->ndof * sizeof(double));
-    for (size_t c = 0; c < p->ndof; c++)
-        for (int k = cp[c]; k < cp[c + 1]; k++) {
-            size_t r = (size_t)ri[k];
-            y[r] += p->Kx[k] * x[c];
-            if (r != c) y[c] += p->Kx[k] * x[r];
-        }
 }
 
 /* The weakest mode: inverse iteration x <- K^-1 x (LDL' factor) converges to the
@@ -54,7 +40,7 @@ static int weakest_mode(ctn_problem *p, ctn_linsolve *ldl, ctn_stability *out)
         if (!(n > 0) || !isfinite(n)) return CTN_OK;
         for (size_t i = 0; i < p->ndof; i++) x[i] /= n;
     }
-    matvec(p, x, y);
+    ctn_problem_symv(p, p->Kx, x, y);
     if (!(ctn_vec_dot(x, y, p->ndof) < 0)) return CTN_OK;
     size_t imax = 0;
     for (size_t i = 1; i < p->ndof; i++)
@@ -99,7 +85,7 @@ int ctn_problem_stability(ctn_problem *p, const ctn_solution *s, ctn_stability *
     double *d = ctn_calloc(p->ctx, p->ns, sizeof(double));
     if (!d) return CTN_ERR_NOMEM;
     p->sum = &scratch;
-    int ok = 0, rc = tangent_at(p, s, d);
+    int ok = 0, rc = ctn_problem_tangent_at(p, s, d, "ctn_problem_stability");
     long col = -1;
     if (!rc) rc = ctn_problem_factor(p, 0.0, &ok, &col);
     int definite_only = !ctn_linsolve_type(p->ls)->indefinite;   /* LL': ok = definite */

@@ -397,6 +397,7 @@ int ctn_model_resolve_targets(ctn_ctx *ctx, ctn_model *m, const ctn_solve_option
     if (o.method == CTN_METHOD_ARCLENGTH) o.method = CTN_METHOD_AUTO;   /* the lengths are found under the full loads */
     o.tol = fmin(o.tol, 1e-12);
     o.monitor = NULL;
+    o.modal.count = 0;                      /* the modes come with the final solve */
     targets tg;
     memset(&tg, 0, sizeof tg);
     tg.ctx = ctx;

@@ -2,6 +2,7 @@
 #include "solve/problem.h"
 
 #include <math.h>
+#include <string.h>
 #include <time.h>
 
 double ctn_clock(void)
@@ -19,3 +20,15 @@ double ctn_vec_dot(const double *a, const double *b, size_t n)
 }
 
 double ctn_vec_norm(const double *v, size_t n) { return sqrt(ctn_vec_dot(v, v, n)); }
+
+void ctn_problem_symv(const ctn_problem *p, const double *Ax, const double *x, double *y)
+{
+    const int *cp = p->a->colptr, *ri = p->a->rowind;
+    memset(y, 0, p->ndof * sizeof(double));
+    for (size_t c = 0; c < p->ndof; c++)
+        for (int k = cp[c]; k < cp[c + 1]; k++) {
+            size_t r = (size_t)ri[k];
+            y[r] += Ax[k] * x[c];                        /* upper triangle and its mirror */
+            if (r != c) y[c] += Ax[k] * x[r];
+        }
+}

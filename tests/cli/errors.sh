@@ -117,7 +117,7 @@ check_outdir() {
         WHY+=("-o: expected exit $code, got $(describe "$rc"); stderr: $(head -c 300 "$T/err")")
     if [ -d "$dir" ]; then
         local stray
-        stray=$(find "$dir" -mindepth 1 ! -name result.json ! -name nodes.csv ! -name elements.csv | head -3)
+        stray=$(find "$dir" -mindepth 1 ! -name result.json ! -name nodes.csv ! -name elements.csv ! -name modes.csv | head -3)
         [ -z "$stray" ] && stray=$(find "$dir" -mindepth 1 -name '*tmp*' | head -3)
         [ -n "$stray" ] && WHY+=("-o: stray (temporary or partial) files: $stray")
     fi

@@ -1,0 +1,199 @@
+/* Modal analysis about a converged state: K_T phi = omega^2 M phi by shift-invert
+ * Lanczos (linalg/eigen.h), the shifted matrix K_T - sigma M factored once by the
+ * problem's linear solver on the problem's pattern (LDL' on the same pattern when LL'
+ * fails: an interior shift, or an unstable state). docs/theory.md, "Modal analysis". */
+#include "linalg/eigen.h"
+#include "solve/modes.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* A model error at the `modes` line (or without a place, from the API). */
+static int modal_error(const ctn_problem *p, const ctn_modal_options *o, const char *msg)
+{
+    if (o->line > 0) return ctn_error_at(p->ctx, CTN_ERR_MODEL, p->m->file, o->line, "%s", msg);
+    return ctn_error(p->ctx, CTN_ERR_MODEL, "%s", msg);
+}
+
+int ctn_modal_check(ctn_problem *p, const ctn_modal_options *o, double *diag, double tot[3])
+{
+    char msg[256];
+    size_t bad, nmass = 0;
+    if ((size_t)o->count > p->ndof) {
+        snprintf(msg, sizeof msg, "modes: count=%d is more than the %zu free DOFs", o->count, p->ndof);
+        return modal_error(p, o, msg);
+    }
+    if (ctn_asm_mass_diag(p->a, diag, tot, &bad)) {
+        const ctn_model *m = p->m;
+        const ctn_section *sec = &m->sections.v[m->elements.v[bad].section];
+        return ctn_error_at(p->ctx, CTN_ERR_MODEL, m->file, sec->line, "section '%s': its weight w=%g gives no mass "
+                            "in a model without units: give mass= (or units)", sec->name, sec->w);
+    }
+    for (size_t q = 0; q < p->ndof; q++) nmass += diag[q] > 0;
+    if (nmass == 0) return modal_error(p, o, "modes: the model has no mass (give a section mass= or w= with units, or a node mass=)");
+    if ((size_t)o->count > nmass) {
+        snprintf(msg, sizeof msg, "modes: count=%d is more than the %zu free DOFs that carry mass", o->count, nmass);
+        return modal_error(p, o, msg);
+    }
+    return CTN_OK;
+}
+
+/* Largest K_qq / M_qq over the DOFs with mass: the scale of omega^2. */
+static double lambda_scale(const ctn_problem *p, const double *diag)
+{
+    double s = 0;
+    for (size_t q = 0; q < p->ndof; q++)
+        if (diag[q] > 0) s = fmax(s, fabs(p->Kx[p->a->colptr[q + 1] - 1]) / diag[q]);
+    return s;
+}
+
+/* Factor K - sigma M (values into md->Ax): the problem's solver, else LDL'. */
+static int factor_shifted(ctn_modal *md)
+{
+    ctn_problem *p = md->p;
+    ctn_factor_info info = { 0, -1 };
+    double t0 = ctn_clock();
+    for (size_t k = 0; k < p->a->nnz; k++) md->Ax[k] = p->Kx[k] - md->sigma * md->Mx[k];
+    int rc = ctn_linsolve_factor(p->ls, md->Ax, 0.0, &info);
+    md->sum.factorizations++;
+    md->ls = p->ls;
+    if (!rc && !info.ok) {
+        ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
+        rc = ctn_linsolve_create(p->ctx, "cholmod-ldl", &pat, p->opt.ordering, &md->ldl);
+        if (!rc) rc = ctn_linsolve_factor(md->ldl, md->Ax, 0.0, &info);
+        md->sum.factorizations++;
+        md->ls = md->ldl;
+        if (!rc && !info.ok)
+            rc = ctn_error(p->ctx, CTN_ERR_LINALG, "modes: K - sigma M is singular at sigma = %g 1/s^2 (a frequency "
+                           "equals the shift): choose another shift=", md->sigma);
+    }
+    md->sum.t_factor += ctn_clock() - t0;
+    return rc;
+}
+
+static int op_solve(void *ud, const double *b, double *y)
+{
+    ctn_modal *md = ud;
+    double t0 = ctn_clock();
+    int rc = ctn_linsolve_solve(md->ls, b, y);
+    md->sum.t_solve += ctn_clock() - t0;
+    md->sum.solves++;
+    return rc;
+}
+
+static void op_mass(void *ud, const double *x, double *y)
+{
+    ctn_modal *md = ud;
+    ctn_problem_symv(md->p, md->Mx, x, y);
+}
+
+/* The last mode when every free DOF is asked for (ARPACK finds at most n - 1): the
+ * M-orthogonal complement of the others (M is then definite), its Rayleigh quotient. */
+static void complement(ctn_modal *md, double *V, int have, double *lambda)
+{
+    size_t n = md->p->ndof;
+    double *x = V + n * (size_t)have, *Mx = md->w1;
+    for (size_t i = 0; i < n; i++) x[i] = 1.0 + 0.1 * (double)(i % 13);
+    for (int pass = 0; pass < 2; pass++)                /* twice is enough (Kahan) */
+        for (int k = 0; k < have; k++) {
+            const double *v = V + n * (size_t)k;
+            op_mass(md, x, Mx);
+            double c = ctn_vec_dot(v, Mx, n);
+            for (size_t i = 0; i < n; i++) x[i] -= c * v[i];
+        }
+    op_mass(md, x, Mx);
+    double nrm = sqrt(ctn_vec_dot(x, Mx, n));
+    for (size_t i = 0; i < n; i++) x[i] /= nrm;
+    ctn_problem_symv(md->p, md->p->Kx, x, Mx);
+    lambda[have] = ctn_vec_dot(x, Mx, n);
+}
+
+/* The eigenpairs: V (n x ncv, the first count columns the modes), lambda ascending. */
+static int eigenpairs(ctn_modal *md, double *lambda, double **V)
+{
+    ctn_problem *p = md->p;
+    int n = (int)p->ndof, count = md->opt->count, nev = count < n ? count : n - 1;
+    ctn_eigen_ops ops = { md, op_solve, op_mass, md->w0 };
+    ctn_eigen_info info = { 0, 0, 0 };
+    int rc = CTN_OK;
+    if (nev > 0) rc = ctn_eigen_shift_invert(p->ctx, n, nev, md->sigma, &ops, lambda, V, &info);
+    else *V = ctn_malloc(p->ctx, (size_t)n, sizeof(double));
+    md->sum.lanczos_restarts = info.restarts;
+    if (!rc && !*V) rc = CTN_ERR_NOMEM;
+    if (!rc && nev < count) complement(md, *V, nev, lambda);
+    return rc;
+}
+
+static void modal_free(ctn_modal *md)
+{
+    double *v[] = { md->Mx, md->Ax, md->d, md->diag, md->w0, md->w1, md->lambda };
+    for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
+    ctn_linsolve_destroy(&md->ldl);
+}
+
+static int modal_alloc(ctn_modal *md)
+{
+    ctn_problem *p = md->p;
+    size_t nz = p->a->nnz ? p->a->nnz : 1, n = p->ndof ? p->ndof : 1;
+    md->Mx = ctn_malloc(p->ctx, nz, sizeof(double));
+    md->Ax = ctn_malloc(p->ctx, nz, sizeof(double));
+    md->d = ctn_calloc(p->ctx, p->ns, sizeof(double));
+    md->diag = ctn_malloc(p->ctx, n, sizeof(double));
+    md->w0 = ctn_malloc(p->ctx, n, sizeof(double));
+    md->w1 = ctn_malloc(p->ctx, n, sizeof(double));
+    md->lambda = ctn_malloc(p->ctx, (size_t)md->opt->count, sizeof(double));
+    return md->Mx && md->Ax && md->d && md->diag && md->w0 && md->w1 && md->lambda ? CTN_OK : CTN_ERR_NOMEM;
+}
+
+/* Tangent and mass at the solution, the scales, the shift. */
+static int prepare(ctn_modal *md, const ctn_solution *s)
+{
+    ctn_problem *p = md->p;
+    double t0 = ctn_clock();
+    int rc = ctn_modal_check(p, md->opt, md->diag, md->sum.total_mass);
+    if (!rc) rc = ctn_problem_tangent_at(p, s, md->d, "ctn_problem_modes");
+    if (rc) return rc;
+    ctn_asm_mass(p->a, md->opt->mass == CTN_MASS_LUMPED, md->Mx);
+    double ls = lambda_scale(p, md->diag), w = CTN_TWO_PI * md->opt->shift;
+    md->sigma = md->opt->shift > 0 ? w * w : -(ls > 0 ? 1e-9 * ls : 1.0);   /* below every
+                                                   omega^2 >= 0: K - sigma M definite */
+    md->ztol = ls > 0 ? 1e-12 * ls : 1e-3 * fabs(md->sigma);
+    md->sum.t_assemble = ctn_clock() - t0;
+    return CTN_OK;
+}
+
+int ctn_problem_modes(ctn_problem *p, ctn_solution *s, const ctn_modal_options *opt)
+{
+    if (!p || !s || !opt) return p ? ctn_error(p->ctx, CTN_ERR_INVALID, "ctn_problem_modes: bad arguments") : CTN_ERR_INVALID;
+    char msg[256];
+    if (ctn_modal_options_fault(opt, msg, sizeof msg) || opt->count < 1)
+        return ctn_error(p->ctx, CTN_ERR_INVALID, "ctn_problem_modes: %s", opt->count < 1 ? "count must be >= 1" : msg);
+    if (s->sum.reason != CTN_CONVERGED || !s->nsteps)
+        return ctn_error(p->ctx, CTN_ERR_INVALID, "ctn_problem_modes: the solution did not converge");
+    double t0 = ctn_clock(), *V = NULL;
+    ctn_modal md;
+    memset(&md, 0, sizeof md);
+    md.p = p;
+    md.opt = opt;
+    md.sum.mass = opt->mass;
+    md.sum.shift = opt->shift;
+    ctn_modes *res = NULL;
+    int rc = modal_alloc(&md);
+    if (!rc) rc = prepare(&md, s);
+    if (!rc) rc = factor_shifted(&md);
+    if (!rc) rc = eigenpairs(&md, md.lambda, &V);
+    if (!rc && !(res = ctn_modes_create(p->ctx, (size_t)opt->count, p->m->nodes.n))) rc = CTN_ERR_NOMEM;
+    if (!rc) {
+        md.sum.sigma = md.sigma;
+        md.sum.count = opt->count;
+        ctn_modes_fill(&md, V, res);
+        md.sum.t_total = ctn_clock() - t0;
+        res->sum = md.sum;
+        ctn_modes_destroy(&s->modes);
+        s->modes = res;
+    }
+    ctn_free(V);
+    modal_free(&md);
+    return rc;
+}

@@ -1,0 +1,31 @@
+/* Internal: the modal analysis's working state, shared by modes.c (the solve) and
+ * modes_post.c (what is stored of each mode). */
+#ifndef CTN_SOLVE_MODES_H
+#define CTN_SOLVE_MODES_H
+
+#include "solve/problem.h"
+
+#define CTN_TWO_PI 6.28318530717958647692
+
+typedef struct ctn_modal {
+    ctn_problem *p;
+    const ctn_modal_options *opt;
+    double *Mx, *Ax;          /* nnz: mass and K - sigma M values, pattern order */
+    double *d;                /* state: the solution's displacements */
+    double *diag;             /* ndof: the lumped mass diagonal */
+    double *w0, *w1;          /* ndof scratch */
+    double *lambda;           /* count: omega^2, ascending */
+    ctn_linsolve *ldl;        /* LDL' on the pattern when LL' of K - sigma M failed */
+    ctn_linsolve *ls;         /* the factorization in use */
+    double sigma;             /* the shift [1/s^2] */
+    double ztol;              /* |omega^2| below it: a zero mode */
+    ctn_modal_summary sum;
+} ctn_modal;
+
+/* Count and mass checks of a modal analysis (before a solve, too): the lumped diagonal
+ * into diag (ndof) and the moving mass into tot; CTN_ERR_MODEL at the `modes` line. */
+int ctn_modal_check(ctn_problem *p, const ctn_modal_options *o, double *diag, double tot[3]);
+/* Store the modes (the first count columns of V, n each) in res (modes_post.c). */
+void ctn_modes_fill(ctn_modal *md, double *V, ctn_modes *res);
+
+#endif
