@@ -71,6 +71,9 @@ typedef struct ctn_element_ops {
     /* Optional: the unstressed length l0 that gives element e (its section or k set) the
      * prestress `kind` of value v at length l; a model error (ctn_model_error) if none. */
     int (*prestress_l0)(const ctn_model *m, const ctn_element *e, int kind, double v, double l, double *l0);
+    /* Optional: a temperature change dT from the reference state: the unstressed length
+     * becomes l0_ref (1 + alpha dT); weight (and mass) stay those of l0_ref. */
+    void (*temperature)(void *props, double dT);
 } ctn_element_ops;
 
 /* Entries of the packed upper triangle of an n x n matrix. */
@@ -92,6 +95,8 @@ int ctn_element_family_find(const char *name);
 /* The families (one file each). */
 extern const ctn_element_ops ctn_cable2_ops;
 extern const ctn_element_ops ctn_spring2_ops;
+extern const ctn_element_ops ctn_catenary2_ops;   /* catenary2.c, props in catenary.h */
+extern const ctn_element_ops ctn_pulley_ops;      /* pulley.c */
 
 /* Properties of a two-node cable (truss) element (cable2.c). */
 typedef struct ctn_cable_props {
@@ -107,5 +112,15 @@ typedef struct ctn_spring_props {
     double k;           /* stiffness [force/length] */
     double l0;          /* free length [length] */
 } ctn_spring_props;
+
+/* Properties of a cable running over frictionless pulleys (pulley.c): the cable law of
+ * the whole length over its nnodes - 1 straight segments, tension-only. */
+typedef struct ctn_pulley_props {
+    ctn_cable_props cable;  /* EA, l0 (the whole unstressed length), A, strain law */
+    int nnodes;             /* nodes: the two ends and the pulleys between them */
+    int pad;
+    double l0_ref;          /* l0 at the reference temperature */
+    double alpha;           /* thermal expansion coefficient [1/K] */
+} ctn_pulley_props;
 
 #endif

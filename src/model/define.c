@@ -105,6 +105,7 @@ int ctn_model_add_material_spec(ctn_model *m, const ctn_material_spec *spec)
     p->E = E;
     p->strain = strain;
     p->tension_only = tension_only != 0;
+    p->alpha = 0;
     return CTN_OK;
 }
 
