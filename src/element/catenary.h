@@ -39,6 +39,8 @@ double ctn_ecat_energy(const ctn_ecat *c);
 /* Point at unstressed coordinate s in [0, L] relative to node 1: horizontal (along the
  * horizontal chord) and upward components. */
 void ctn_ecat_point(const ctn_ecat *c, double s, double *x, double *z);
+/* Stretched length L + (1 / EA) int T ds. */
+double ctn_ecat_length(const ctn_ecat *c);
 /* Sag: the distance along gravity from the chord's mid-point down to the cable at
  * mid-span (horizontal coordinate l / 2); 0 for a vertical chord (H = 0). */
 double ctn_ecat_sag(const ctn_ecat *c);

@@ -156,7 +156,7 @@ static void catenary_temperature(void *props, double dT)
 
 const ctn_element_ops ctn_catenary2_ops = {
     .name = "catenary", .nnodes = 2, .ndof_node = 3, .props_size = sizeof(ctn_catenary_props),
-    .flags = CTN_ELEM_SECTION,
+    .flags = CTN_ELEM_SECTION | CTN_ELEM_TENSION_ONLY,
     .check = catenary_check, .setup = catenary_setup, .eval = catenary_eval, .load = catenary_load,
     .stiffness = catenary_stiffness, .rest_length = catenary_rest_length,
     .temperature = catenary_temperature,

@@ -108,3 +108,10 @@ void ctn_ecat_point(const ctn_ecat *c, double s, double *x, double *z)
     *x = c->H > 0 ? c->H * s / c->EA + c->H * s * m[1] : 0;
     *z = -s * (c->Va + Vs) * (0.5 / c->EA + 1 / (hypot(c->H, c->Va) + hypot(c->H, Vs)));
 }
+
+double ctn_ecat_length(const ctn_ecat *c)
+{
+    double m[4];
+    means(c->H, c->Va, c->Vb, c->W, m);
+    return c->L + c->L * m[0] / c->EA;                /* L + (1/EA) int T ds */
+}

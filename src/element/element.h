@@ -37,7 +37,8 @@ enum {
 enum {
     CTN_ELEM_FLEXIBLE = 1,  /* a cable: hangs when slack; may be pre-shaped on an arc and
                                relaxed with compression cut off by the solver */
-    CTN_ELEM_SECTION = 2    /* takes a section (section=): required; others refuse one */
+    CTN_ELEM_SECTION = 2,   /* takes a section (section=): required; others refuse one */
+    CTN_ELEM_TENSION_ONLY = 4  /* never compressed, whatever the material (catenary, pulley) */
 };
 
 /* eval(props, mode, X, u, f, K, st): X = reference coordinates of the element's nodes

@@ -127,7 +127,7 @@ static void pulley_temperature(void *props, double dT)
 
 const ctn_element_ops ctn_pulley_ops = {
     .name = "pulley", .nnodes = 0, .ndof_node = 3, .props_size = sizeof(ctn_pulley_props),
-    .flags = CTN_ELEM_SECTION,
+    .flags = CTN_ELEM_SECTION | CTN_ELEM_TENSION_ONLY,
     .check = pulley_check, .setup = pulley_setup, .eval = pulley_eval, .load = pulley_load,
     .stiffness = pulley_stiffness, .prestress_l0 = pulley_prestress_l0, .temperature = pulley_temperature,
 };
