@@ -61,7 +61,8 @@ static void means(double H, double a, double b, double w, double m[4])
 {
     double Ta = hypot(H, a), Tb = hypot(H, b);
     if (a >= 0 && b >= 0) {                            /* V = 0 inside: values add */
-        double Ga = 0.5 * (a * Ta + H * H * asinh_ratio(a, H)), Gb = 0.5 * (b * Tb + H * H * asinh_ratio(b, H));
+        double Ga = 0.5 * (a * Ta + (H > 0 ? H * H * asinh_ratio(a, H) : 0));
+        double Gb = 0.5 * (b * Tb + (H > 0 ? H * H * asinh_ratio(b, H) : 0));
         m[0] = (Ga + Gb) / w;
         m[1] = H > 0 ? (asinh_ratio(a, H) + asinh_ratio(b, H)) / w : INFINITY;
         m[3] = ((Ta > 0 ? a / Ta : 0) + (Tb > 0 ? b / Tb : 0)) / w;
