@@ -63,4 +63,8 @@ typedef struct ctn_catenary_props {
 int ctn_catenary_state(const ctn_catenary_props *p, const double *X, const double *u,
                        ctn_ecat *c, double ex[3], int *bar);
 
+/* prestress_l0 of the catenary family (catenary_prestress.c): N0 is its largest end
+ * tension in the reference chord. */
+int ctn_catenary_prestress_l0(const ctn_model *m, const ctn_element *e, int kind, double v, double l, double *l0);
+
 #endif

@@ -159,5 +159,5 @@ const ctn_element_ops ctn_catenary2_ops = {
     .flags = CTN_ELEM_SECTION | CTN_ELEM_TENSION_ONLY,
     .check = catenary_check, .setup = catenary_setup, .eval = catenary_eval, .load = catenary_load,
     .stiffness = catenary_stiffness, .rest_length = catenary_rest_length,
-    .temperature = catenary_temperature,
+    .temperature = catenary_temperature, .prestress_l0 = ctn_catenary_prestress_l0,
 };
