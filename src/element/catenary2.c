@@ -128,23 +128,15 @@ static void catenary_setup(const ctn_model *m, size_t e, void *props)
     for (int i = 0; i < 3; i++) p->up[i] = p->W > 0 ? -m->gravity[i] / g : 0;
 }
 
-/* The weight W/2 at each node (the element's own forces carry the rest of it). */
-static void catenary_load(const ctn_model *m, size_t e, double *f)
-{
-    const ctn_element *el = &m->elements.v[e];
-    const int *nd = ctn_elem_nodes(m, e);
-    double W = 0.5 * m->sections.v[el->section].w * el->l0;
-    for (int a = 0; a < 2; a++)
-        for (int k = 0; k < 3; k++) f[3 * (size_t)nd[a] + (size_t)k] += W * m->gravity[k];
-}
+/* The weight W/2 at each node, as a cable element's (the element's own forces carry the
+ * rest of it). */
+static void catenary_load(const ctn_model *m, size_t e, double *f) { ctn_cable2_ops.load(m, e, f); }
 
 static double catenary_stiffness(const void *props)
 {
     const ctn_catenary_props *p = props;
     return p->EA / p->l0;
 }
-
-static double catenary_rest_length(const void *props) { return ((const ctn_catenary_props *)props)->l0; }
 
 /* A temperature change dT from the reference: L = L_ref (1 + alpha dT), the weight
  * stays that of L_ref (its weight per unstressed length scales by 1 / (1 + alpha dT)). */
@@ -158,6 +150,6 @@ const ctn_element_ops ctn_catenary2_ops = {
     .name = "catenary", .nnodes = 2, .ndof_node = 3, .props_size = sizeof(ctn_catenary_props),
     .flags = CTN_ELEM_SECTION | CTN_ELEM_TENSION_ONLY,
     .check = catenary_check, .setup = catenary_setup, .eval = catenary_eval, .load = catenary_load,
-    .stiffness = catenary_stiffness, .rest_length = catenary_rest_length,
+    .stiffness = catenary_stiffness,
     .temperature = catenary_temperature, .prestress_l0 = ctn_catenary_prestress_l0,
 };
