@@ -8,6 +8,7 @@
 #include "analytic/an.h"
 #include "element/catenary.h"
 
+#include <float.h>
 #include <math.h>
 
 typedef struct ecat_solve {
@@ -74,10 +75,43 @@ static double start_h(const ctn_ecat *c)
     return H > 0 && isfinite(H) ? H : 1e-3 * c->W;
 }
 
+/* The fast path: Newton on both equations at once, F (dH, dVb) = -(l - lt, h - ht), from
+ * the start's H and the parabola's Vb - Va = 2 H h / l; 1 unless it reached the
+ * resolution of H and Vb with H > 0 within NEWTON2_MAXIT steps (then the nested roots
+ * decide). */
+#define NEWTON2_MAXIT 30
+static int newton2(ctn_ecat *c)
+{
+    double lt = c->l, ht = c->h, l, h;
+    c->H = start_h(c);
+    c->Vb = 0.5 * c->W + c->H * ht / lt;
+    for (int it = 0; it < NEWTON2_MAXIT; it++) {
+        ctn_ecat_law(c, &l, &h);
+        double rl = l - lt, rh = h - ht, det = c->Fhh * c->Fvv - c->Fhv * c->Fhv;
+        double dH = (-c->Fvv * rl + c->Fhv * rh) / det, dV = (c->Fhv * rl - c->Fhh * rh) / det;
+        if (!isfinite(dH) || !isfinite(dV)) return 1;
+        double H = c->H + dH;
+        if (!(H > 0.0)) H = 0.5 * c->H;                /* keep H positive: halve it */
+        int done = fabs(dH) <= 8 * DBL_EPSILON * c->H && fabs(dV) <= 8 * DBL_EPSILON * fmax(fabs(c->Vb), c->W);
+        c->H = H;
+        c->Vb += dV;
+        if (done) {
+            ctn_ecat_law(c, &l, &h);                   /* the flexibility at the root */
+            c->l = lt;
+            c->h = ht;
+            return !(isfinite(c->Fhh) && isfinite(c->Fvv));
+        }
+    }
+    return 1;
+}
+
 int ctn_ecat_solve(ctn_ecat *c)
 {
     ecat_solve e = { c, c->l, c->h, 0.5 * c->W };
     int rc;
+    if (c->l > 0 && !newton2(c)) return CTN_OK;
+    c->l = e.lt;
+    c->h = e.ht;
     if (c->l > 0) {
         double H;
         rc = ctn_an_solve_pos(l_equation, &e, start_h(c), &H);
