@@ -7,7 +7,7 @@
  * - the tangent against central differences of the end forces over random chords,
  *   gravity directions and lengths, near-taut, very slack, steep, and W -> 0;
  * - the energy's gradient is the force; the forces balance the weight;
- * - the temperature op lengthens L and keeps the weight. */
+ * - the temperature op lengthens L and keeps the weight (catenary and pulley). */
 #include "check.h"
 #include "catena/analytic.h"
 #include "element/catenary.h"
@@ -208,6 +208,18 @@ static void test_temperature(void)
     CHECK(p.W == 20 && p.l0_ref == 100);
     ctn_catenary2_ops.temperature(&p, 0);
     CHECK(p.l0 == 100);
+    /* heated by 50 K: the same as a catenary of the longer length and the same weight */
+    double X[6] = { 0, 0, 0, 90, 0, 10 }, u[6] = { 0 }, f[6], f2[6];
+    ctn_catenary_props q = props(100 * (1 + 1.2e-5 * 50), 1e5, 20, g);
+    ctn_catenary2_ops.temperature(&p, 50);
+    CHECK(ctn_catenary2_ops.eval(&p, 0, X, u, f, NULL, NULL) == 0 && ctn_catenary2_ops.eval(&q, 0, X, u, f2, NULL, NULL) == 0);
+    for (int i = 0; i < 6; i++) CHECK(f[i] == f2[i]);
+    ctn_pulley_props pp;                                /* the pulley: its cable's l0 */
+    memset(&pp, 0, sizeof pp);
+    pp.cable.l0 = pp.l0_ref = 10;
+    pp.alpha = 1e-5;
+    ctn_pulley_ops.temperature(&pp, -20);
+    CHECK_CLOSE(pp.cable.l0, 10 * (1 - 2e-4), 1e-15, 0);
 }
 
 int main(void)
