@@ -72,8 +72,9 @@ typedef struct ctn_element_ops {
     /* Optional: the unstressed length l0 that gives element e (its section or k set) the
      * prestress `kind` of value v at length l; a model error (ctn_model_error) if none. */
     int (*prestress_l0)(const ctn_model *m, const ctn_element *e, int kind, double v, double l, double *l0);
-    /* Optional: a temperature change dT from the reference state: the unstressed length
-     * becomes l0_ref (1 + alpha dT); weight (and mass) stay those of l0_ref. */
+    /* Optional: a temperature change dT [K] from the reference state: the unstressed
+     * length becomes l0 (1 + alpha dT) (alpha of the element's material); weight and mass
+     * stay those of l0. Families without it do not expand. */
     void (*temperature)(void *props, double dT);
 } ctn_element_ops;
 

@@ -21,7 +21,7 @@ typedef struct ctn_material {
     double E;
     ctn_strain strain;
     int tension_only;
-    double alpha;    /* thermal expansion coefficient [1/K] (default 0) */
+    double alpha;    /* coefficient of thermal expansion [1/K] */
 } ctn_material;
 
 typedef struct ctn_section {
