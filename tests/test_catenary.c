@@ -84,6 +84,34 @@ static void test_closed_form(void)
     }
 }
 
+/* Any gravity direction: the same span turned in space with its gravity gives the same
+ * H, Va, Vb (1e-12) and end forces along the turned directions. */
+static void test_any_gravity(void)
+{
+    unsigned seed = 3;
+    static const double cases[][5] = { { 120, 1e5, 30, 100, 40 }, { 100, 1e5, 30, 20, -90 }, { 500, 1e7, 100, 30, 10 } };
+    for (int trial = 0; trial < 60; trial++) {
+        const double *c = cases[trial % 3];
+        ctn_ecat ref;
+        CHECK(solve_chord(c[0], c[1], c[2], c[3], c[4], &ref) == 0);
+        double g[3], t[3], n = 0, d = 0, tn = 0;
+        for (int i = 0; i < 3; i++) g[i] = urand(&seed, -1, 1), n += g[i] * g[i];
+        for (int i = 0; i < 3; i++) g[i] /= sqrt(n);
+        for (int i = 0; i < 3; i++) t[i] = urand(&seed, -1, 1), d += t[i] * g[i];
+        for (int i = 0; i < 3; i++) t[i] -= d * g[i], tn += t[i] * t[i];
+        for (int i = 0; i < 3; i++) t[i] /= sqrt(tn);                    /* horizontal unit */
+        double X[6], u[6] = { 0 }, f[6];
+        for (int i = 0; i < 3; i++) {
+            X[i] = urand(&seed, -50, 50);
+            X[3 + i] = X[i] + c[3] * t[i] - c[4] * g[i];                  /* up = -g */
+        }
+        ctn_catenary_props p = props(c[0], c[1], c[2], g);
+        CHECK(ctn_catenary2_ops.eval(&p, 0, X, u, f, NULL, NULL) == 0);
+        for (int i = 0; i < 3; i++)                                      /* f2 = H ex + D/2 up */
+            CHECK_CLOSE(f[3 + i], ref.H * t[i] - 0.5 * (ref.Vb - ref.Va) * g[i], 0, 1e-12 * (ref.H + ref.Vb));
+    }
+}
+
 /* Vertical chords: H = 0. Taut (h > L): Tb = EA (h/L - 1) + W/2 at the top, Ta = Tb - W.
  * Folded (h < L): h = L D (1/(2EA) + 1/W), D = Vb - Va. */
 static void test_vertical(void)
@@ -225,6 +253,7 @@ static void test_temperature(void)
 int main(void)
 {
     test_closed_form();
+    test_any_gravity();
     test_vertical();
     test_weightless();
     test_tangent();
