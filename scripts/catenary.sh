@@ -3,7 +3,7 @@
 # of cable elements, n = 10 ... 320 per 110 m: the distance of the free node's position
 # from the catenary net's, written to out/catenary/net_convergence.dat with a gnuplot
 # script and, when gnuplot is installed, net_convergence.svg; and `catena compare` of
-# examples/catenary/span.cable, one catenary element (docs/validation.md §9).
+# examples/catenary/span.cable, one catenary element (docs/validation.md §10).
 # With DOCS=1 the SVG is also copied to docs/figures/.
 #     bash scripts/catenary.sh [build/catena]
 set -eu
