@@ -233,26 +233,6 @@ size_t ctn_solution_step_count(const ctn_solution *s);
 int ctn_solution_step(const ctn_solution *s, size_t k, ctn_step_result *out);
 int ctn_solution_step_element(const ctn_solution *s, size_t k, size_t i, ctn_element_state *out);
 
-/* Sag of generated cable i (ctn_model_cable), the one definition of catena (the same as
- * ctn_compare_values.sag; docs/format.md, "cables"). "Down" is gravity or, without
- * gravity, the direction of the resultant of the model's concentrated loads.
- *   - The mid-span sag: the distance along down from the mid-point of the deformed
- *     chord (the line between the cable's current end positions) to the deformed cable
- *     at the point whose projection on the plane normal to down is the chord's
- *     mid-point, positive below the chord. Between nodes the cable is read on the
- *     parabola through the three nodes nearest to mid-span, or on the straight element
- *     when the middle one of them carries a concentrated load (`load`) or the cable has
- *     one element.
- *   - With no down, or a chord along down (a vertical chord): the largest distance from
- *     the chord, ctn_solution_cable_max_sag_from_chord.
- * CTN_ERR_DOMAIN if the deformed cable does not cross mid-span (folded back). */
-int ctn_solution_cable_sag(const ctn_model *m, const ctn_solution *s, size_t i, double *sag);
-/* The largest distance of the deformed cable i from its chord (the line through its
- * current end positions), >= 0: the largest over its nodes, which is that of the
- * polyline of its straight elements. */
-int ctn_solution_cable_max_sag_from_chord(const ctn_model *m, const ctn_solution *s, size_t i,
-                                          double *d);
-
 /* A catenary element at the state of step k (docs/format.md, "catenary"): its forces
  * solved from the chord, in the plane of the chord and gravity. */
 typedef struct ctn_catenary_result {
@@ -279,6 +259,26 @@ int ctn_solution_catenary(const ctn_model *m, const ctn_solution *s, size_t k, s
  * through its pulley nodes). CTN_ERR_INVALID on bad arguments. */
 int ctn_solution_element_shape(const ctn_model *m, const ctn_solution *s, size_t k, size_t i,
                                int n, double *xyz);
+
+/* Sag of generated cable i (ctn_model_cable), the one definition of catena (the same as
+ * ctn_compare_values.sag; docs/format.md, "cables"). "Down" is gravity or, without
+ * gravity, the direction of the resultant of the model's concentrated loads.
+ *   - The mid-span sag: the distance along down from the mid-point of the deformed
+ *     chord (the line between the cable's current end positions) to the deformed cable
+ *     at the point whose projection on the plane normal to down is the chord's
+ *     mid-point, positive below the chord. Between nodes the cable is read on the
+ *     parabola through the three nodes nearest to mid-span, or on the straight element
+ *     when the middle one of them carries a concentrated load (`load`) or the cable has
+ *     one element.
+ *   - With no down, or a chord along down (a vertical chord): the largest distance from
+ *     the chord, ctn_solution_cable_max_sag_from_chord.
+ * CTN_ERR_DOMAIN if the deformed cable does not cross mid-span (folded back). */
+int ctn_solution_cable_sag(const ctn_model *m, const ctn_solution *s, size_t i, double *sag);
+/* The largest distance of the deformed cable i from its chord (the line through its
+ * current end positions), >= 0: the largest over its nodes, which is that of the
+ * polyline of its straight elements. */
+int ctn_solution_cable_max_sag_from_chord(const ctn_model *m, const ctn_solution *s, size_t i,
+                                          double *d);
 
 CTN_API_END
 #ifdef __cplusplus
