@@ -139,11 +139,18 @@ int ctn_model_add_section_spec(ctn_model *m, const ctn_section_spec *s);
  *   "cable"  two nodes, section, unstressed length l0 (CTN_L0_DEFAULT: the reference
  *            distance between the nodes); the material's strain law, self-weight w l0;
  *   "spring" two nodes, stiffness k > 0, free length l0 (CTN_L0_DEFAULT: the reference
- *            distance); N = k (l - l0), two-way, weightless, no section. */
+ *            distance); N = k (l - l0), two-way, weightless, no section;
+ *   "catenary" two nodes, section, unstressed length l0 (default: the reference distance):
+ *            one exact elastic catenary (Irvine, engineering strain) with its weight
+ *            w l0 along gravity; prestress N0 = its largest end tension;
+ *   "pulley" three or more nodes (ends, then pulleys in order; at most 64), section, the
+ *            unstressed length l0 of the whole cable (default: the reference polyline):
+ *            one tension along straight segments, tension-only. */
 #define CTN_L0_DEFAULT (-1.0)
 typedef struct ctn_element_spec {
     size_t size;          /* sizeof(ctn_element_spec) (set by ctn_element_spec_init) */
-    const char *type;     /* family name; NULL or "cable" (default), "spring" */
+    const char *type;     /* family name; NULL or "cable" (default), "spring", "catenary",
+                             "pulley" */
     int id;               /* user id > 0, unique among elements */
     int nnodes;           /* number of entries of nodes (the family's node count) */
     const int *nodes;     /* user node ids (copied) */

@@ -176,6 +176,10 @@ typedef struct ctn_solve_summary {
                              values and residual */
     double t_factor;      /* wall seconds in all numeric factorizations */
     double t_solve;       /* wall seconds in all triangular solves */
+    int fail_element;     /* not converged: user id of the element that could not be
+                             evaluated at the last state tried (a chord of zero length,
+                             or a catenary whose forces are beyond double precision),
+                             else 0 */
 } ctn_solve_summary;
 
 /* Element state at the solution. */
@@ -340,6 +344,33 @@ typedef struct ctn_step_result {
 size_t ctn_solution_step_count(const ctn_solution *s);
 int ctn_solution_step(const ctn_solution *s, size_t k, ctn_step_result *out);
 int ctn_solution_step_element(const ctn_solution *s, size_t k, size_t i, ctn_element_state *out);
+
+/* A catenary element at the state of step k (docs/format.md, "catenary"): its forces
+ * solved from the chord, in the plane of the chord and gravity. */
+typedef struct ctn_catenary_result {
+    size_t size;          /* sizeof(ctn_catenary_result), set by the caller */
+    double H;             /* horizontal component of the tension (normal to gravity) [force] */
+    double tension[2];    /* tension at its first and last node [force] */
+    double force[2][3];   /* the force the cable applies to its first and last node (along
+                             its tangent there; the two sum to its weight) [force] */
+    double V[2];          /* upward component of the support forces on the cable at the
+                             first and last node (V[0] + V[1] = its weight) [force] */
+    double sag;           /* the distance along gravity from the mid-point of the chord down
+                             to the cable at mid-span (half the horizontal span); 0 for a
+                             vertical chord or a weightless member [length] */
+    double length;        /* stretched length [length] */
+} ctn_catenary_result;
+/* Element i (a "catenary") at the end of step k. CTN_ERR_INVALID if i is not a catenary
+ * or k, i are out of range; CTN_ERR_NOCONV if its compatibility equations have no
+ * solution at that state (a collapsed chord). The caller sets out->size. */
+int ctn_solution_catenary(const ctn_model *m, const ctn_solution *s, size_t k, size_t i,
+                          ctn_catenary_result *out);
+/* The deformed shape of element i at the end of step k: n >= 2 points (3 coordinates
+ * each, into xyz[3 n]) evenly spaced along its unstressed length: on the elastic catenary
+ * for a catenary, on its straight segments for the other families (a pulley's pass
+ * through its pulley nodes). CTN_ERR_INVALID on bad arguments. */
+int ctn_solution_element_shape(const ctn_model *m, const ctn_solution *s, size_t k, size_t i,
+                               int n, double *xyz);
 
 /* Sag of generated cable i (ctn_model_cable), the one definition of catena (the same as
  * ctn_compare_values.sag; docs/format.md, "cables"). "Down" is gravity or, without

@@ -5,6 +5,7 @@
 #include "catena/analytic.h"
 #include "catena/compare.h"
 #include "core/ctx.h"
+#include "element/catenary.h"
 
 #define CTN_CMP_SAMPLES 201        /* points of a sampled closed-form curve */
 
@@ -32,6 +33,10 @@ struct ctn_compare {
     int follow;            /* the hload is on the deformed projection: the polygons take
                               the loads of the FEA's geometry (follow_loads.c) */
     double *Pref;          /* [2 (n + 1)] then: P on the reference geometry */
+    int catenary;          /* the span is one catenary element: the FEA is its curve */
+    ctn_catenary_props catp; /* its properties */
+    ctn_ecat fea_cat;      /* its solved state (ctn_compare_set_fea) */
+    double fea_x0[3], fea_ex[3]; /* its first node and unit horizontal chord */
 };
 
 /* Record an error about the model of `file`: the message starts "file: " (nothing
@@ -60,6 +65,12 @@ int ctn_cmp_polyline_values(const ctn_compare *c, const double *xy, const double
 /* Dot product and plane coordinates (x, y) of a 3D point relative to span.origin. */
 double ctn_cmp_dot3(const double a[3], const double b[3]);
 void ctn_cmp_to_plane(const ctn_span *s, const double p[3], double xy[2]);
+
+/* The FEA values of a span made of one catenary element at displacements d (fea.c). */
+int ctn_cmp_catenary_fea(ctn_compare *c, const double *d);
+/* Point t in [0, 1] (of the unstressed length) of that catenary in the span's plane:
+ * (x, y), or (x, T / A) for the stress curve (curve.c). */
+void ctn_cmp_catenary_sample(const ctn_compare *c, int stress, double t, double out[2]);
 
 /* A fresh single-span model like the span of base (see ctn_study_run): unstressed
  * length L0, n elements, strain measure (build.c). */

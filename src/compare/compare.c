@@ -47,6 +47,10 @@ int ctn_compare_create(ctn_ctx *ctx, const ctn_model *m, ctn_compare **out)
     for (size_t h = 0; h < m->hloads.n; h++) c->follow |= !m->hloads.v[h].reference;
     int rc = ctn_model_validate(m);                 /* file:line messages for bad models */
     if (!rc) rc = ctn_cmp_find_span(c, m);
+    if (!rc && c->span.n == 1 && ctn_element_family(m->elements.v[c->elem[0]].type) == &ctn_catenary2_ops) {
+        c->catenary = 1;                            /* one catenary element */
+        ctn_catenary2_ops.setup(m, c->elem[0], &c->catp);
+    }
     if (!rc) rc = ctn_cmp_span_loads(c, m);
     if (!rc) rc = ctn_cmp_solve_forms(c);
     if (rc) ctn_compare_destroy(&c);

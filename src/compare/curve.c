@@ -6,7 +6,7 @@
 /* The polyline (joints then forces) of form f, or NULL. */
 static const double *polyline(const ctn_compare *c, ctn_form f)
 {
-    if (f == CTN_FORM_FEA) return c->fea;
+    if (f == CTN_FORM_FEA) return c->catenary ? NULL : c->fea;
     if (f == CTN_FORM_FUNICULAR) return c->poly[0];
     if (f == CTN_FORM_EFUNICULAR) return c->poly[1];
     return NULL;
@@ -37,6 +37,10 @@ static int sample(const ctn_compare *c, ctn_form f, ctn_curve k, double t, doubl
 {
     double x = t * c->span.l, T = 0, y = 0;
     int rc = CTN_OK;
+    if (f == CTN_FORM_FEA) {                           /* one catenary element */
+        ctn_cmp_catenary_sample(c, k == CTN_CURVE_STRESS, t, out);
+        return CTN_OK;
+    }
     if (f == CTN_FORM_ECATENARY) {
         double s = t * c->span.L0;
         rc = ctn_ecatenary_point(&c->ecat, s, &x, &y);
@@ -66,4 +70,15 @@ int ctn_compare_curve(const ctn_compare *c, ctn_form f, ctn_curve k, double *xy)
         if (rc) return rc;
     }
     return CTN_OK;
+}
+
+void ctn_cmp_catenary_sample(const ctn_compare *c, int stress, double t, double out[2])
+{
+    const ctn_ecat *e = &c->fea_cat;
+    double x, z, p[3], xy[2];
+    ctn_ecat_point(e, t * e->L, &x, &z);
+    for (int k = 0; k < 3; k++) p[k] = c->fea_x0[k] + x * c->fea_ex[k] + z * c->catp.up[k];
+    ctn_cmp_to_plane(&c->span, p, xy);
+    out[0] = xy[0];
+    out[1] = stress ? hypot(e->H, e->Va - e->W * t) / c->span.A : xy[1];
 }

@@ -37,7 +37,8 @@ enum {
 enum {
     CTN_ELEM_FLEXIBLE = 1,  /* a cable: hangs when slack; may be pre-shaped on an arc and
                                relaxed with compression cut off by the solver */
-    CTN_ELEM_SECTION = 2    /* takes a section (section=): required; others refuse one */
+    CTN_ELEM_SECTION = 2,   /* takes a section (section=): required; others refuse one */
+    CTN_ELEM_TENSION_ONLY = 4  /* never compressed, whatever the material (catenary, pulley) */
 };
 
 /* eval(props, mode, X, u, f, K, st): X = reference coordinates of the element's nodes
@@ -101,6 +102,8 @@ int ctn_element_family_find(const char *name);
 /* The families (one file each). */
 extern const ctn_element_ops ctn_cable2_ops;
 extern const ctn_element_ops ctn_spring2_ops;
+extern const ctn_element_ops ctn_catenary2_ops;   /* catenary2.c, props in catenary.h */
+extern const ctn_element_ops ctn_pulley_ops;      /* pulley.c */
 
 /* Properties of a two-node cable (truss) element (cable2.c). */
 typedef struct ctn_cable_props {
@@ -120,5 +123,15 @@ typedef struct ctn_spring_props {
     double k;           /* stiffness [force/length] */
     double l0;          /* free length [length] */
 } ctn_spring_props;
+
+/* Properties of a cable running over frictionless pulleys (pulley.c): the cable law of
+ * the whole length over its nnodes - 1 straight segments, tension-only. */
+typedef struct ctn_pulley_props {
+    ctn_cable_props cable;  /* EA, l0 (the whole unstressed length), A, strain law */
+    int nnodes;             /* nodes: the two ends and the pulleys between them */
+    int pad;
+    double l0_ref;          /* l0 at the reference temperature */
+    double alpha;           /* thermal expansion coefficient [1/K] */
+} ctn_pulley_props;
 
 #endif

@@ -126,9 +126,7 @@ static int d_node(ctn_line *l)
     return rc || mass == 0 ? rc : ctn_model_set_node_mass(l->m, id, mass);
 }
 
-/* At most one of l0=, N0=, s0=, eps0= (from token `from`; without l0= when l0 is NULL):
- * the prestress into *kind and *value; *l0 is set when l0= is given. */
-static int prestress_keys(ctn_line *l, int from, const char *what, double *l0, ctn_prestress *kind, double *value)
+int ctn_parse_prestress(ctn_line *l, int from, const char *what, double *l0, ctn_prestress *kind, double *value)
 {
     static const char *const keys[4] = { "l0", "N0", "s0", "eps0" };
     int given = 0, rc = CTN_OK;
@@ -182,7 +180,7 @@ static int d_element(ctn_line *l)
     ctn_element_spec spec;
     int nodes[2] = { a, b };
     ctn_element_spec_init(&spec);
-    if (!rc) rc = prestress_keys(l, 4, what, &l0, &spec.prestress, &spec.prestress_value);
+    if (!rc) rc = ctn_parse_prestress(l, 4, what, &l0, &spec.prestress, &spec.prestress_value);
     if (!rc) rc = density_keys(l, 4, what, l0 != CTN_L0_DEFAULT || spec.prestress, &spec.q, &spec.force);
     spec.group = rc ? NULL : ctn_parse_key(l, 4, "group");
     if (!rc) rc = ctn_parse_leftovers(l, 4, "element");
@@ -205,7 +203,7 @@ static int d_spring(ctn_line *l)
     if (!rc) rc = ctn_parse_key_num(l, 4, "k", 1, &spec.k);
     char what[32];
     snprintf(what, sizeof what, "spring %d", id);
-    if (!rc) rc = prestress_keys(l, 4, what, &spec.l0, &spec.prestress, &spec.prestress_value);
+    if (!rc) rc = ctn_parse_prestress(l, 4, what, &spec.l0, &spec.prestress, &spec.prestress_value);
     if (!rc) rc = density_keys(l, 4, what, spec.l0 != CTN_L0_DEFAULT || spec.prestress, &spec.q, &spec.force);
     if (!rc && !(spec.k > 0)) return ctn_parse_error(l, "spring %d: k must be positive (found %g)", id, spec.k);
     spec.group = rc ? NULL : ctn_parse_key(l, 4, "group");
@@ -266,7 +264,7 @@ static int d_cable(ctn_line *l)
     if (!rc) rc = key_int(l, "n", 1, CTN_CABLE_MAX_N, &n);
     if (!rc) rc = cable_length(l, &spec);
     if (!rc) rc = cable_shape(l, &spec);
-    if (!rc) rc = prestress_keys(l, 3, "cable", NULL, &spec.prestress, &spec.prestress_value);
+    if (!rc) rc = ctn_parse_prestress(l, 3, "cable", NULL, &spec.prestress, &spec.prestress_value);
     if (!rc && spec.target && spec.prestress)
         return ctn_parse_error(l, "cable: a target (H=, sag=, tension=) sets the length: give no N0=, s0= or eps0= with it");
     if (!rc) rc = density_keys(l, 3, "cable", spec.prestress || spec.target, &q, &force);
@@ -449,7 +447,7 @@ static const directive directives[] = {
     { "cable", d_cable },     { "load", d_load },       { "hload", d_hload },
     { "solve", d_solve },     { "step", d_step },       { "displace", d_displace },
     { "spring", d_spring },   { "group", d_group },     { "temperature", d_temperature },
-    { "modes", d_modes },
+    { "modes", d_modes },     { "catenary", ctn_parse_catenary }, { "pulley", ctn_parse_pulley },
 };
 
 int ctn_parse_directive(ctn_line *l)

@@ -8,6 +8,7 @@
 #include "catena/io.h"
 
 #include <math.h>
+#include <string.h>
 
 typedef struct json_writer {
     ctn_writer w;
@@ -65,6 +66,7 @@ static void put_summary(json_writer *jw, const ctn_solution *s)
         ctn_jw_number(j, "fail_node", sum.fail_node);
         ctn_jw_string(j, "fail_direction", xyz[sum.fail_dir]);
     }
+    if (sum.reason != CTN_CONVERGED && sum.fail_element) ctn_jw_number(j, "fail_element", sum.fail_element);
     if ((sum.floor || sum.reason == CTN_DIVERGED_ROUNDOFF) && isfinite(sum.residual_floor) && isfinite(sum.force_scale)) {
         ctn_jw_number(j, "residual_floor", sum.residual_floor);
         ctn_jw_number(j, "force_scale", sum.force_scale);
@@ -105,29 +107,51 @@ static int node_id(const ctn_model *m, int index)
     return ctn_model_node(m, (size_t)index, &p) ? 0 : p.id;
 }
 
-static void put_element(json_writer *jw, const ctn_element_info *e, const ctn_element_state *es)
+/* A catenary's forces and its shape at CTN_JSON_SHAPE + 1 points (docs/format.md). */
+#define CTN_JSON_SHAPE 20
+static void put_catenary(json_writer *jw, const ctn_solution *s, size_t k, size_t i)
+{
+    ctn_jw *j = &jw->j;
+    ctn_catenary_result c = { .size = sizeof c };
+    double xyzv[3 * (CTN_JSON_SHAPE + 1)];
+    if (ctn_solution_catenary(jw->w.m, s, k, i, &c)) return;
+    ctn_jw_number(j, "H", c.H);
+    numbers(j, "tension", c.tension, 2);
+    ctn_jw_array(j, "end_forces");
+    for (int a = 0; a < 2; a++) numbers(j, NULL, c.force[a], 3);
+    ctn_jw_end(j);
+    numbers(j, "V", c.V, 2);
+    ctn_jw_number(j, "sag", c.sag);
+    ctn_jw_number(j, "stretched_length", c.length);
+    if (ctn_solution_element_shape(jw->w.m, s, k, i, CTN_JSON_SHAPE + 1, xyzv)) return;
+    ctn_jw_array(j, "shape");
+    for (int p = 0; p <= CTN_JSON_SHAPE; p++) numbers(j, NULL, xyzv + 3 * p, 3);
+    ctn_jw_end(j);
+}
+
+static void put_element(json_writer *jw, const ctn_element_info *e, const ctn_element_state *es,
+                        const ctn_solution *s, size_t k, size_t i)
 {
     ctn_jw *j = &jw->j;
     double mpa = ctn_model_mpa_factor(jw->w.m);
     ctn_jw_object(j, NULL);
     ctn_jw_number(j, "id", e->id);
     ctn_jw_array(j, "nodes");
-    ctn_jw_number(j, NULL, node_id(jw->w.m, e->node[0]));
-    ctn_jw_number(j, NULL, node_id(jw->w.m, e->node[1]));
+    for (int a = 0; a < e->nnodes; a++) ctn_jw_number(j, NULL, node_id(jw->w.m, e->nodes[a]));
     ctn_jw_end(j);
     ctn_jw_number(j, "l0", e->l0);
     ctn_jw_number(j, "length", es->length);
     ctn_jw_number(j, "strain", es->strain);
     ctn_jw_number(j, "force", es->force);
-    if (!e->has_section) {                          /* a spring: a force, no stress */
-        ctn_jw_string(j, "type", e->type);
-    } else {
+    if (strcmp(e->type, "cable")) ctn_jw_string(j, "type", e->type);
+    if (e->has_section) {                           /* a spring: a force, no stress */
         ctn_jw_number(j, "stress", es->stress);
         if (mpa > 0) ctn_jw_number(j, "stress_mpa", es->stress * mpa);
     }
     if (e->tension_only) ctn_jw_bool(j, "slack", es->slack);
     if (e->capacity > 0) ctn_jw_number(j, "utilisation", ctn_utilisation(e, es));
     if (e->group) ctn_jw_string(j, "group", e->group);
+    if (!strcmp(e->type, "catenary")) put_catenary(jw, s, k, i);
     ctn_jw_end(j);
 }
 
@@ -143,7 +167,7 @@ static void put_elements(json_writer *jw, const ctn_solution *s, size_t k)
             ctn_writer_mismatch(&jw->w);
             break;
         }
-        put_element(jw, &e, &es);
+        put_element(jw, &e, &es, s, k, i);
     }
     ctn_jw_end(&jw->j);
 }

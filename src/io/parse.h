@@ -52,5 +52,11 @@ int ctn_read_all(ctn_ctx *ctx, const char *path, char **data, size_t *len);
 
 /* The directive handlers (directives.c). */
 int ctn_parse_directive(ctn_line *l);
+/* At most one of l0=, N0=, s0=, eps0= (from token `from`; without l0= when l0 is NULL):
+ * the prestress into *kind and *value; *l0 is set when l0= is given. */
+int ctn_parse_prestress(ctn_line *l, int from, const char *what, double *l0, ctn_prestress *kind, double *value);
+/* The element families with a length: catenary, pulley (directives_span.c). */
+int ctn_parse_catenary(ctn_line *l);
+int ctn_parse_pulley(ctn_line *l);
 
 #endif

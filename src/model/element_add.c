@@ -68,13 +68,16 @@ static int density(const ctn_model *m, const ctn_element_spec *s, ctn_element *e
 }
 
 /* The record of spec s (defaults resolved), checked by its family. */
-static int make_record(const ctn_model *m, const ctn_element_spec *s, int type, ctn_element *e, int *idx)
+static int make_record(ctn_model *m, const ctn_element_spec *s, int type, ctn_element *e, int *idx)
 {
     const ctn_element_ops *ops = ctn_element_family(type);
     double chord = 0;
     int rc = resolve_nodes(m, s, ops, idx, &chord);
+    if (!rc) rc = ctn_array_reserve(m->ctx, (void **)&m->conn.v, &m->conn.cap, m->conn.n + (size_t)s->nnodes, sizeof(int));
     if (rc) return rc;
+    memcpy(m->conn.v + m->conn.n, idx, (size_t)s->nnodes * sizeof(int));   /* staged, not yet counted: */
     memset(e, 0, sizeof *e);
+    e->conn = m->conn.n;                              /* the checks may read the nodes */
     e->id = s->id;
     e->type = type;
     e->nnodes = s->nnodes;

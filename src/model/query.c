@@ -40,7 +40,7 @@ int ctn_model_element(const ctn_model *m, size_t i, ctn_element_info *out)
     out->E = mat->E;
     out->w = s->w;
     out->strain = mat->strain;
-    out->tension_only = mat->tension_only;
+    out->tension_only = mat->tension_only || (ctn_element_family(e->type)->flags & CTN_ELEM_TENSION_ONLY);
     out->alpha = mat->alpha;
     out->capacity = s->mbl > 0 ? s->mbl / s->safety : 0;
     return CTN_OK;

@@ -102,7 +102,8 @@ static int check_start(ctn_problem *p, const double *d)
     const ctn_model *m = p->m;
     if (ctn_asm_loop(p->a, d, 0, 0, start_visit, &c, &collapsed)) {
         const ctn_element *el = &m->elements.v[collapsed];
-        return ctn_error_at(p->ctx, CTN_ERR_MODEL, m->file, el->line, "element %d has zero length in the start state", el->id);
+        return ctn_error_at(p->ctx, CTN_ERR_MODEL, m->file, el->line, "element %d has zero length in the start state%s", el->id,
+                            ctn_element_family(el->type)->eval == ctn_catenary2_ops.eval ? " (or its catenary's forces overflow)" : "");
     }
     if (c.bad == (size_t)-1) return CTN_OK;
     const ctn_element *el = &m->elements.v[c.bad];
@@ -165,6 +166,7 @@ int ctn_problem_solve(ctn_problem *p, ctn_solution **out)
         if (!rc) rc = check_start(p, d);
         if (!rc) rc = p->strategy->run(p, s, d);
         if (!rc && s->sum.reason == CTN_CONVERGED) rc = check_stability(p, s);
+        if (s->sum.reason == CTN_CONVERGED) s->sum.fail_element = 0;
         if (!rc && s->sum.reason == CTN_CONVERGED && p->opt.modal.count > 0) rc = ctn_problem_modes(p, s, &p->opt.modal);
         if (!s->sum.fext_norm) s->sum.fext_norm = ctn_problem_fref(p);
         s->sum.ordering = p->ls ? ctn_linsolve_ordering(p->ls) : CTN_ORDER_NATURAL;

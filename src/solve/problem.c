@@ -185,7 +185,9 @@ int ctn_problem_residual(ctn_problem *p, const double *d, int with_K, double *rn
 {
     double t0 = ctn_clock(), U = 0, work = 0;
     const int *eq = p->a->map.eq;
-    *valid = !ctn_asm_eval(p->a, d, p->mode, p->fint, with_K ? p->Kx : NULL, pi ? &U : NULL, NULL);
+    size_t bad = 0;
+    *valid = !ctn_asm_eval(p->a, d, p->mode, p->fint, with_K ? p->Kx : NULL, pi ? &U : NULL, &bad);
+    if (!*valid) p->sum->fail_element = p->m->elements.v[bad].id;     /* reported if not converged */
     if (*valid) {
         const double *fh = p->fl ? ctn_follow_forces(p, d) : NULL;
         double rr = 0;
