@@ -41,6 +41,14 @@ int ctn_parse_key_num(ctn_line *l, int from, const char *key, int required, doub
 /* After a handler took what it knows: any token left is an unknown key. */
 int ctn_parse_leftovers(const ctn_line *l, int from, const char *directive);
 
+/* Scan the lines of text[0 .. len) in place and run their directives (scan.c), counting
+ * lines on from l->line. The last line ends with a line break, or at len where
+ * text[len] must be a NUL. */
+int ctn_parse_lines(ctn_line *l, char *text, size_t len);
+/* The length of the complete lines at the start of text[0 .. len): up to the last line
+ * break that is known to end its line (a CR at len - 1 may be half a CRLF); 0 if none. */
+size_t ctn_parse_complete(const char *text, size_t len);
+
 /* The directive handlers (directives.c). */
 int ctn_parse_directive(ctn_line *l);
 
