@@ -40,6 +40,7 @@ int ctn_app_wants_help(int argc, char **argv);
 typedef struct ctn_model_args {
     const char *model, *outdir;   /* outdir NULL: no files */
     int json, quiet;
+    long reactions;               /* solve: the most reaction rows, -1 all (cmd_solve.c) */
 } ctn_model_args;
 int ctn_app_model_args(const char *cmd, int argc, char **argv, ctn_model_args *a);
 
@@ -58,8 +59,12 @@ void ctn_print_stability(FILE *out, const char *model, const ctn_solution *s);
 /* Warn (on out) about answers no cable gives: a strain above 10 %, a deformed model more
  * than 10,000 km across (usually a unit or input error). */
 void ctn_print_warnings(FILE *out, const char *model, const ctn_model *m, const ctn_solution *s);
-/* Human-readable result summary. */
+/* Human-readable result summary (without the reactions). */
 void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s);
+/* The reactions of the supported nodes, at most limit rows (-1: all), then their sum
+ * and, when rows were left out, the largest by magnitude (print_reactions.c). */
+#define CTN_APP_REACTIONS 20
+void ctn_print_reactions(FILE *out, const ctn_model *m, const ctn_solution *s, long limit);
 /* Iteration log state: the monitor prints one line per Newton iteration with the
  * observed order log(r_k/r_k-1) / log(r_k-1/r_k-2) (2 for quadratic convergence). */
 typedef struct ctn_iter_log {

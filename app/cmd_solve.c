@@ -1,7 +1,35 @@
-/* catena solve MODEL [--json] [-o DIR] [-q] */
+/* catena solve MODEL [--json] [-o DIR] [-q] [--reactions N|all] */
 #include "app.h"
 
+#include <errno.h>
+#include <stdlib.h>
 #include <string.h>
+
+/* Take `--reactions N|all` out of argv (the rest are the shared model options): the
+ * most reaction rows of the summary in *limit (-1: all). 0, or 1 after a message. */
+static int take_reactions(int *argc, char **argv, long *limit)
+{
+    *limit = CTN_APP_REACTIONS;
+    for (int i = 1; i < *argc; i++) {
+        if (strcmp(argv[i], "--reactions")) continue;
+        const char *v = i + 1 < *argc ? argv[i + 1] : "";
+        long n = -1;
+        if (strcmp(v, "all")) {
+            char *end;
+            errno = 0;
+            n = strtol(v, &end, 10);
+            if (end == v || *end || n < 0 || errno) {
+                fprintf(stderr, "catena solve: --reactions takes a count or 'all' (found '%s')\n", v);
+                return 1;
+            }
+        }
+        *limit = n;
+        for (int j = i; j + 2 <= *argc; j++) argv[j] = argv[j + 2];
+        *argc -= 2;
+        i--;
+    }
+    return 0;
+}
 
 
 /* The results: files with -o, then JSON or the summary on stdout, checked. Exit code. */
@@ -13,6 +41,7 @@ static int emit(ctn_ctx *ctx, const ctn_model_args *a, const ctn_model *m, const
         if (!rc) putchar('\n');
     } else if (!rc && !a->quiet) {
         ctn_print_summary(stdout, m, s);
+        ctn_print_reactions(stdout, m, s, a->reactions);
     }
     return rc ? ctn_app_fail(ctx, rc) : ctn_app_flush(stdout, "stdout");
 }
@@ -25,7 +54,9 @@ static const char *method_title(ctn_method m)
 int ctn_cmd_solve(int argc, char **argv)
 {
     ctn_model_args a;
-    if (ctn_app_model_args("solve", argc, argv, &a)) return CTN_EXIT_USAGE;
+    long reactions;
+    if (take_reactions(&argc, argv, &reactions) || ctn_app_model_args("solve", argc, argv, &a)) return CTN_EXIT_USAGE;
+    a.reactions = reactions;
     ctn_ctx *ctx = NULL;
     ctn_model *m = NULL;
     ctn_solution *s = NULL;
