@@ -73,6 +73,24 @@ typedef struct ctn_iter_log {
 } ctn_iter_log;
 void ctn_print_iteration(void *data, const ctn_iterate *it);
 
+/* Progress of long phases on stderr when it is a terminal (progress.c). */
+#define CTN_APP_PROGRESS_AFTER 2.0   /* seconds a phase runs before its progress shows */
+typedef struct ctn_app_progress {
+    int tty;              /* stderr is a terminal: else nothing is shown */
+    const char *what;     /* the phase */
+    double start, last;   /* its start, the last line shown [s, monotonic] */
+    int shown;            /* a progress line is on the terminal */
+} ctn_app_progress;
+void ctn_app_progress_init(ctn_app_progress *p);
+/* A new phase: the clock restarts, the line is cleared. */
+void ctn_app_progress_phase(ctn_app_progress *p, const char *what);
+/* Clear the line (before printing anything else). */
+void ctn_app_progress_done(ctn_app_progress *p);
+/* The library's progress callback (ctn_ctx_set_progress), data a ctn_app_progress. */
+void ctn_app_progress_report(void *data, const char *what, double done, double total);
+/* A Newton iteration of the phase "solving". */
+void ctn_app_progress_iteration(ctn_app_progress *p, const ctn_iterate *it);
+
 /* ---- compare, study, convergence (cmd_compare.c, cmd_study.c, cmd_convergence.c) ---- */
 #include <cjson/cJSON.h>
 

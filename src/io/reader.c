@@ -8,6 +8,7 @@
 #include <locale.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #define CTN_MAX_FILE ((size_t)1 << 31)
 #define CTN_READ_CHUNK ((size_t)1 << 18)     /* bytes read at a time: stays in cache */
@@ -56,10 +57,13 @@ static int feed_file(ctn_line *l, const source *src)
 {
     ctn_ctx *ctx = l->m->ctx;
     size_t cap = CTN_READ_CHUNK, n = 0, total = 0, skip = 0;
+    struct stat st;
+    double size = !fstat(fileno(src->f), &st) && S_ISREG(st.st_mode) ? (double)st.st_size : 0;
     char *buf = ctn_malloc(ctx, cap + 1, 1);
     int rc = buf ? CTN_OK : CTN_ERR_NOMEM, final = 0;
     for (int first = 1; !rc && !final; first = 0) {
         if ((rc = fill(ctx, src, buf, cap, &n, &total, &final))) break;
+        ctn_progress(ctx, "reading", (double)total, size);
         if (first) skip = bom(buf, n);
         buf[n] = '\0';
         size_t done = final ? n : ctn_parse_complete(buf, n);
