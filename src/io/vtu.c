@@ -55,50 +55,23 @@ static int point_reaction(const vtu_data *d, size_t j, size_t i, double *v)
     return CTN_OK;
 }
 
-/* The state of element i at the step; a spring has no stress (0 written). */
-static int cell_state(const vtu_data *d, size_t i, ctn_element_state *es)
+/* One number of the state of element i at the step: the force, the stress (0 for a
+ * spring: it has no section), the strain or slack (0 or 1). */
+enum { CELL_FORCE, CELL_STRESS, CELL_STRAIN, CELL_SLACK };
+static int cell_value(const vtu_data *d, size_t i, int which, double *v)
 {
     ctn_element_info e;
-    if (ctn_model_element(d->m, i, &e) || ctn_solution_step_element(d->s, d->k, i, es)) return CTN_ERR_INVALID;
-    if (!e.has_section) es->stress = 0;
+    ctn_element_state es;
+    if (ctn_model_element(d->m, i, &e) || ctn_solution_step_element(d->s, d->k, i, &es)) return CTN_ERR_INVALID;
+    double values[4] = { es.force, e.has_section ? es.stress : 0, es.strain, es.slack };
+    *v = values[which];
     return CTN_OK;
 }
 
-static int cell_force(const vtu_data *d, size_t j, size_t i, double *v)
-{
-    ctn_element_state es;
-    (void)j;
-    int rc = cell_state(d, i, &es);
-    *v = es.force;
-    return rc;
-}
-
-static int cell_stress(const vtu_data *d, size_t j, size_t i, double *v)
-{
-    ctn_element_state es;
-    (void)j;
-    int rc = cell_state(d, i, &es);
-    *v = es.stress;
-    return rc;
-}
-
-static int cell_strain(const vtu_data *d, size_t j, size_t i, double *v)
-{
-    ctn_element_state es;
-    (void)j;
-    int rc = cell_state(d, i, &es);
-    *v = es.strain;
-    return rc;
-}
-
-static int cell_slack(const vtu_data *d, size_t j, size_t i, double *v)
-{
-    ctn_element_state es;
-    (void)j;
-    int rc = cell_state(d, i, &es);
-    *v = es.slack;
-    return rc;
-}
+static int cell_force(const vtu_data *d, size_t j, size_t i, double *v) { (void)j; return cell_value(d, i, CELL_FORCE, v); }
+static int cell_stress(const vtu_data *d, size_t j, size_t i, double *v) { (void)j; return cell_value(d, i, CELL_STRESS, v); }
+static int cell_strain(const vtu_data *d, size_t j, size_t i, double *v) { (void)j; return cell_value(d, i, CELL_STRAIN, v); }
+static int cell_slack(const vtu_data *d, size_t j, size_t i, double *v) { (void)j; return cell_value(d, i, CELL_SLACK, v); }
 
 /* The arrays. Slots for the arrays still to come, one entry each:
  *   utilisation   cell, 1 component, Float64: N over the section's allowed force (its
@@ -223,15 +196,26 @@ static int put_cells(ctn_writer *w, size_t ne)
     return b->err;
 }
 
-static int vtu_begin(void *p, const ctn_model *m, ctn_sink *sink)
+/* begin: open the output and print text; end: print text. */
+static int begin_with(void *p, const ctn_model *m, ctn_sink *sink, const char *text)
 {
     ctn_writer *w = p;
     int rc = ctn_writer_open(w, m, sink);
-    if (rc) return rc;
-    ctn_wbuf_puts(&w->out, "<?xml version=\"1.0\"?>\n"
-                           "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
-                           "header_type=\"UInt64\">\n  <UnstructuredGrid>\n");
+    if (!rc) ctn_wbuf_puts(&w->out, text);
+    return rc ? rc : w->out.err;
+}
+
+static int end_with(void *p, const char *text)
+{
+    ctn_writer *w = p;
+    ctn_wbuf_puts(&w->out, text);
     return w->out.err;
+}
+
+static int vtu_begin(void *p, const ctn_model *m, ctn_sink *sink)
+{
+    return begin_with(p, m, sink, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+                                  "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <UnstructuredGrid>\n");
 }
 
 /* The piece of the writer's step: field data, point data, cell data, points, cells. */
@@ -259,12 +243,7 @@ static int vtu_step(void *p, const ctn_solution *s, size_t k)
     return rc ? rc : b->err;
 }
 
-static int vtu_end(void *p)
-{
-    ctn_writer *w = p;
-    ctn_wbuf_puts(&w->out, "  </UnstructuredGrid>\n</VTKFile>\n");
-    return w->out.err;
-}
+static int vtu_end(void *p) { return end_with(p, "  </UnstructuredGrid>\n</VTKFile>\n"); }
 
 const ctn_writer_ops ctn_writer_vtu = { .name = "result.vtu", .size = sizeof(ctn_writer), .begin = vtu_begin,
                                         .step = vtu_step, .end = vtu_end };
@@ -280,13 +259,8 @@ void ctn_vtu_step_name(char *name, size_t k, size_t n)
 
 static int pvd_begin(void *p, const ctn_model *m, ctn_sink *sink)
 {
-    ctn_writer *w = p;
-    int rc = ctn_writer_open(w, m, sink);
-    if (rc) return rc;
-    ctn_wbuf_puts(&w->out, "<?xml version=\"1.0\"?>\n"
-                           "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-                           "  <Collection>\n");
-    return w->out.err;
+    return begin_with(p, m, sink, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" "
+                                  "byte_order=\"LittleEndian\">\n  <Collection>\n");
 }
 
 /* Step k at time k + 1 (the step's number). */
@@ -303,12 +277,7 @@ static int pvd_step(void *p, const ctn_solution *s, size_t k)
     return w->out.err;
 }
 
-static int pvd_end(void *p)
-{
-    ctn_writer *w = p;
-    ctn_wbuf_puts(&w->out, "  </Collection>\n</VTKFile>\n");
-    return w->out.err;
-}
+static int pvd_end(void *p) { return end_with(p, "  </Collection>\n</VTKFile>\n"); }
 
 const ctn_writer_ops ctn_writer_pvd = { .name = "result.pvd", .size = sizeof(ctn_writer), .begin = pvd_begin,
                                         .step = pvd_step, .end = pvd_end };
