@@ -1,5 +1,5 @@
 /* result.vtu: one step of the result as a VTK XML UnstructuredGrid (ascii, numbers as
- * "%.17g", so they round-trip), for ParaView (docs/format.md, "result.vtu").
+ * "%.17g", so they round-trip), for ParaView (docs/format.md, "ParaView").
  *
  *   points      the nodes in model order (result.json's "nodes"), at their reference
  *               coordinates; the point data hold the displacements (ParaView's "Warp
