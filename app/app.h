@@ -41,6 +41,7 @@ int ctn_app_wants_help(int argc, char **argv);
 typedef struct ctn_model_args {
     const char *model, *outdir;   /* outdir NULL: no files */
     int json, quiet;
+    long reactions;               /* solve: the most reaction rows, -1 all (cmd_solve.c) */
 } ctn_model_args;
 int ctn_app_model_args(const char *cmd, int argc, char **argv, ctn_model_args *a);
 
@@ -59,7 +60,7 @@ void ctn_print_stability(FILE *out, const char *model, const ctn_solution *s);
 /* Warn (on out) about answers no cable gives: a strain above 10 %, a deformed model more
  * than 10,000 km across (usually a unit or input error). */
 void ctn_print_warnings(FILE *out, const char *model, const ctn_model *m, const ctn_solution *s);
-/* Human-readable result summary. */
+/* Human-readable result summary (without the reactions). */
 void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s);
 /* A line per group, and the most utilised element (print_groups.c). */
 void ctn_print_groups(FILE *out, const ctn_model *m, const ctn_solution *s);
@@ -67,6 +68,10 @@ void ctn_print_groups(FILE *out, const ctn_model *m, const ctn_solution *s);
 void ctn_print_capacity_warning(FILE *out, const char *model, const ctn_model *m, const ctn_solution *s);
 /* Its modal part: the analysis and one line per mode (nothing without modes). */
 void ctn_print_modes(FILE *out, const ctn_model *m, const ctn_solution *s);
+/* The reactions of the supported nodes, at most limit rows (-1: all), then their sum
+ * and, when rows were left out, the largest by magnitude (print_reactions.c). */
+#define CTN_APP_REACTIONS 20
+void ctn_print_reactions(FILE *out, const ctn_model *m, const ctn_solution *s, long limit);
 /* Iteration log state: the monitor prints one line per Newton iteration with the
  * observed order log(r_k/r_k-1) / log(r_k-1/r_k-2) (2 for quadratic convergence). */
 typedef struct ctn_iter_log {
@@ -74,6 +79,24 @@ typedef struct ctn_iter_log {
     double r[2];   /* the two previous residual norms, 0 if none */
 } ctn_iter_log;
 void ctn_print_iteration(void *data, const ctn_iterate *it);
+
+/* Progress of long phases on stderr when it is a terminal (progress.c). */
+#define CTN_APP_PROGRESS_AFTER 2.0   /* seconds a phase runs before its progress shows */
+typedef struct ctn_app_progress {
+    int tty;              /* stderr is a terminal: else nothing is shown */
+    const char *what;     /* the phase */
+    double start, last;   /* its start, the last line shown [s, monotonic] */
+    int shown;            /* a progress line is on the terminal */
+} ctn_app_progress;
+void ctn_app_progress_init(ctn_app_progress *p);
+/* A new phase: the clock restarts, the line is cleared. */
+void ctn_app_progress_phase(ctn_app_progress *p, const char *what);
+/* Clear the line (before printing anything else). */
+void ctn_app_progress_done(ctn_app_progress *p);
+/* The library's progress callback (ctn_ctx_set_progress), data a ctn_app_progress. */
+void ctn_app_progress_report(void *data, const char *what, double done, double total);
+/* A Newton iteration of the phase "solving". */
+void ctn_app_progress_iteration(ctn_app_progress *p, const ctn_iterate *it);
 
 /* ---- compare, study, convergence (cmd_compare.c, cmd_study.c, cmd_convergence.c) ---- */
 #include <cjson/cJSON.h>

@@ -1,18 +1,66 @@
-/* catena solve MODEL [--json] [-o DIR] [-q] */
+/* catena solve MODEL [--json] [-o DIR] [-q] [--reactions N|all] */
 #include "app.h"
 
+#include <errno.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
+/* Take `--reactions N|all` out of argv (the rest are the shared model options): the
+ * most reaction rows of the summary in *limit (-1: all). 0, or 1 after a message. */
+static int take_reactions(int *argc, char **argv, long *limit)
+{
+    *limit = CTN_APP_REACTIONS;
+    for (int i = 1; i < *argc; i++) {
+        if (strcmp(argv[i], "--reactions")) continue;
+        const char *v = i + 1 < *argc ? argv[i + 1] : "";
+        long n = -1;
+        if (strcmp(v, "all")) {
+            char *end;
+            errno = 0;
+            n = strtol(v, &end, 10);
+            if (end == v || *end || n < 0 || errno) {
+                fprintf(stderr, "catena solve: --reactions takes a count or 'all' (found '%s')\n", v);
+                return 1;
+            }
+        }
+        *limit = n;
+        for (int j = i; j + 2 <= *argc; j++) argv[j] = argv[j + 2];
+        *argc -= 2;
+        i--;
+    }
+    return 0;
+}
+
+/* What the solve monitor feeds: the iteration log (when printed) and the progress line
+ * (when the log is not on a terminal already). */
+typedef struct solve_monitor {
+    ctn_iter_log log;
+    int log_on, progress_on;
+    ctn_app_progress *progress;
+} solve_monitor;
+
+static void monitor(void *data, const ctn_iterate *it)
+{
+    solve_monitor *sm = data;
+    if (sm->log_on) ctn_print_iteration(&sm->log, it);
+    if (sm->progress_on) ctn_app_progress_iteration(sm->progress, it);
+}
 
 /* The results: files with -o, then JSON or the summary on stdout, checked. Exit code. */
-static int emit(ctn_ctx *ctx, const ctn_model_args *a, const ctn_model *m, const ctn_solution *s)
+static int emit(ctn_ctx *ctx, const ctn_model_args *a, const ctn_model *m, const ctn_solution *s,
+                ctn_app_progress *progress)
 {
+    ctn_app_progress_phase(progress, "writing");
     int rc = a->outdir ? ctn_write_results(ctx, a->outdir, m, s) : CTN_OK;
+    ctn_app_progress_done(progress);
+    ctn_ctx_set_progress(ctx, NULL, NULL);          /* stdout may share the terminal */
     if (!rc && a->json) {
         rc = ctn_write_json(ctx, stdout, m, s, 1);
         if (!rc) putchar('\n');
     } else if (!rc && !a->quiet) {
         ctn_print_summary(stdout, m, s);
+        ctn_print_reactions(stdout, m, s, a->reactions);
     }
     return rc ? ctn_app_fail(ctx, rc) : ctn_app_flush(stdout, "stdout");
 }
@@ -40,7 +88,9 @@ static void print_targets(const ctn_model *m)
 int ctn_cmd_solve(int argc, char **argv)
 {
     ctn_model_args a;
-    if (ctn_app_model_args("solve", argc, argv, &a)) return CTN_EXIT_USAGE;
+    long reactions;
+    if (take_reactions(&argc, argv, &reactions) || ctn_app_model_args("solve", argc, argv, &a)) return CTN_EXIT_USAGE;
+    a.reactions = reactions;
     ctn_ctx *ctx = NULL;
     ctn_model *m = NULL;
     ctn_solution *s = NULL;
@@ -49,24 +99,31 @@ int ctn_cmd_solve(int argc, char **argv)
         return CTN_EXIT_IO;
     }
     ctn_solve_options opt;
+    ctn_app_progress progress;
+    ctn_app_progress_init(&progress);
+    ctn_ctx_set_progress(ctx, ctn_app_progress_report, &progress);
     int rc = ctn_read_file(ctx, a.model, &m, &opt), code = CTN_EXIT_OK;
-    ctn_iter_log iters = { stdout, { 0, 0 } };
+    ctn_app_progress_done(&progress);
+    solve_monitor sm = { { stdout, { 0, 0 } }, !a.json && !a.quiet, 0, &progress };
+    sm.progress_on = !sm.log_on || !isatty(STDOUT_FILENO);
     if (!rc) rc = ctn_model_resolve_targets(ctx, m, &opt, NULL);
     if (!rc && !a.json && !a.quiet) print_targets(m);
     if (!rc) {
-        if (!a.json && !a.quiet) {
-            opt.monitor = ctn_print_iteration;
-            opt.monitor_data = &iters;
+        opt.monitor = monitor;
+        opt.monitor_data = &sm;
+        if (sm.log_on) {
             printf("%s: %zu nodes, %zu elements\n", a.model, ctn_model_node_count(m), ctn_model_element_count(m));
             printf("%-16s it  |f_ext - f_int|   |dd|        order\n", method_title(opt.method));
         }
         size_t nq = ctn_model_force_density_count(m);
         if (nq) fprintf(stderr, "catena: %s: note: %zu member%s carr%s q= or force=, which only `catena formfind` uses; "
                         "solve uses their l0\n", a.model, nq, nq == 1 ? "" : "s", nq == 1 ? "ies" : "y");
+        ctn_app_progress_phase(&progress, "solving");
         rc = ctn_solve(ctx, m, &opt, &s);
+        ctn_app_progress_done(&progress);
     }
     if (rc) code = ctn_app_fail(ctx, rc);
-    else if (!(code = emit(ctx, &a, m, s))) {
+    else if (!(code = emit(ctx, &a, m, s, &progress))) {
         ctn_solve_summary sum;
         ctn_solution_summary(s, &sum);
         code = sum.reason == CTN_CONVERGED ? CTN_EXIT_OK : CTN_EXIT_NOCONV;

@@ -7,21 +7,25 @@
 #define EXIT_CODES_NOTE "exit codes: 0 converged, 1 usage, 2 bad model, 3 not converged, 4 I/O or other error\n"
 
 static const ctn_app_command commands[] = {
-    { "solve", ctn_cmd_solve, "MODEL [--json] [-o DIR] [-q]", "MODEL [--json] [-o DIR] [-q]", "solve a .cable model (docs/format.md)",
+    { "solve", ctn_cmd_solve, "MODEL [--json] [-o DIR] [-q] [--reactions N|all]", "MODEL [--json] [-o DIR] [-q]",
+      "solve a .cable model (docs/format.md)",
       "Solve a .cable model (docs/format.md) with the options of its `solve` directive and\n"
       "print the Newton iteration log and a summary of the result.\n"
       "\n"
       "options (in any order):\n"
       "  MODEL          the model file\n"
       "  --json         print the result as JSON on stdout instead of the log and summary\n"
-      "  -o DIR         write result.json, nodes.csv and elements.csv into DIR (created if missing),\n"
-      "                 and modes.csv when the model has a `modes` line\n"
+      "  -o DIR         write result.json, nodes.csv, elements.csv and result.vtu (ParaView) into\n"
+      "                 DIR (created if missing); several steps: also result_K.vtu and result.pvd;\n"
+      "                 modes.csv when the model has a `modes` line\n"
       "  -q, --quiet    print nothing on stdout (--json still prints the JSON)\n"
+      "  --reactions N|all  list at most N reactions in the summary (default 20), or all\n"
       "  -h, --help     print this help and exit\n"
       "\n"
       "A `modes count=N [mass=consistent|lumped] [shift=HZ]` line in the model adds the N\n"
       "natural modes about the solved state: a table in the summary, \"modal\" and \"modes\"\n"
       "in the JSON (frequencies, periods, shapes, participation), modes.csv with -o.\n"
+      "On a terminal, reading, solving and writing that take over 2 s show their progress on stderr.\n"
       "\n"
       "exit codes: 0 converged, 1 usage, 2 bad model (the message names file:line),\n"
       "            3 not converged (the last converged state is still written) or the\n"

@@ -69,22 +69,6 @@ static void print_cables(FILE *out, const ctn_model *m, const ctn_solution *s)
     }
 }
 
-static void print_reactions(FILE *out, const ctn_model *m, const ctn_solution *s)
-{
-    const double *r = ctn_solution_reactions(s);
-    double sum[3] = { 0, 0, 0 };
-    const char *fu = ctn_model_force_unit(m);
-    fprintf(out, "reactions%s%s%s      node            fx            fy            fz\n", *fu ? " [" : "", fu, *fu ? "]" : "");
-    for (size_t i = 0; i < ctn_model_node_count(m); i++) {
-        ctn_node_info n;
-        ctn_model_node(m, i, &n);
-        if (!n.fix) continue;
-        fprintf(out, "                %8d  %12.6g  %12.6g  %12.6g\n", n.id, r[3 * i], r[3 * i + 1], r[3 * i + 2]);
-        for (int k = 0; k < 3; k++) sum[k] += r[3 * i + k];
-    }
-    fprintf(out, "                     sum  %12.6g  %12.6g  %12.6g\n", sum[0], sum[1], sum[2]);
-}
-
 /* Tension-only elements that carry no force. */
 static void print_slack(FILE *out, const ctn_model *m, const ctn_solution *s)
 {
@@ -171,7 +155,6 @@ void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s)
     print_slack(out, m, s);
     print_cables(out, m, s);
     ctn_print_groups(out, m, s);
-    print_reactions(out, m, s);
     ctn_print_modes(out, m, s);
 }
 

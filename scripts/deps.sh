@@ -2,6 +2,9 @@
 # Install the Debian packages catena needs, only those that are missing.
 set -eu
 pkgs="gcc binutils make cmake pkg-config libsuitesparse-dev libarpack2-dev liblapack-dev libcjson-dev gnuplot-nox clang libclang-rt-14-dev python3"
+# CTN_DEPS_VTK=1: also VTK's Python reader (76 packages), which tests/cli/vtu.sh then
+# uses besides its plain XML reader to read result.vtu back.
+[ "${CTN_DEPS_VTK:-0}" = 1 ] && pkgs="$pkgs python3-vtk9"
 missing=""
 for p in $pkgs; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

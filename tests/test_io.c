@@ -6,7 +6,12 @@
  *   ids, the hload range, n=, substeps=, maxit=, steps=, cutbacks=, arcsteps=) takes an
  *   exactly integral decimal ("7.0", "7e0", "70e-1", "0.7e1") as that integer, the same
  *   model as "7"; "7.5", "7.000000000000001", "0x7" are refused with a message naming
- *   the line and saying integer. */
+ *   the line and saying integer;
+ * - the file reader (a chunk at a time): a 1.2 MB model with CRLF, lone-CR and LF line
+ *   ends, a comment longer than the chunk, gives the model ctn_read_string gives from
+ *   the same bytes, node for node and element for element, and an error on its last
+ *   line names that line; the progress callback sees "reading" rise to the file's size;
+ * - ids far apart (1, 2, 3000, 2e9, ...) and dense ones map to their nodes. */
 #include "catena.h"
 #include "check.h"
 
@@ -176,9 +181,114 @@ static void test_integers(void)
     ctn_ctx_destroy(&ctx);
 }
 
+typedef struct progress_seen {
+    int calls;
+    double last, total;
+} progress_seen;
+
+static void on_progress(void *data, const char *what, double done, double total)
+{
+    progress_seen *p = data;
+    if (strcmp(what, "reading")) return;
+    CHECK(done >= p->last);
+    p->calls++;
+    p->last = done;
+    p->total = total;
+}
+
+/* The big text: nodes 1..n on a line, elements between them, line ends cycling through
+ * LF, CRLF and CR, a comment of `comment` bytes in the middle; `tail` appended. */
+static char *big_model(int n, size_t comment, const char *tail)
+{
+    static const char *const eol[3] = { "\n", "\r\n", "\r" };
+    size_t cap = (size_t)n * 200 + comment + 4096, k = 0;
+    char *t = malloc(cap);
+    k += (size_t)snprintf(t + k, cap - k, "units kN m\nmaterial steel E=2.0e8\nsection s material=steel A=3.14e-4\n");
+    for (int i = 1; i <= n; i++)
+        k += (size_t)snprintf(t + k, cap - k, "node %d %.17g 0 0%s%s", i, 0.5 * i, i == 1 || i == n ? " fix=xyz" : "", eol[i % 3]);
+    t[k++] = '#';
+    for (size_t c = 0; c < comment; c++) t[k++] = 'c';
+    t[k++] = '\n';
+    for (int i = 1; i < n; i++)
+        k += (size_t)snprintf(t + k, cap - k, "element %d %d %d section=s   # e%d%s", i, i, i + 1, i, eol[(i + 1) % 3]);
+    snprintf(t + k, cap - k, "%s", tail);
+    return t;
+}
+
+static void test_file_chunks(void)
+{
+    const char *path = "test_io_chunks.cable";
+    char *text = big_model(6000, 700000, "load 3000 0 -1 0\r");
+    FILE *f = fopen(path, "wb");
+    CHECK(f && fwrite(text, 1, strlen(text), f) == strlen(text) && !fclose(f));
+    ctn_ctx *ctx = NULL;
+    ctn_model *a = NULL, *b = NULL;
+    progress_seen seen = { 0, 0, 0 };
+    ctn_ctx_create(&ctx);
+    ctn_ctx_set_progress(ctx, on_progress, &seen);
+    CHECK_MSG(ctn_read_file(ctx, path, &a, NULL) == CTN_OK, "%s", ctn_ctx_message(ctx));
+    CHECK_MSG(seen.calls > 3 && seen.last == (double)strlen(text) && seen.total == seen.last, "%d calls, %g of %g",
+              seen.calls, seen.last, seen.total);
+    CHECK(ctn_read_string(ctx, path, text, strlen(text), &b, NULL) == CTN_OK);
+    CHECK(a && b && ctn_model_node_count(a) == 6000 && ctn_model_element_count(a) == 5999);
+    for (size_t i = 0; a && b && i < ctn_model_node_count(a); i++) {
+        ctn_node_info p, q;
+        ctn_model_node(a, i, &p);
+        ctn_model_node(b, i, &q);
+        CHECK(p.id == q.id && p.X[0] == q.X[0] && p.fix == q.fix && p.id == (int)i + 1);
+    }
+    for (size_t i = 0; a && b && i < ctn_model_element_count(a); i++) {
+        ctn_element_info p, q;
+        ctn_model_element(a, i, &p);
+        ctn_model_element(b, i, &q);
+        CHECK(p.id == q.id && p.node[0] == q.node[0] && p.node[1] == q.node[1] && p.l0 == q.l0);
+    }
+    ctn_model_destroy(&a);
+    ctn_model_destroy(&b);
+    free(text);
+    ctn_ctx_set_progress(ctx, NULL, NULL);
+    text = big_model(6000, 700000, "load 3000 0 -1 0\nload 6001 0 0 0\n");
+    f = fopen(path, "wb");
+    CHECK(f && fwrite(text, 1, strlen(text), f) == strlen(text) && !fclose(f));
+    CHECK(ctn_read_file(ctx, path, &a, NULL) == CTN_ERR_MODEL && !a);    /* line 3 + 6000 + 1 + 5999 + 2 */
+    CHECK_MSG(strstr(ctn_ctx_message(ctx), "test_io_chunks.cable:12005: undefined node 6001"), "%s",
+              ctn_ctx_message(ctx));
+    free(text);
+    remove(path);
+    ctn_ctx_destroy(&ctx);
+}
+
+static void test_sparse_ids(void)
+{
+    static const int ids[] = { 5, 2000000000, 1, 3000, 2, 1025, 2047483647, 4 };
+    char text[2048];
+    size_t k = (size_t)snprintf(text, sizeof text, "material m E=1\nsection s material=m A=1\n");
+    for (int i = 0; i < 8; i++) k += (size_t)snprintf(text + k, sizeof text - k, "node %d %d 0 0 fix=xyz\n", ids[i], i);
+    for (int i = 0; i < 7; i++)
+        k += (size_t)snprintf(text + k, sizeof text - k, "element %d %d %d section=s\n", ids[7 - i], ids[i], ids[i + 1]);
+    ctn_ctx *ctx = NULL;
+    ctn_model *m = NULL;
+    ctn_ctx_create(&ctx);
+    CHECK_MSG(ctn_read_string(ctx, "ids", text, strlen(text), &m, NULL) == CTN_OK, "%s", ctn_ctx_message(ctx));
+    for (int i = 0; m && i < 8; i++) {
+        size_t at = 99;
+        CHECK(ctn_model_node_index(m, ids[i], &at) == CTN_OK && at == (size_t)i);
+    }
+    for (int i = 0; m && i < 7; i++) {
+        ctn_element_info e;
+        CHECK(ctn_model_element(m, (size_t)i, &e) == CTN_OK && e.id == ids[7 - i] && e.node[0] == i && e.node[1] == i + 1);
+    }
+    size_t at;
+    CHECK(m && ctn_model_node_index(m, 3, &at) != CTN_OK && ctn_model_node_index(m, 2000000001, &at) != CTN_OK);
+    ctn_model_destroy(&m);
+    ctn_ctx_destroy(&ctx);
+}
+
 int main(void)
 {
     test_line_ends();
     test_integers();
+    test_file_chunks();
+    test_sparse_ids();
     CHECK_DONE();
 }

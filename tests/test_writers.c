@@ -495,7 +495,16 @@ static void check_json(ctn_ctx *ctx, const model_case *c, int pretty)
     cJSON_Delete(ref);
 }
 
-/* result.json, nodes.csv and elements.csv against cJSON and fprintf. */
+/* The files of a result directory: result.json, nodes.csv, elements.csv, result.vtu,
+ * and for several steps result_K.vtu each and result.pvd. */
+static int expected_files(const ctn_solution *s)
+{
+    size_t n = ctn_solution_step_count(s);
+    return 4 + (n > 1 ? (int)n + 1 : 0);
+}
+
+/* result.json, nodes.csv and elements.csv against cJSON and fprintf (result.vtu is read
+ * back by tests/cli/vtu.sh). */
 static void check_files(ctn_ctx *ctx, const model_case *c)
 {
     int finite;
@@ -510,7 +519,7 @@ static void check_files(ctn_ctx *ctx, const model_case *c)
         return;
     }
     CHECK_MSG(rc == CTN_OK, "%s: %s", c->name, ctn_ctx_message(ctx));
-    CHECK(count_entries(dir) == 3);
+    CHECK_MSG(count_entries(dir) == expected_files(c->s), "%s: %d files", c->name, count_entries(dir));
     char *want[3] = { cJSON_Print(ref), reference_csv(c->m, c->s, 0), reference_csv(c->m, c->s, 1) };
     const char *names[3] = { "result.json", "nodes.csv", "elements.csv" };
     for (int i = 0; i < 3; i++) {
@@ -544,8 +553,8 @@ static int failing_write(void *ud, const char *p, size_t n)
  * reports CTN_ERR_IO. */
 static void test_failing_sink(ctn_ctx *ctx, const model_case *c)
 {
-    const ctn_writer_ops *ops[3] = { &ctn_writer_json, &ctn_writer_nodes_csv, &ctn_writer_elements_csv };
-    for (int i = 0; i < 3; i++) {
+    const ctn_writer_ops *ops[4] = { &ctn_writer_json, &ctn_writer_nodes_csv, &ctn_writer_elements_csv, &ctn_writer_vtu };
+    for (int i = 0; i < 4; i++) {
         failing all = { ctx, (size_t)-1 };
         ctn_sink sink = { failing_write, &all };
         CHECK(ctn_writer_run(ctx, ops[i], 1, &sink, c->m, c->s) == CTN_OK);
@@ -592,7 +601,7 @@ static void test_size_limit(ctn_ctx *ctx, const model_case *big, const model_cas
     signal(SIGXFSZ, handler);
     CHECK_MSG(rc == CTN_ERR_IO && strstr(ctn_ctx_message(ctx), "write failed"), "rc %d: %s", rc,
               ctn_ctx_message(ctx));
-    CHECK(count_entries(dir) == 3);
+    CHECK(count_entries(dir) == expected_files(small->s));
     char *after = read_all(path);
     CHECK(before && after && !strcmp(before, after));
     free(before);
@@ -652,7 +661,7 @@ static int call_results(ctn_ctx *ctx, const model_case *c, const char *dir)
 {
     int rc = ctn_write_results(ctx, dir, c->m, c->s);
     if (rc) return rc;
-    rc = count_entries(dir) == 3 ? CTN_OK : CTN_ERR_IO;
+    rc = count_entries(dir) == expected_files(c->s) ? CTN_OK : CTN_ERR_IO;
     remove_dir(dir);
     return rc;
 }

@@ -55,6 +55,13 @@ void ctn_ctx_clear(ctn_ctx *ctx);
 void ctn_ctx_set_model_limit(ctn_ctx *ctx, long max_items);
 long ctn_ctx_model_limit(const ctn_ctx *ctx);
 
+/* Progress of long operations, for a program that shows it: while the library reads a
+ * model file or writes result files it calls fn(data, what, done, total) now and then,
+ * what = "reading" (done bytes of total) or "writing" (done bytes, total 0: unknown).
+ * fn NULL (the default) stops the calls. The callback must not use this context. */
+typedef void (*ctn_progress_fn)(void *data, const char *what, double done, double total);
+void ctn_ctx_set_progress(ctn_ctx *ctx, ctn_progress_fn fn, void *data);
+
 /* Testing hook: make the n-th allocation from now on (1-based) fail, 0 disables.
  * Lets tests check that every allocation failure gives CTN_ERR_NOMEM and no leak. */
 void ctn_ctx_fail_alloc_at(ctn_ctx *ctx, long n);

@@ -51,9 +51,12 @@ void ctn_json_free(char *json);
 int ctn_write_json(ctn_ctx *ctx, FILE *out, const ctn_model *m, const ctn_solution *s,
                    int pretty);
 
-/* Write result.json, nodes.csv and elements.csv into directory dir (created if
- * missing). Each file is streamed into a temporary beside its target and synced;
- * only when all three are complete are they renamed onto their targets, so a failure
+/* Write result.json, nodes.csv, elements.csv and result.vtu (VTK XML, for ParaView; the
+ * last step) into directory dir (created if missing); for a solution of several steps
+ * also result_K.vtu for every step K = 1, 2, ... and result.pvd, the collection of
+ * them (a one-step set removes an earlier result.pvd). Each file is streamed into a
+ * temporary beside its target and synced; only when all are complete are they
+ * renamed onto their targets, so a failure
  * (CTN_ERR_IO, CTN_ERR_NOMEM, CTN_ERR_INVALID for a NaN or Inf, checked before
  * anything is written) leaves no temporary and the older files, if any, untouched. */
 int ctn_write_results(ctn_ctx *ctx, const char *dir, const ctn_model *m,

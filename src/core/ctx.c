@@ -45,6 +45,18 @@ void ctn_ctx_set_model_limit(ctn_ctx *ctx, long max_items)
 
 long ctn_ctx_model_limit(const ctn_ctx *ctx) { return ctx ? ctx->model_limit : 0; }
 
+void ctn_ctx_set_progress(ctn_ctx *ctx, ctn_progress_fn fn, void *data)
+{
+    if (!ctx) return;
+    ctx->progress = fn;
+    ctx->progress_data = data;
+}
+
+void ctn_progress(ctn_ctx *ctx, const char *what, double done, double total)
+{
+    if (ctx && ctx->progress) ctx->progress(ctx->progress_data, what, done, total);
+}
+
 int ctn_error(ctn_ctx *ctx, int code, const char *fmt, ...)
 {
     if (!ctx) return code;

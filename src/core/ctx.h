@@ -14,7 +14,12 @@ struct ctn_ctx {
     long alloc_count;        /* allocations made through ctn_malloc/ctn_calloc */
     long alloc_fail_at;      /* fail the allocation with this count, 0 = never */
     long model_limit;        /* most nodes / elements in a model, 0 = no limit */
+    ctn_progress_fn progress;/* ctn_ctx_set_progress: NULL = none */
+    void *progress_data;
 };
+
+/* Report progress through the context's callback, if any. */
+void ctn_progress(ctn_ctx *ctx, const char *what, double done, double total);
 
 /* Record an error and return its code. printf-style message. */
 int ctn_error(ctn_ctx *ctx, int code, const char *fmt, ...)

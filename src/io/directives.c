@@ -1,4 +1,5 @@
 /* The directives of the .cable format (docs/format.md), one handler each. */
+#include "io/fmt.h"
 #include "io/parse.h"
 #include "catena/formfind.h"
 #include "solve/problem.h"
@@ -175,8 +176,9 @@ static int d_element(ctn_line *l)
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[3], &b);
     const char *sec = rc ? NULL : ctn_parse_key(l, 4, "section");
     if (!rc && !sec) return ctn_parse_error(l, "element: missing required key 'section='");
-    char what[32];
-    snprintf(what, sizeof what, "element %d", id);
+    char what[8 + CTN_FMT_MAX];
+    memcpy(what, "element ", 8);
+    ctn_fmt_int(what + 8, id);                       /* once per line: not printf */
     ctn_element_spec spec;
     int nodes[2] = { a, b };
     ctn_element_spec_init(&spec);
@@ -201,8 +203,9 @@ static int d_spring(ctn_line *l)
     if (!rc) rc = ctn_parse_int(l, "the element id", l->tok[1], &id);
     for (int k = 0; k < 2 && !rc; k++) rc = ctn_parse_int(l, "a node id", l->tok[2 + k], &nodes[k]);
     if (!rc) rc = ctn_parse_key_num(l, 4, "k", 1, &spec.k);
-    char what[32];
-    snprintf(what, sizeof what, "spring %d", id);
+    char what[8 + CTN_FMT_MAX];
+    memcpy(what, "spring ", 7);
+    ctn_fmt_int(what + 7, id);
     if (!rc) rc = ctn_parse_prestress(l, 4, what, &spec.l0, &spec.prestress, &spec.prestress_value);
     if (!rc) rc = density_keys(l, 4, what, spec.l0 != CTN_L0_DEFAULT || spec.prestress, &spec.q, &spec.force);
     if (!rc && !(spec.k > 0)) return ctn_parse_error(l, "spring %d: k must be positive (found %g)", id, spec.k);

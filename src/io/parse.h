@@ -49,6 +49,13 @@ int ctn_read_tokenize(ctn_line *l, char *s);
 size_t ctn_read_line_end(const char *text, size_t start, size_t len, size_t *next);
 /* A whole file into memory (*data allocated, *len bytes; at most 2 GiB). */
 int ctn_read_all(ctn_ctx *ctx, const char *path, char **data, size_t *len);
+/* Scan the lines of text[0 .. len) in place and run their directives (scan.c), counting
+ * lines on from l->line. The last line ends with a line break, or at len where
+ * text[len] must be a NUL. */
+int ctn_parse_lines(ctn_line *l, char *text, size_t len);
+/* The length of the complete lines at the start of text[0 .. len): up to the last line
+ * break that is known to end its line (a CR at len - 1 may be half a CRLF); 0 if none. */
+size_t ctn_parse_complete(const char *text, size_t len);
 
 /* The directive handlers (directives.c). */
 int ctn_parse_directive(ctn_line *l);

@@ -1,7 +1,9 @@
-/* Result files: result.json, nodes.csv and elements.csv in a directory (and modes.csv
- * when the solution has modes). Each is
- * streamed by its writer (io/writer.h) into a staged temporary (io/atomic.h), synced;
- * only when all three are staged is any renamed onto its target. */
+/* Result files in a directory: result.json, nodes.csv, elements.csv, result.vtu (the
+ * last step), modes.csv when the solution has modes, and for a run of several steps
+ * result_K.vtu for every step and
+ * result.pvd listing them. Each is streamed by its writer (io/writer.h) into a staged
+ * temporary (io/atomic.h), synced; only when all are staged is any renamed onto its
+ * target. */
 #include "io/atomic.h"
 #include "io/writer.h"
 #include "catena/io.h"
@@ -10,17 +12,37 @@
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
-#define NFILES 4
+#define NFIXED 4
 
-static const ctn_writer_ops *const writers[NFILES] = {
-    &ctn_writer_json, &ctn_writer_nodes_csv, &ctn_writer_elements_csv, &ctn_writer_modes_csv
-};
+/* One file of the set: its writer, the step it writes (one-step writers) and its name. */
+typedef struct job {
+    const ctn_writer_ops *ops;
+    size_t step;
+    char name[CTN_VTU_NAME_MAX];
+} job;
 
-/* Whether the set holds the file of writer ops for solution s. */
-static int wanted(const ctn_writer_ops *ops, const ctn_solution *s)
+/* The set for solution s of n steps: NFIXED files, modes.csv when s has modes, and n + 1
+ * more (result_K.vtu, result.pvd) when n > 1. */
+static job *plan(ctn_ctx *ctx, const ctn_solution *s, size_t *count)
 {
-    return ops != &ctn_writer_modes_csv || ctn_solution_mode_count(s) > 0;
+    static const ctn_writer_ops *const fixed[NFIXED] = {
+        &ctn_writer_json, &ctn_writer_nodes_csv, &ctn_writer_elements_csv, &ctn_writer_vtu
+    };
+    size_t n = ctn_solution_step_count(s), nf = NFIXED + (ctn_solution_mode_count(s) > 0);
+    *count = nf + (n > 1 ? n + 1 : 0);
+    job *j = ctn_calloc(ctx, *count, sizeof *j);
+    if (!j) return NULL;
+    for (size_t i = 0; i < *count; i++) {
+        const ctn_writer_ops *ops = i < NFIXED ? fixed[i] : i < nf ? &ctn_writer_modes_csv
+                                    : i + 1 < *count ? &ctn_writer_vtu : &ctn_writer_pvd;
+        j[i].ops = ops;
+        j[i].step = i < nf || i + 1 == *count ? n - 1 : i - nf;
+        if (i < nf || i + 1 == *count) snprintf(j[i].name, sizeof j[i].name, "%s", ops->name);
+        else ctn_vtu_step_name(j[i].name, j[i].step, n);
+    }
+    return j;
 }
 
 static int target(ctn_ctx *ctx, const char *dir, const char *name, char *path, size_t size)
@@ -30,12 +52,12 @@ static int target(ctn_ctx *ctx, const char *dir, const char *name, char *path, s
 }
 
 /* A target that exists must be a regular file (checked before anything is written). */
-static int check_targets(ctn_ctx *ctx, const char *dir)
+static int check_targets(ctn_ctx *ctx, const char *dir, const job *jobs, size_t n)
 {
-    for (int i = 0; i < NFILES; i++) {
+    for (size_t i = 0; i < n; i++) {
         char path[4096];
         struct stat st;
-        int rc = target(ctx, dir, writers[i]->name, path, sizeof path);
+        int rc = target(ctx, dir, jobs[i].name, path, sizeof path);
         if (rc) return rc;
         if (!stat(path, &st) && !S_ISREG(st.st_mode))
             return ctn_error(ctx, CTN_ERR_IO, "%s: exists and is not a regular file", path);
@@ -45,36 +67,57 @@ static int check_targets(ctn_ctx *ctx, const char *dir)
 
 /* Stream one file into its temporary beside dir/name and sync it. On failure the
  * caller aborts f. */
-static int stage(ctn_ctx *ctx, const char *dir, const ctn_writer_ops *ops, const ctn_model *m,
+static int stage(ctn_ctx *ctx, const char *dir, const job *j, const ctn_model *m,
                  const ctn_solution *s, ctn_atomic_file *f)
 {
     char path[4096];
-    int rc = target(ctx, dir, ops->name, path, sizeof path);
+    int rc = target(ctx, dir, j->name, path, sizeof path);
     if (!rc) rc = ctn_atomic_open(ctx, path, f);
     if (rc) return rc;
     ctn_sink sink = ctn_atomic_sink(f);
-    rc = ctn_writer_run(ctx, ops, 1, &sink, m, s);
+    rc = ctn_writer_run_step(ctx, j->ops, 1, j->step, &sink, m, s);
     return rc ? rc : ctn_atomic_close(f);
 }
 
-/* All the files are staged before any replaces an older one, so a failure leaves the
+/* Every file is staged before any replaces an older one, so a failure leaves the
  * previous set (or nothing) in place, never a mix. */
+static int write_set(ctn_ctx *ctx, const char *dir, const job *jobs, size_t n, const ctn_model *m,
+                     const ctn_solution *s, ctn_atomic_file *f)
+{
+    int rc = check_targets(ctx, dir, jobs, n);
+    for (size_t i = 0; i < n; i++) f[i] = (ctn_atomic_file)CTN_ATOMIC_FILE_INIT;
+    for (size_t i = 0; i < n && !rc; i++) rc = stage(ctx, dir, &jobs[i], m, s, &f[i]);
+    for (size_t i = 0; i < n; i++) {
+        if (!rc) rc = ctn_atomic_commit(&f[i]);
+        else ctn_atomic_abort(&f[i]);
+    }
+    return rc;
+}
+
+/* After a one-step set: an earlier run's result.pvd would list other steps' files. */
+static int remove_stale(ctn_ctx *ctx, const char *dir)
+{
+    char path[4096];
+    int rc = target(ctx, dir, ctn_writer_pvd.name, path, sizeof path);
+    if (!rc && unlink(path) && errno != ENOENT)
+        rc = ctn_error(ctx, CTN_ERR_IO, "%s: cannot remove: %s", path, strerror(errno));
+    return rc;
+}
+
 int ctn_write_results(ctn_ctx *ctx, const char *dir, const ctn_model *m,
                       const ctn_solution *s)
 {
-    ctn_atomic_file f[NFILES] = { CTN_ATOMIC_FILE_INIT, CTN_ATOMIC_FILE_INIT, CTN_ATOMIC_FILE_INIT, CTN_ATOMIC_FILE_INIT };
     if (!dir || !m || !s) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_write_results: bad arguments");
     int rc = ctn_result_check(ctx, m, s);
     if (rc) return rc;
     if (mkdir(dir, 0755) && errno != EEXIST)
         return ctn_error(ctx, CTN_ERR_IO, "%s: cannot create directory: %s", dir, strerror(errno));
-    rc = check_targets(ctx, dir);
-    for (int i = 0; i < NFILES && !rc; i++)
-        if (wanted(writers[i], s)) rc = stage(ctx, dir, writers[i], m, s, &f[i]);
-    for (int i = 0; i < NFILES; i++) {
-        if (!wanted(writers[i], s)) continue;
-        if (!rc) rc = ctn_atomic_commit(&f[i]);
-        else ctn_atomic_abort(&f[i]);
-    }
+    size_t n = 0;
+    job *jobs = plan(ctx, s, &n);
+    ctn_atomic_file *f = jobs ? ctn_calloc(ctx, n, sizeof *f) : NULL;
+    rc = f ? write_set(ctx, dir, jobs, n, m, s, f) : CTN_ERR_NOMEM;
+    if (!rc && ctn_solution_step_count(s) == 1) rc = remove_stale(ctx, dir);
+    ctn_free(f);
+    ctn_free(jobs);
     return rc;
 }

@@ -17,6 +17,7 @@ int ctn_wbuf_flush(ctn_wbuf *b)
     if (!b->err && b->n) {
         b->err = b->sink->write(b->sink->ud, b->p, b->n);
         if (!b->err) b->total += b->n;
+        if (!b->err) ctn_progress(b->ctx, "writing", (double)b->total, 0);
     }
     b->n = 0;
     return b->err;

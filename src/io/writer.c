@@ -20,13 +20,22 @@ int ctn_writer_run(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, ctn_sink
                    const ctn_model *m, const ctn_solution *s)
 {
     size_t n = ctn_solution_step_count(s);
+    return ctn_writer_run_step(ctx, ops, pretty, n ? n - 1 : 0, sink, m, s);
+}
+
+int ctn_writer_run_step(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, size_t k, ctn_sink *sink,
+                        const ctn_model *m, const ctn_solution *s)
+{
+    size_t n = ctn_solution_step_count(s);
     if (!n) return ctn_error(ctx, CTN_ERR_INVALID, "%s: the solution has no step", ops->name);
+    if (k >= n) return ctn_error(ctx, CTN_ERR_INVALID, "%s: no step %zu", ops->name, k + 1);
     ctn_writer *w = ctn_calloc(ctx, 1, ops->size);
     if (!w) return CTN_ERR_NOMEM;
     w->ctx = ctx;
     w->pretty = pretty;
+    w->step = k;
     int rc = ops->begin(w, m, sink);
-    for (size_t k = 0; k < n && !rc; k++) rc = ops->step(w, s, k);
+    for (size_t i = 0; i < n && !rc; i++) rc = ops->step(w, s, i);
     if (!rc) rc = ops->end(w);
     int rc_close = ctn_wbuf_close(&w->out);
     ctn_free(w);

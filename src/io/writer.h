@@ -22,6 +22,8 @@ typedef struct ctn_writer {
                               cJSON_PrintUnformatted's */
     const ctn_model *m;    /* set by ctn_writer_open */
     ctn_wbuf out;          /* opened by ctn_writer_open, closed by the driver */
+    size_t step;           /* set by the driver: the step a one-step writer (result.vtu)
+                              writes; ctn_writer_run: the last */
 } ctn_writer;
 
 typedef struct ctn_writer_ops {
@@ -36,6 +38,14 @@ extern const ctn_writer_ops ctn_writer_json;          /* result.json (docs/forma
 extern const ctn_writer_ops ctn_writer_nodes_csv;     /* nodes.csv: the last step */
 extern const ctn_writer_ops ctn_writer_elements_csv;  /* elements.csv: the last step */
 extern const ctn_writer_ops ctn_writer_modes_csv;     /* modes.csv: the modal analysis */
+extern const ctn_writer_ops ctn_writer_vtu;           /* result.vtu: one step (vtu.c) */
+extern const ctn_writer_ops ctn_writer_pvd;           /* result.pvd: the steps' .vtu files */
+
+/* The file of step k (0-based) of n in a result directory: "result_K.vtu", K = k + 1
+ * written with as many digits as n has (zero-padded, so that names sort), in
+ * name[CTN_VTU_NAME_MAX]. */
+#define CTN_VTU_NAME_MAX 48
+void ctn_vtu_step_name(char *name, size_t k, size_t n);
 
 /* For begin: remember the model, open the buffered output over sink. */
 int ctn_writer_open(ctn_writer *w, const ctn_model *m, ctn_sink *sink);
@@ -45,6 +55,9 @@ int ctn_writer_mismatch(ctn_writer *w);
 /* Run one writer over sink: begin, step for every step of s, end, flush. */
 int ctn_writer_run(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, ctn_sink *sink,
                    const ctn_model *m, const ctn_solution *s);
+/* The same with the writer's step (ctn_writer.step) set to k < the step count. */
+int ctn_writer_run_step(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, size_t k, ctn_sink *sink,
+                        const ctn_model *m, const ctn_solution *s);
 /* CTN_OK if every number the writers print is finite, else CTN_ERR_INVALID recorded. */
 int ctn_result_check(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s);
 

@@ -15,8 +15,9 @@
 #   --json      exit 0/3: stdout is valid JSON with "converged" true/false;
 #               exit 2/4: stdout empty;
 #   -q -o DIR   no temporary or partial file left in DIR; exit 2/4: DIR holds nothing;
-#               exit 0: result.json (valid, "converged": true), nodes.csv, elements.csv;
-#               exit 3: those three files (result.json with "converged": false) or none;
+#               exit 0: result.json (valid, "converged": true), nodes.csv, elements.csv,
+#               result.vtu (and result.pvd with result_K.vtu for several steps);
+#               exit 3: those files (result.json with "converged": false) or none;
 #   CRLF        the same file with DOS line endings: same code, same message and line;
 #   CR          the same file with old Mac line endings (a lone CR): likewise.
 # Hostile inputs that cannot be committed (empty, binary, huge lines, directories,
@@ -117,7 +118,8 @@ check_outdir() {
         WHY+=("-o: expected exit $code, got $(describe "$rc"); stderr: $(head -c 300 "$T/err")")
     if [ -d "$dir" ]; then
         local stray
-        stray=$(find "$dir" -mindepth 1 ! -name result.json ! -name nodes.csv ! -name elements.csv ! -name modes.csv | head -3)
+        stray=$(find "$dir" -mindepth 1 ! -name result.json ! -name nodes.csv ! -name elements.csv \
+                     ! -name modes.csv ! -name result.vtu ! -name result.pvd ! -name 'result_[0-9]*.vtu' | head -3)
         [ -z "$stray" ] && stray=$(find "$dir" -mindepth 1 -name '*tmp*' | head -3)
         [ -n "$stray" ] && WHY+=("-o: stray (temporary or partial) files: $stray")
     fi
@@ -125,11 +127,11 @@ check_outdir() {
         0|3)
             local want=true f n=0
             [ "$code" = 3 ] && want=false
-            for f in result.json nodes.csv elements.csv; do
+            for f in result.json nodes.csv elements.csv result.vtu; do
                 [ -s "$dir/$f" ] && n=$((n + 1))
             done
             if [ "$code" = 0 ] || [ "$n" != 0 ]; then     # exit 3 may write all or nothing
-                [ "$n" = 3 ] || WHY+=("-o: expected result.json, nodes.csv, elements.csv; found: $(ls -A "$dir" 2>/dev/null | tr '\n' ' ')")
+                [ "$n" = 4 ] || WHY+=("-o: expected result.json, nodes.csv, elements.csv, result.vtu; found: $(ls -A "$dir" 2>/dev/null | tr '\n' ' ')")
             fi
             [ -s "$dir/result.json" ] && { json_converged "$dir/result.json" "$want" ||
                 WHY+=("-o: result.json is not valid JSON with \"converged\": $want"); }

@@ -5,7 +5,8 @@
 #   - --json: valid JSON with the keys of docs/format.md ("Results"), consistent counts,
 #     finite numbers, the residual test met, reactions balancing the self-weight;
 #   - -o DIR: result.json (the same document as --json), nodes.csv and elements.csv with
-#     their headers and one row per node / element, and nothing else in DIR;
+#     their headers and one row per node / element, result.vtu (its contents are
+#     tests/cli/vtu.sh's), and nothing else in DIR;
 #   - -q prints nothing; help exits 0; usage errors exit 1 with a message on stderr;
 #   - every complete model (```cable block) of docs/format.md gives its exit code.
 # Run from the repository root (ctest does). Prints "N passed, N failed"; exit 1 on any
@@ -143,7 +144,7 @@ for f in examples/paper/*.cable; do
         rc=$?
         [ "$rc" = 0 ] || WHY+=("-o ($pass): exit $rc: $(head -c 300 "$T/err")")
     done
-    extra=$(ls -A "$dir" 2>/dev/null | grep -vxE 'result\.json|nodes\.csv|elements\.csv')
+    extra=$(ls -A "$dir" 2>/dev/null | grep -vxE 'result\.json|nodes\.csv|elements\.csv|result\.vtu')
     [ -z "$extra" ] || WHY+=("-o: unexpected files: $extra")
     if [ -s "$dir/result.json" ]; then
         msg=$(check_result_json "$dir/result.json" 21 20 "$W" 2>&1) || WHY+=("result.json: $msg")
@@ -316,7 +317,7 @@ dir=$T/fsize
 cp "$dir/result.json" "$T/fsize_before.json" 2>/dev/null
 (ulimit -f 4; trap '' XFSZ; exec "$BIN" solve "$EX" -q -o "$dir") >"$T/out" 2>"$T/err"; rc=$?
 io_case "-o with the file size limit hit" 'result.json: write failed: File too large'
-extra=$(ls -A "$dir" | grep -vxE 'result\.json|nodes\.csv|elements\.csv')
+extra=$(ls -A "$dir" | grep -vxE 'result\.json|nodes\.csv|elements\.csv|result\.vtu')
 [ -z "$extra" ] || WHY+=("files left: $extra")
 cmp -s "$dir/result.json" "$T/fsize_before.json" || WHY+=("the older result.json was replaced")
 finish "-o with the file size limit hit: the older set kept"

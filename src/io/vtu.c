@@ -1,0 +1,316 @@
+/* result.vtu: one step of the result as a VTK XML UnstructuredGrid (ascii, numbers as
+ * "%.17g", so they round-trip), for ParaView (docs/format.md, "ParaView").
+ *
+ *   points      the nodes in model order (result.json's "nodes"), at their reference
+ *               coordinates; the point data hold the displacements (ParaView's "Warp
+ *               By Vector" draws the deformed shape)
+ *   cells       the elements in model order (result.json's "elements"): a line (VTK
+ *               type 3) through the two nodes of a two-node element, a polyline (4)
+ *               through the nodes of a longer one
+ *   field data  load_factor of the step
+ *
+ * Point and cell arrays come from one table, fields[]: a name, where, how many
+ * components, and a function giving the values of one point or cell. An entry may stand
+ * for no array (a value the model does not know) or for several, numbered NAME_1,
+ * NAME_2, ... (e.g. one array per vibration mode). To add an array, add one entry. */
+#include "io/writer.h"
+
+#include <stdio.h>
+
+/* What a field's functions see: the model, the solution and the step written. */
+typedef struct vtu_data {
+    const ctn_model *m;
+    const ctn_solution *s;
+    size_t k;                       /* the step (0-based) */
+    ctn_step_result st;             /* its displacements, reactions, load factor */
+} vtu_data;
+
+typedef enum vtu_where { VTU_POINT, VTU_CELL } vtu_where;
+
+typedef struct vtu_field {
+    const char *name;               /* the array's Name */
+    vtu_where where;
+    int ncomp;                      /* components per tuple: 1 or 3 */
+    int integer;                    /* 1: written as Int32, else Float64 */
+    /* NULL: one array named `name`. Else the number of arrays of the entry (0: none;
+     * when numbered, NAME_1 .. NAME_count, else at most 1, named NAME). */
+    size_t (*count)(const vtu_data *d);
+    int numbered;
+    /* The ncomp values of point or cell i of array j (0-based) into v; CTN_OK or
+     * CTN_ERR_INVALID (a solution of another model). */
+    int (*get)(const vtu_data *d, size_t j, size_t i, double *v);
+} vtu_field;
+
+static int point_displacement(const vtu_data *d, size_t j, size_t i, double *v)
+{
+    (void)j;
+    for (int c = 0; c < 3; c++) v[c] = d->st.d[3 * i + (size_t)c];
+    return CTN_OK;
+}
+
+static int point_reaction(const vtu_data *d, size_t j, size_t i, double *v)
+{
+    (void)j;
+    for (int c = 0; c < 3; c++) v[c] = d->st.react[3 * i + (size_t)c];
+    return CTN_OK;
+}
+
+/* One number of the state of element i at the step: the force, the stress (0 for a
+ * spring: it has no section), the strain or slack (0 or 1). */
+enum { CELL_FORCE, CELL_STRESS, CELL_STRAIN, CELL_SLACK };
+static int cell_value(const vtu_data *d, size_t i, int which, double *v)
+{
+    ctn_element_info e;
+    ctn_element_state es;
+    if (ctn_model_element(d->m, i, &e) || ctn_solution_step_element(d->s, d->k, i, &es)) return CTN_ERR_INVALID;
+    double values[4] = { es.force, e.has_section ? es.stress : 0, es.strain, es.slack };
+    *v = values[which];
+    return CTN_OK;
+}
+
+static int cell_force(const vtu_data *d, size_t j, size_t i, double *v) { (void)j; return cell_value(d, i, CELL_FORCE, v); }
+static int cell_stress(const vtu_data *d, size_t j, size_t i, double *v) { (void)j; return cell_value(d, i, CELL_STRESS, v); }
+static int cell_strain(const vtu_data *d, size_t j, size_t i, double *v) { (void)j; return cell_value(d, i, CELL_STRAIN, v); }
+static int cell_slack(const vtu_data *d, size_t j, size_t i, double *v) { (void)j; return cell_value(d, i, CELL_SLACK, v); }
+
+/* utilisation: N / (mbl / safety), 0 for members whose section has no mbl; an array
+ * only when some section has one. */
+static size_t has_capacity(const vtu_data *d)
+{
+    for (size_t i = 0; i < ctn_model_element_count(d->m); i++) {
+        ctn_element_info e;
+        if (!ctn_model_element(d->m, i, &e) && e.capacity > 0) return 1;
+    }
+    return 0;
+}
+
+static int cell_utilisation(const vtu_data *d, size_t j, size_t i, double *v)
+{
+    ctn_element_info e;
+    ctn_element_state es;
+    (void)j;
+    if (ctn_model_element(d->m, i, &e) || ctn_solution_step_element(d->s, d->k, i, &es)) return CTN_ERR_INVALID;
+    *v = ctn_utilisation(&e, &es);
+    return CTN_OK;
+}
+
+/* mode_1 .. mode_n: the shapes of the modal analysis about the last step (mass-
+ * normalized, 3 per node), in that step's files only. */
+static size_t mode_count(const vtu_data *d)
+{
+    return d->k + 1 == ctn_solution_step_count(d->s) ? ctn_solution_mode_count(d->s) : 0;
+}
+
+static int point_mode(const vtu_data *d, size_t j, size_t i, double *v)
+{
+    ctn_mode md;
+    if (ctn_solution_mode(d->s, j, &md) || i >= ctn_model_node_count(d->m)) return CTN_ERR_INVALID;
+    for (int c = 0; c < 3; c++) v[c] = md.shape[3 * i + (size_t)c];
+    return CTN_OK;
+}
+
+/* The arrays, one entry each. */
+static const vtu_field fields[] = {
+    { "displacement", VTU_POINT, 3, 0, NULL, 0, point_displacement },
+    { "reaction", VTU_POINT, 3, 0, NULL, 0, point_reaction },
+    { "force", VTU_CELL, 1, 0, NULL, 0, cell_force },
+    { "stress", VTU_CELL, 1, 0, NULL, 0, cell_stress },
+    { "strain", VTU_CELL, 1, 0, NULL, 0, cell_strain },
+    { "slack", VTU_CELL, 1, 1, NULL, 0, cell_slack },
+    { "utilisation", VTU_CELL, 1, 0, has_capacity, 0, cell_utilisation },
+    { "mode", VTU_POINT, 3, 0, mode_count, 1, point_mode },
+};
+
+#define NFIELDS (sizeof fields / sizeof *fields)
+
+static void put_int(ctn_wbuf *b, long long v, char after)
+{
+    ctn_wbuf_int(b, v);
+    ctn_wbuf_putc(b, after);
+}
+
+/* <DataArray type=... Name=... NumberOfComponents=... format="ascii">, name NULL: none. */
+static void array_open(ctn_wbuf *b, const char *type, const char *name, size_t j, int numbered, int ncomp)
+{
+    ctn_wbuf_puts(b, "        <DataArray type=\"");
+    ctn_wbuf_puts(b, type);
+    if (name) {
+        ctn_wbuf_puts(b, "\" Name=\"");
+        ctn_wbuf_puts(b, name);
+        if (numbered) {
+            ctn_wbuf_putc(b, '_');
+            ctn_wbuf_int(b, (long long)j + 1);
+        }
+    }
+    ctn_wbuf_puts(b, "\" NumberOfComponents=\"");
+    ctn_wbuf_int(b, ncomp);
+    ctn_wbuf_puts(b, "\" format=\"ascii\">\n");
+}
+
+static void array_close(ctn_wbuf *b) { ctn_wbuf_puts(b, "        </DataArray>\n"); }
+
+/* Array j of field f over its n points or cells, one tuple per line. */
+static int put_array(ctn_writer *w, const vtu_data *d, const vtu_field *f, size_t j, size_t n)
+{
+    ctn_wbuf *b = &w->out;
+    array_open(b, f->integer ? "Int32" : "Float64", f->name, j, f->numbered, f->ncomp);
+    for (size_t i = 0; i < n && !b->err; i++) {
+        double v[3];
+        if (f->get(d, j, i, v)) return ctn_writer_mismatch(w);
+        for (int c = 0; c < f->ncomp; c++) {
+            if (c) ctn_wbuf_putc(b, ' ');
+            if (f->integer) ctn_wbuf_int(b, (long long)v[c]);
+            else ctn_wbuf_g17(b, v[c]);
+        }
+        ctn_wbuf_putc(b, '\n');
+    }
+    array_close(b);
+    return b->err;
+}
+
+/* <PointData> or <CellData>: every array of the fields of that kind. */
+static int put_data(ctn_writer *w, const vtu_data *d, vtu_where where, size_t n)
+{
+    ctn_wbuf_puts(&w->out, where == VTU_POINT ? "      <PointData>\n" : "      <CellData>\n");
+    for (size_t f = 0; f < NFIELDS && !w->out.err; f++) {
+        if (fields[f].where != where) continue;
+        size_t count = fields[f].count ? fields[f].count(d) : 1;
+        if (!fields[f].numbered && count > 1) count = 1;
+        for (size_t j = 0; j < count; j++) {
+            int rc = put_array(w, d, &fields[f], j, n);
+            if (rc) return rc;
+        }
+    }
+    ctn_wbuf_puts(&w->out, where == VTU_POINT ? "      </PointData>\n" : "      </CellData>\n");
+    return w->out.err;
+}
+
+/* <Points>: the reference coordinates. */
+static int put_points(ctn_writer *w, size_t nn)
+{
+    ctn_wbuf *b = &w->out;
+    ctn_wbuf_puts(b, "      <Points>\n");
+    array_open(b, "Float64", "coordinates", 0, 0, 3);
+    for (size_t i = 0; i < nn && !b->err; i++) {
+        ctn_node_info p;
+        if (ctn_model_node(w->m, i, &p)) return ctn_writer_mismatch(w);
+        for (int c = 0; c < 3; c++) {
+            ctn_wbuf_g17(b, p.X[c]);
+            ctn_wbuf_putc(b, c < 2 ? ' ' : '\n');
+        }
+    }
+    array_close(b);
+    ctn_wbuf_puts(b, "      </Points>\n");
+    return b->err;
+}
+
+/* <Cells>: connectivity (node indices), offsets (the end of each cell's run) and types
+ * (3 line, 4 polyline). A curved element drawn by sample points would add its points
+ * after the nodes and be a polyline through them. */
+static int put_cells(ctn_writer *w, size_t ne)
+{
+    ctn_wbuf *b = &w->out;
+    ctn_element_info e;
+    long long end = 0;
+    ctn_wbuf_puts(b, "      <Cells>\n");
+    array_open(b, "Int64", "connectivity", 0, 0, 1);
+    for (size_t i = 0; i < ne && !b->err; i++) {
+        if (ctn_model_element(w->m, i, &e)) return ctn_writer_mismatch(w);
+        for (int k = 0; k < e.nnodes; k++) put_int(b, e.nodes[k], k + 1 < e.nnodes ? ' ' : '\n');
+    }
+    array_close(b);
+    array_open(b, "Int64", "offsets", 0, 0, 1);
+    for (size_t i = 0; i < ne && !b->err && !ctn_model_element(w->m, i, &e); i++) put_int(b, end += e.nnodes, '\n');
+    array_close(b);
+    array_open(b, "UInt8", "types", 0, 0, 1);
+    for (size_t i = 0; i < ne && !b->err && !ctn_model_element(w->m, i, &e); i++) put_int(b, e.nnodes == 2 ? 3 : 4, '\n');
+    array_close(b);
+    ctn_wbuf_puts(b, "      </Cells>\n");
+    return b->err;
+}
+
+/* begin: open the output and print text; end: print text. */
+static int begin_with(void *p, const ctn_model *m, ctn_sink *sink, const char *text)
+{
+    ctn_writer *w = p;
+    int rc = ctn_writer_open(w, m, sink);
+    if (!rc) ctn_wbuf_puts(&w->out, text);
+    return rc ? rc : w->out.err;
+}
+
+static int end_with(void *p, const char *text)
+{
+    ctn_writer *w = p;
+    ctn_wbuf_puts(&w->out, text);
+    return w->out.err;
+}
+
+static int vtu_begin(void *p, const ctn_model *m, ctn_sink *sink)
+{
+    return begin_with(p, m, sink, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+                                  "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <UnstructuredGrid>\n");
+}
+
+/* The piece of the writer's step: field data, point data, cell data, points, cells. */
+static int vtu_step(void *p, const ctn_solution *s, size_t k)
+{
+    ctn_writer *w = p;
+    if (k != w->step) return CTN_OK;
+    vtu_data d = { w->m, s, k, { 0 } };
+    size_t nn = ctn_model_node_count(w->m), ne = ctn_model_element_count(w->m);
+    if (ctn_solution_step(s, k, &d.st)) return ctn_writer_mismatch(w);
+    ctn_wbuf *b = &w->out;
+    ctn_wbuf_puts(b, "    <FieldData>\n");
+    ctn_wbuf_puts(b, "      <DataArray type=\"Float64\" Name=\"load_factor\" NumberOfTuples=\"1\" format=\"ascii\">");
+    ctn_wbuf_g17(b, d.st.load_factor);
+    ctn_wbuf_puts(b, "</DataArray>\n    </FieldData>\n    <Piece NumberOfPoints=\"");
+    ctn_wbuf_int(b, (long long)nn);
+    ctn_wbuf_puts(b, "\" NumberOfCells=\"");
+    ctn_wbuf_int(b, (long long)ne);
+    ctn_wbuf_puts(b, "\">\n");
+    int rc = put_data(w, &d, VTU_POINT, nn);
+    if (!rc) rc = put_data(w, &d, VTU_CELL, ne);
+    if (!rc) rc = put_points(w, nn);
+    if (!rc) rc = put_cells(w, ne);
+    ctn_wbuf_puts(b, "    </Piece>\n");
+    return rc ? rc : b->err;
+}
+
+static int vtu_end(void *p) { return end_with(p, "  </UnstructuredGrid>\n</VTKFile>\n"); }
+
+const ctn_writer_ops ctn_writer_vtu = { .name = "result.vtu", .size = sizeof(ctn_writer), .begin = vtu_begin,
+                                        .step = vtu_step, .end = vtu_end };
+
+/* ---- result.pvd: the collection of the steps' files, for ParaView's time slider ---- */
+
+void ctn_vtu_step_name(char *name, size_t k, size_t n)
+{
+    int width = 1;
+    for (size_t v = n; v >= 10; v /= 10) width++;
+    snprintf(name, CTN_VTU_NAME_MAX, "result_%0*zu.vtu", width, k + 1);
+}
+
+static int pvd_begin(void *p, const ctn_model *m, ctn_sink *sink)
+{
+    return begin_with(p, m, sink, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" "
+                                  "byte_order=\"LittleEndian\">\n  <Collection>\n");
+}
+
+/* Step k at time k + 1 (the step's number). */
+static int pvd_step(void *p, const ctn_solution *s, size_t k)
+{
+    ctn_writer *w = p;
+    char name[CTN_VTU_NAME_MAX];
+    ctn_vtu_step_name(name, k, ctn_solution_step_count(s));
+    ctn_wbuf_puts(&w->out, "    <DataSet timestep=\"");
+    ctn_wbuf_int(&w->out, (long long)k + 1);
+    ctn_wbuf_puts(&w->out, "\" group=\"\" part=\"0\" file=\"");
+    ctn_wbuf_puts(&w->out, name);
+    ctn_wbuf_puts(&w->out, "\"/>\n");
+    return w->out.err;
+}
+
+static int pvd_end(void *p) { return end_with(p, "  </Collection>\n</VTKFile>\n"); }
+
+const ctn_writer_ops ctn_writer_pvd = { .name = "result.pvd", .size = sizeof(ctn_writer), .begin = pvd_begin,
+                                        .step = pvd_step, .end = pvd_end };
