@@ -12,6 +12,7 @@
 static int span_keys(ctn_line *l, int from, const char *what, ctn_element_spec *spec)
 {
     spec->section = ctn_parse_key(l, from, "section");
+    spec->group = ctn_parse_key(l, from, "group");
     if (!spec->section) return ctn_parse_error(l, "%s: missing required key 'section='", what);
     int rc = ctn_parse_prestress(l, from, what, NULL, &spec->prestress, &spec->prestress_value);
     if (rc || !ctn_parse_key(l, from, "length")) return rc;
@@ -28,7 +29,7 @@ int ctn_parse_catenary(ctn_line *l)
     char what[32];
     ctn_element_spec spec;
     ctn_element_spec_init(&spec);
-    int rc = ctn_parse_positional(l, 3, "catenary ID NODE1 NODE2 section=SECTION [length=LENGTH|N0=FORCE|s0=STRESS|eps0=STRAIN]");
+    int rc = ctn_parse_positional(l, 3, "catenary ID NODE1 NODE2 section=SECTION [length=LENGTH|N0=FORCE|s0=STRESS|eps0=STRAIN] [group=NAME]");
     if (!rc) rc = ctn_parse_int(l, "the element id", l->tok[1], &id);
     for (int k = 0; k < 2 && !rc; k++) rc = ctn_parse_int(l, "a node id", l->tok[2 + k], &nodes[k]);
     snprintf(what, sizeof what, "catenary %d", id);
@@ -43,7 +44,7 @@ int ctn_parse_catenary(ctn_line *l)
 
 int ctn_parse_pulley(ctn_line *l)
 {
-    static const char *const usage = "pulley ID NODE1 PULLEY [PULLEY ...] NODE2 section=SECTION [length=LENGTH|N0=FORCE|s0=STRESS|eps0=STRAIN]";
+    static const char *const usage = "pulley ID NODE1 PULLEY [PULLEY ...] NODE2 section=SECTION [length=LENGTH|N0=FORCE|s0=STRESS|eps0=STRAIN] [group=NAME]";
     int id = 0, n = 0, nodes[CTN_ELEM_MAX_NODES];
     char what[32];
     while (2 + n < l->ntok && !strchr(l->tok[2 + n], '=')) n++;    /* the node ids */

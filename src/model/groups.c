@@ -151,3 +151,17 @@ void ctn_model_step_temperatures(const ctn_model *m, size_t k, double *dT)
             if (thermal(m, i) && (t->kind == CTN_TARGET_ALL || m->elements.v[i].group == t->target)) dT[i] += t->dT;
     }
 }
+
+double ctn_model_element_temperature(const ctn_model *m, size_t k, size_t e)
+{
+    double dT = 0;
+    if (!thermal(m, e)) return 0;
+    for (size_t j = 0; j < m->tloads.n; j++) {
+        const ctn_tload *t = &m->tloads.v[j];
+        if (t->step > (int)k + 1) continue;
+        if (t->kind == CTN_TARGET_ALL || (t->kind == CTN_TARGET_ELEMENT && t->target == (int)e) ||
+            (t->kind == CTN_TARGET_GROUP && m->elements.v[e].group == t->target))
+            dT += t->dT;
+    }
+    return dT;
+}

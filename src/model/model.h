@@ -176,6 +176,8 @@ int ctn_model_group_get(ctn_model *m, const char *name, int *index);
 int ctn_model_group_put(ctn_model *m, size_t e, int g);
 /* Temperature change of every element at the end of step k (0-based) into dT (ne). */
 void ctn_model_step_temperatures(const ctn_model *m, size_t k, double *dT);
+/* The same for element e alone. */
+double ctn_model_element_temperature(const ctn_model *m, size_t k, size_t e);
 
 /* Mass per unit unstressed length of section i: its mass=, else w / g (g standard
  * gravity in the model's units); NAN when the model has no units and the section a

@@ -31,6 +31,7 @@ static int catenary_at(const ctn_model *m, const ctn_solution *s, size_t k, size
 {
     if (!valid(m, s, k, i) || ctn_element_family(m->elements.v[i].type) != &ctn_catenary2_ops) return CTN_ERR_INVALID;
     ctn_catenary2_ops.setup(m, i, p);
+    ctn_catenary2_ops.temperature(p, ctn_model_element_temperature(m, k, i));   /* the step's length */
     gather(m, s, k, i, X, u);
     return ctn_catenary_state(p, X, u, c, ex, bar) ? CTN_ERR_NOCONV : CTN_OK;
 }
