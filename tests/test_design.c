@@ -295,6 +295,33 @@ static void test_groups_capacity(void)
     done(&r);
 }
 
+/* The catenary element heated like the cable: the same span as one exact catenary and as
+ * 100 cable elements (engineering strain), before and after dT = 80 K: the horizontal
+ * tensions agree to the mesh's error (1e-4) in both states, and heating changes them. */
+static void test_catenary_temperature(void)
+{
+    const char *base =
+        "units kN m\ngravity 0 0 -1\nmaterial steel E=2e8 strain=engineering alpha=1.2e-5\n"
+        "section s material=steel A=3e-4 w=0.05\nnode 1 0 0 0 fix=xyz\nnode 2 100 0 30 fix=xyz\n%s\n"
+        "step base\nstep hot\ntemperature all dT=80\n";
+    const char *members[2] = { "catenary 1 1 2 section=s length=106", "cable 1 2 section=s n=100 length=106" };
+    double H[2][2];
+    for (int v = 0; v < 2; v++) {
+        char text[1024];
+        snprintf(text, sizeof text, base, members[v]);
+        run r = solve_text(text);
+        CHECK_MSG(r.rc == CTN_OK, "%s", ctn_ctx_message(r.ctx));
+        for (size_t k = 0; k < 2 && !r.rc; k++) {
+            ctn_step_result st;
+            ctn_solution_step(r.s, k, &st);
+            H[v][k] = -st.react[0];
+        }
+        done(&r);
+    }
+    for (int k = 0; k < 2; k++) CHECK_CLOSE(H[0][k], H[1][k], 1e-4, 0);
+    CHECK(H[0][1] < 0.98 * H[0][0]);
+}
+
 static void test_errors(void)
 {
     const char *bad[][2] = {
@@ -334,6 +361,7 @@ int main(void)
     test_guyed();
     test_unreachable();
     test_groups_capacity();
+    test_catenary_temperature();
     test_errors();
     CHECK_DONE();
 }
