@@ -46,7 +46,9 @@ static int setup(ctn_problem *p)
     if (p->ndof == 0) return CTN_OK;        /* statically determinate: nothing to factor */
     const char *name = p->opt.linear_solver ? p->opt.linear_solver : p->strategy->linear_solver;
     ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
-    return ctn_linsolve_create(p->ctx, name, &pat, p->opt.ordering, &p->ls);
+    if ((rc = ctn_linsolve_create(p->ctx, name, &pat, p->opt.ordering, &p->ls))) return rc;
+    ctn_linsolve_set_threads(p->ls, p->opt.threads);
+    return CTN_OK;
 }
 
 int ctn_problem_create(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options *opt,
@@ -155,6 +157,8 @@ int ctn_problem_factor(ctn_problem *p, double shift, int *posdef, long *fail_col
     ctn_factor_info info = { 1, -1 };
     int rc = p->ls ? ctn_linsolve_factor(p->ls, p->Kx, shift, &info) : CTN_OK;
     p->sum->t_factor += ctn_clock() - t0;
+    p->sum->t_factor_cpu += p->ls ? ctn_linsolve_cpu(p->ls) : 0;
+    p->sum->threads = p->ls ? ctn_linsolve_threads(p->ls) : 1;
     p->sum->factorizations++;
     *posdef = info.ok;
     *fail_col = info.fail_col;

@@ -1,0 +1,67 @@
+/* The threads of the numeric factorization and the BLAS under it.
+ *
+ * CHOLMOD's supernodal factorization spends its time in the BLAS and in a few OpenMP
+ * loops of its own; Debian's OpenBLAS for OpenMP (libopenblas0-openmp, installed by
+ * scripts/deps.sh) runs its threads in the same OpenMP pool, so one setting, the OpenMP
+ * thread count of the calling thread, sizes both: one threading layer. catena sets it for
+ * the duration of each factorization and restores the caller's value afterwards (it is
+ * the calling thread's own setting, so nothing else in the process changes).
+ *
+ * catena does not link the OpenMP runtime or the BLAS itself: both come with CHOLMOD.
+ * They are looked up at run time in the loaded process, so that the same library works
+ * on a reference BLAS (no threads) or without OpenMP (one thread). */
+#define _GNU_SOURCE                      /* RTLD_DEFAULT, dladdr */
+#include "linalg/linsolve.h"
+
+#include <dlfcn.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+typedef int (*get_fn)(void);
+typedef void (*set_fn)(int);
+
+static void *symbol(const char *name) { return dlsym(RTLD_DEFAULT, name); }
+
+int ctn_threads_available(void)
+{
+    get_fn max = (get_fn)(uintptr_t)symbol("omp_get_max_threads");
+    int n = max ? max() : 1;
+    return n > 0 ? n : 1;
+}
+
+int ctn_threads_set(int n)
+{
+    get_fn max = (get_fn)(uintptr_t)symbol("omp_get_max_threads");
+    set_fn set = (set_fn)(uintptr_t)symbol("omp_set_num_threads");
+    if (!max || !set) return 1;
+    int old = max();
+    if (n > 0 && n != old) set(n);
+    return old;
+}
+
+/* "OpenBLAS 0.3.21 (OpenMP)" from OpenBLAS's own configuration string, or the file the
+ * BLAS's dgemm comes from ("reference BLAS (libblas.so.3)"). */
+void ctn_blas_name(char *buf, size_t size)
+{
+    typedef char *(*config_fn)(void);
+    config_fn config = (config_fn)(uintptr_t)symbol("openblas_get_config");
+    get_fn parallel = (get_fn)(uintptr_t)symbol("openblas_get_parallel");
+    if (config) {
+        char version[32] = "";
+        const char *c = config();
+        if (c) sscanf(c, "OpenBLAS %31s", version);
+        int par = parallel ? parallel() : -1;
+        snprintf(buf, size, "OpenBLAS %s (%s)", version, par == 2 ? "OpenMP" : par == 1 ? "pthreads" : par == 0 ? "sequential" : "?");
+        return;
+    }
+    Dl_info info;
+    void *gemm = symbol("dgemm_");
+    if (gemm && dladdr(gemm, &info) && info.dli_fname) {
+        const char *file = strrchr(info.dli_fname, '/');
+        const char *kind = strstr(info.dli_fname, "/blas/") ? "reference BLAS" : "BLAS";
+        snprintf(buf, size, "%s (%s)", kind, file ? file + 1 : info.dli_fname);
+        return;
+    }
+    snprintf(buf, size, "none");
+}
