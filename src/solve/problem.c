@@ -48,6 +48,8 @@ static int setup(ctn_problem *p)
     ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
     if ((rc = ctn_linsolve_create(p->ctx, name, &pat, p->opt.ordering, &p->ls))) return rc;
     ctn_linsolve_set_threads(p->ls, p->opt.threads);
+    int reuse = p->strategy->globalized && p->opt.reuse && !p->fl && !ctn_linsolve_type(p->ls)->indefinite;
+    if (reuse && !(p->cg = ctn_calloc(p->ctx, 4 * p->ndof, sizeof(double)))) return CTN_ERR_NOMEM;
     return CTN_OK;
 }
 
@@ -88,7 +90,7 @@ void ctn_problem_destroy(ctn_problem **pp)
     ctn_asm_destroy(&p->a);
     ctn_linsolve_destroy(&p->ls);
     ctn_follow_destroy(&p->fl);
-    double *v[] = { p->fint, p->fext, p->f0, p->f1, p->p0, p->p1, p->dsave, p->react, p->r, p->dd, p->w, p->v3, p->Kx };
+    double *v[] = { p->fint, p->fext, p->f0, p->f1, p->p0, p->p1, p->dsave, p->react, p->r, p->dd, p->w, p->v3, p->Kx, p->cg };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
     ctn_free(p);
     *pp = NULL;
@@ -164,6 +166,7 @@ int ctn_problem_factor(ctn_problem *p, double shift, int *posdef, long *fail_col
     *fail_col = info.fail_col;
     p->shift = shift;
     p->last_definite = info.ok && shift == 0 && (!p->ls || !ctn_linsolve_type(p->ls)->indefinite);
+    p->spd_factor = p->last_definite;
     return rc;
 }
 

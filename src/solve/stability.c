@@ -5,6 +5,8 @@
  * within 1e-12 of the largest diagonal entry. */
 #include "solve/problem.h"
 
+#include "linalg/pcg.h"
+
 #include <math.h>
 #include <string.h>
 
@@ -29,14 +31,8 @@ static void locate(const ctn_problem *p, long col, ctn_stability *out)
 /* y = K x with K's upper triangle (pattern order). */
 static void matvec(const ctn_problem *p, const double *x, double *y)
 {
-    const int *cp = p->a->colptr, *ri = p->a->rowind;
-    memset(y, 0, p->ndof * sizeof(double));
-    for (size_t c = 0; c < p->ndof; c++)
-        for (int k = cp[c]; k < cp[c + 1]; k++) {
-            size_t r = (size_t)ri[k];
-            y[r] += p->Kx[k] * x[c];
-            if (r != c) y[c] += p->Kx[k] * x[r];
-        }
+    ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
+    ctn_sym_matvec(&pat, p->Kx, x, y);
 }
 
 /* The weakest mode: inverse iteration x <- K^-1 x (LDL' factor) converges to the
@@ -94,7 +90,7 @@ int ctn_problem_stability(ctn_problem *p, const ctn_solution *s, ctn_stability *
         out->stable = 1;
         return CTN_OK;
     }
-    ctn_solve_summary scratch;
+    ctn_solve_summary scratch, *outer = p->sum;   /* a solve's check counts in its summary */
     memset(&scratch, 0, sizeof scratch);
     double *d = ctn_calloc(p->ctx, p->ns, sizeof(double));
     if (!d) return CTN_ERR_NOMEM;
@@ -109,7 +105,12 @@ int ctn_problem_stability(ctn_problem *p, const ctn_solution *s, ctn_stability *
         rc = inertia(p, out);
         out->stable = !rc && !out->semidefinite && out->negative == 0 && out->node == 0;
     }
-    p->sum = NULL;
+    p->sum = outer;
+    if (outer) {
+        outer->factorizations += scratch.factorizations;
+        outer->t_factor += scratch.t_factor;
+        outer->t_factor_cpu += scratch.t_factor_cpu;
+    }
     ctn_free(d);
     return rc;
 }
