@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Install the Debian packages catena needs, only those that are missing.
+# Install the Debian packages catena needs, only those that are missing. libopenblas0-openmp
+# becomes the BLAS under CHOLMOD (Debian's alternatives) and runs its threads in the OpenMP
+# pool CHOLMOD uses: one threading layer, sized by catena for each factorization.
 set -eu
-pkgs="gcc binutils make cmake pkg-config libsuitesparse-dev libcjson-dev gnuplot-nox clang libclang-rt-14-dev"
+pkgs="gcc binutils make cmake pkg-config libsuitesparse-dev libopenblas0-openmp libcjson-dev gnuplot-nox clang libclang-rt-14-dev"
 missing=""
 for p in $pkgs; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
