@@ -66,20 +66,23 @@ int ctn_linsolve_factor(ctn_linsolve *s, const double *Kx, double shift, ctn_fac
 {
     int n = s->threads;
     if (n <= 0) n = ctn_linsolve_flops(s) > CTN_PARALLEL_FLOPS ? ctn_threads_available() : 1;
-    int old = ctn_threads_set(n);
+    ctn_threads_saved old;
+    ctn_threads_push(n, &old);
     double t0 = cpu_clock();
     int rc = s->ops->factor(s->impl, Kx, shift, info);
     s->cpu = cpu_clock() - t0;
-    s->used = ctn_threads_set(old);
+    ctn_threads_pop(&old);
+    s->used = old.threads ? n : 1;
     return rc;
 }
 
 /* Triangular solves are bound by memory traffic: one thread. */
 int ctn_linsolve_solve(ctn_linsolve *s, const double *b, double *x)
 {
-    int old = ctn_threads_set(1);
+    ctn_threads_saved old;
+    ctn_threads_push(1, &old);
     int rc = s->ops->solve(s->impl, b, x);
-    ctn_threads_set(old);
+    ctn_threads_pop(&old);
     return rc;
 }
 

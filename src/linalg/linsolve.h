@@ -71,11 +71,18 @@ void ctn_linsolve_set_threads(ctn_linsolve *s, int n);
 int ctn_linsolve_threads(const ctn_linsolve *s);
 double ctn_linsolve_cpu(const ctn_linsolve *s);
 
-/* Threads (threads.c): the OpenMP threads a parallel region of the calling thread would
- * get (1 without OpenMP); set them to n > 0 and return the previous value (restore it
- * with a second call); the name of the BLAS loaded in the process. */
+/* Threads (threads.c): the OpenMP threads a factorization should use (OpenMP's count
+ * less the CPUs other processes keep busy; 1 without OpenMP); run the calling thread's
+ * OpenMP regions on n threads (n = 1: no parallel region at all, as OpenMP's
+ * max-active-levels 0, which is process-wide) until ctn_threads_pop restores the
+ * settings saved; the name of the BLAS loaded in the process. */
+typedef struct ctn_threads_saved {
+    int threads;               /* the caller's count, 0 without OpenMP */
+    int levels;                /* the caller's max-active-levels, -1 without OpenMP */
+} ctn_threads_saved;
 int ctn_threads_available(void);
-int ctn_threads_set(int n);
+void ctn_threads_push(int n, ctn_threads_saved *old);
+void ctn_threads_pop(const ctn_threads_saved *old);
 void ctn_blas_name(char *buf, size_t size);
 
 /* The backends (one file each). */

@@ -40,14 +40,28 @@ int ctn_threads_available(void)
     return n > 0 ? n : 1;
 }
 
-int ctn_threads_set(int n)
+/* n threads: the calling thread's OpenMP count (which OpenBLAS follows), and for n = 1
+ * no active parallel region at all (max-active-levels 0): CHOLMOD's own loops ask for
+ * a fixed 4 threads whatever the count says, and on a busy machine their barriers cost
+ * more than the loops. */
+void ctn_threads_push(int n, ctn_threads_saved *old)
 {
     get_fn max = (get_fn)(uintptr_t)symbol("omp_get_max_threads");
     set_fn set = (set_fn)(uintptr_t)symbol("omp_set_num_threads");
-    if (!max || !set) return 1;
-    int old = max();
-    if (n > 0 && n != old) set(n);
-    return old;
+    get_fn levels = (get_fn)(uintptr_t)symbol("omp_get_max_active_levels");
+    set_fn set_levels = (set_fn)(uintptr_t)symbol("omp_set_max_active_levels");
+    old->threads = max && set ? max() : 0;
+    old->levels = levels && set_levels ? levels() : -1;
+    if (old->threads && n > 0) set(n);
+    if (old->levels >= 0 && n == 1) set_levels(0);
+}
+
+void ctn_threads_pop(const ctn_threads_saved *old)
+{
+    set_fn set = (set_fn)(uintptr_t)symbol("omp_set_num_threads");
+    set_fn set_levels = (set_fn)(uintptr_t)symbol("omp_set_max_active_levels");
+    if (old->threads && set) set(old->threads);
+    if (old->levels >= 0 && set_levels) set_levels(old->levels);
 }
 
 /* "OpenBLAS 0.3.21 (OpenMP)" from OpenBLAS's own configuration string, or the file the
