@@ -1,6 +1,9 @@
 /* CHOLMOD backends: symbolic analysis once, numeric refactorization per call.
- *   "cholmod":     LL' (final_ll) rather than LDL', so that a non-positive pivot is
- *                  reported, not factored;
+ *   "cholmod":     LL' (supernodal), or for a simplicial factor CHOLMOD's own LDL'
+ *                  whose pivots are checked: the first d <= 0 is where LL' would have
+ *                  failed, and is reported as such (LL' by final_ll would convert the
+ *                  factor after every factorization and make the solves slower:
+ *                  measured by bench/bench_floor, +15 % CPU per iteration);
  *   "cholmod-ldl": simplicial LDL' (no pivoting), for indefinite matrices; the signs of
  *                  D give the inertia.
  * The matrix is held as a pattern; the caller's values are lent to CHOLMOD for each
@@ -46,7 +49,7 @@ static int chol_create(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, int
     c->ctx = ctx;
     cholmod_l_start(&c->cm);
     c->indefinite = indefinite;
-    c->cm.final_ll = !indefinite;
+    c->cm.final_ll = 0;
     if (indefinite) c->cm.supernodal = CHOLMOD_SIMPLICIAL;
     c->cm.quick_return_if_not_posdef = 1;
     c->cm.print = 0;
@@ -77,6 +80,18 @@ static int ldl_create(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, void
     return chol_create(ctx, p, ord, 1, out);
 }
 
+/* The first pivot d <= 0 of a simplicial LDL' factor (its column's first entry), -1 if
+ * none or the factor is LL'. */
+static long first_nonpositive(const cholmod_factor *L)
+{
+    if (L->is_super || L->is_ll) return -1;
+    const SuiteSparse_long *p = L->p;
+    const double *x = L->x;
+    for (size_t j = 0; j < L->n; j++)
+        if (!(x[p[j]] > 0)) return (long)j;
+    return -1;
+}
+
 static int chol_factor(void *impl, const double *Kx, double shift, ctn_factor_info *info)
 {
     chol *c = impl;
@@ -89,10 +104,10 @@ static int chol_factor(void *impl, const double *Kx, double shift, ctn_factor_in
     c->A->x = NULL;
     c->A->xtype = CHOLMOD_PATTERN;
     if (!ok || c->cm.status < CHOLMOD_OK) return ctn_chol_error(c, "factorization");
-    if (c->cm.status == CHOLMOD_NOT_POSDEF) {
-        size_t k = c->L->minor;
+    long k = c->cm.status == CHOLMOD_NOT_POSDEF ? (long)c->L->minor : c->indefinite ? -1 : first_nonpositive(c->L);
+    if (k >= 0) {
         const SuiteSparse_long *perm = c->L->Perm;
-        info->fail_col = perm ? perm[k] : (long)k;
+        info->fail_col = perm ? perm[k] : k;
         return CTN_OK;
     }
     info->ok = 1;
