@@ -139,10 +139,11 @@ void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s)
     ctn_solution_summary(s, &sum);
     fprintf(out, "%s after %d iterations: |r| = %.3e (|f_ext| = %.6g), %zu free DOFs, ordering %s\n",
             ctn_reason_name(sum.reason), sum.iterations, sum.residual, sum.fext_norm, sum.ndof,
-            sum.ordering == CTN_ORDER_NATURAL ? "natural" : "AMD");
-    fprintf(out, "time: setup %.3f s, assembly %.3f s, factorization %.3f s (%d), solves %.3f s (%d) "
-                 "(factor non-zeros %zu)\n", sum.t_setup, sum.t_assemble, sum.t_factor, sum.factorizations,
-            sum.t_solve, sum.solves, sum.nnz_factor);
+            ctn_ordering_name(sum.ordering));
+    fprintf(out, "time: setup %.3f s, assembly %.3f s, factorization %.3f s (%d; CPU %.3f s, %d thread%s), "
+                 "solves %.3f s (%d)\n", sum.t_setup, sum.t_assemble, sum.t_factor, sum.factorizations,
+            sum.t_factor_cpu, sum.threads, sum.threads == 1 ? "" : "s", sum.t_solve, sum.solves);
+    fprintf(out, "factor: %zu non-zeros, %.3g flops; BLAS %s\n", sum.nnz_factor, sum.flops_factor, sum.blas);
     if (sum.reason == CTN_DIVERGED_INDEFINITE)
         fprintf(out, "the tangent has a non-positive pivot at node %d, direction %c: a compressed "
                      "or unrestrained degree of freedom\n", sum.fail_node, "xyz"[sum.fail_dir]);

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Install the Debian packages catena needs, only those that are missing.
+# Install the Debian packages catena needs, only those that are missing. libopenblas0-openmp
+# becomes the BLAS under CHOLMOD (Debian's alternatives) and runs its threads in the OpenMP
+# pool CHOLMOD uses: one threading layer, sized by catena for each factorization.
 set -eu
-pkgs="gcc binutils make cmake pkg-config libsuitesparse-dev libarpack2-dev liblapack-dev libcjson-dev gnuplot-nox clang libclang-rt-14-dev python3"
+pkgs="gcc binutils make cmake pkg-config libsuitesparse-dev libopenblas0-openmp libarpack2-dev liblapack-dev libcjson-dev gnuplot-nox clang libclang-rt-14-dev python3"
 # CTN_DEPS_VTK=1: also VTK's Python reader (76 packages), which tests/cli/vtu.sh then
 # uses besides its plain XML reader to read result.vtu back.
 [ "${CTN_DEPS_VTK:-0}" = 1 ] && pkgs="$pkgs python3-vtk9"

@@ -237,6 +237,12 @@ static void ref_summary(cJSON *root, const ctn_model *m, const ctn_solution *s, 
     ref_num(root, "cutbacks", sum.cuts, finite);
     ref_num(root, "factorizations", sum.factorizations, finite);
     ref_num(root, "solves", sum.solves, finite);
+    ref_num(root, "reused_factorizations", sum.reused, finite);
+    cJSON_AddStringToObject(root, "ordering", ctn_ordering_name(sum.ordering));
+    ref_num(root, "factor_nonzeros", (double)sum.nnz_factor, finite);
+    ref_num(root, "factor_flops", sum.flops_factor, finite);
+    cJSON_AddStringToObject(root, "blas", sum.blas);
+    ref_num(root, "threads", sum.threads, finite);
     cJSON *u = cJSON_AddObjectToObject(root, "units");
     cJSON_AddStringToObject(u, "force", ctn_model_force_unit(m));
     cJSON_AddStringToObject(u, "length", ctn_model_length_unit(m));

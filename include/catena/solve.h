@@ -27,11 +27,16 @@ CTN_API_BEGIN
 
 /* Fill-reducing ordering of the tangent's factorization. */
 typedef enum ctn_ordering {
-    CTN_ORDER_AUTO = 0,    /* analyze natural and AMD, keep the one with fewer flops
-                              (natural on ties within 10 %: it keeps memory access local) */
+    CTN_ORDER_AUTO = 0,    /* natural if it makes no fill; else analyze natural, AMD and
+                              METIS and keep the one with the fewest flops (natural on ties
+                              within 10 %: it keeps memory access local); an ordering whose
+                              analysis fails (e.g. a factor too large to index) is skipped */
     CTN_ORDER_NATURAL = 1, /* the model's DOF order */
-    CTN_ORDER_AMD = 2      /* approximate minimum degree */
+    CTN_ORDER_AMD = 2,     /* approximate minimum degree */
+    CTN_ORDER_METIS = 3    /* METIS nested dissection */
 } ctn_ordering;
+/* "auto", "natural", "amd", "metis" ("?" if none). */
+const char *ctn_ordering_name(ctn_ordering o);
 
 /* Solution strategy. */
 typedef enum ctn_method {
@@ -103,6 +108,16 @@ typedef struct ctn_solve_options {
     ctn_modal_options modal;   /* after a converged solve, ctn_problem_solve runs
                                   ctn_problem_modes with these when modal.count > 0 (the
                                   file's `modes` line) */
+    int threads;          /* threads of the numeric factorization (OpenMP, shared by CHOLMOD
+                             and an OpenMP OpenBLAS); 0 (default): sized to the machine and
+                             the work: the OpenMP default (the CPUs available, or
+                             OMP_NUM_THREADS) for a factorization of more than 1e9 flops,
+                             else 1 (threads cost more than they give there) */
+    int reuse;            /* CTN_METHOD_AUTO: once Newton converges quadratically, take the
+                             next step with the last factorization (conjugate gradients on
+                             the current tangent, preconditioned by it) instead of factoring
+                             again (default 1; 0: factor every iteration). Pure Newton
+                             always factors */
 } ctn_solve_options;
 
 /* Fill the defaults. Options belong to a solve, not to a model: a model file's `solve`
@@ -180,6 +195,13 @@ typedef struct ctn_solve_summary {
                              evaluated at the last state tried (a chord of zero length,
                              or a catenary whose forces are beyond double precision),
                              else 0 */
+    double flops_factor;  /* floating-point operations of one numeric factorization, from
+                             the symbolic analysis */
+    double t_factor_cpu;  /* CPU seconds (all threads) in all numeric factorizations:
+                             against t_factor it shows how the threads were used */
+    int threads;          /* threads of the last numeric factorization */
+    char blas[64];        /* the BLAS loaded, e.g. "OpenBLAS 0.3.21 (OpenMP)" */
+    int reused;           /* iterations that reused the last factorization (cg steps) */
 } ctn_solve_summary;
 
 /* Element state at the solution. */

@@ -331,20 +331,22 @@ static int d_hload(ctn_line *l)
 
 static int d_solve(ctn_line *l)
 {
-    static const char *const orderings[] = { "auto", "natural", "amd" };
+    static const char *const orderings[] = { "auto", "natural", "amd", "metis" };
     static const char *const methods[] = { "auto", "newton", "arclength" };
     static const char *const onoff[] = { "off", "on" };
     static const char *const solvers[] = { "cholmod", "cholmod-ldl" };
     ctn_solve_options opt = *l->opt;
-    int ord = (int)opt.ordering, method = (int)opt.method, ls = opt.linesearch, lin = -1;
+    int ord = (int)opt.ordering, method = (int)opt.method, ls = opt.linesearch, lin = -1, reuse = opt.reuse;
     int rc = ctn_parse_positional(l, 0, "solve [tol=T] [dtol=T] [maxit=N] [method=auto|newton|arclength] ...");
     if (!rc) rc = ctn_parse_key_num(l, 1, "tol", 0, &opt.tol);
     if (!rc) rc = ctn_parse_key_num(l, 1, "dtol", 0, &opt.dtol);
     if (!rc) rc = key_int(l, "maxit", 1, 100000, &opt.maxit);
-    if (!rc) rc = key_word(l, "ordering", orderings, 3, &ord);
+    if (!rc) rc = key_word(l, "ordering", orderings, 4, &ord);
     if (!rc) rc = key_word(l, "method", methods, 3, &method);
     if (!rc) rc = key_word(l, "linesearch", onoff, 2, &ls);
     if (!rc) rc = key_word(l, "linear_solver", solvers, 2, &lin);
+    if (!rc) rc = key_word(l, "reuse", onoff, 2, &reuse);
+    if (!rc) rc = key_int(l, "threads", 0, 1024, &opt.threads);
     if (!rc) rc = key_int(l, "steps", 1, 100000, &opt.steps);
     if (!rc) rc = key_int(l, "cutbacks", 0, 60, &opt.maxcuts);
     if (!rc) rc = ctn_parse_key_num(l, 1, "arclength", 0, &opt.arclength);
@@ -355,6 +357,7 @@ static int d_solve(ctn_line *l)
     opt.ordering = (ctn_ordering)ord;
     opt.method = (ctn_method)method;
     opt.linesearch = ls;
+    opt.reuse = reuse;
     if (lin >= 0) opt.linear_solver = solvers[lin];
     char msg[256];
     if (ctn_solve_options_fault(&opt, msg, sizeof msg)) return ctn_parse_error(l, "%s", msg);

@@ -58,6 +58,12 @@ static void put_summary(json_writer *jw, const ctn_solution *s)
     ctn_jw_number(j, "cutbacks", sum.cuts);
     ctn_jw_number(j, "factorizations", sum.factorizations);
     ctn_jw_number(j, "solves", sum.solves);
+    ctn_jw_number(j, "reused_factorizations", sum.reused);
+    ctn_jw_string(j, "ordering", ctn_ordering_name(sum.ordering));
+    ctn_jw_number(j, "factor_nonzeros", (double)sum.nnz_factor);
+    ctn_jw_number(j, "factor_flops", sum.flops_factor);
+    ctn_jw_string(j, "blas", sum.blas);
+    ctn_jw_number(j, "threads", sum.threads);
     ctn_jw_object(j, "units");
     ctn_jw_string(j, "force", ctn_model_force_unit(jw->w.m));
     ctn_jw_string(j, "length", ctn_model_length_unit(jw->w.m));

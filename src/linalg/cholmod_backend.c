@@ -1,79 +1,44 @@
 /* CHOLMOD backends: symbolic analysis once, numeric refactorization per call.
- *   "cholmod":     LL' (final_ll) rather than LDL', so that a non-positive pivot is
- *                  reported, not factored;
+ *   "cholmod":     LL' (supernodal), or for a simplicial factor CHOLMOD's own LDL'
+ *                  whose pivots are checked: the first d <= 0 is where LL' would have
+ *                  failed, and is reported as such (LL' by final_ll would convert the
+ *                  factor after every factorization and make the solves slower:
+ *                  measured by bench/bench_floor, +15 % CPU per iteration);
  *   "cholmod-ldl": simplicial LDL' (no pivoting), for indefinite matrices; the signs of
  *                  D give the inertia.
  * The matrix is held as a pattern; the caller's values are lent to CHOLMOD for each
- * factorization (no copy). */
-#include "linalg/linsolve.h"
+ * factorization (no copy). CHOLMOD's long-integer interface throughout (chol.h). */
+#include "linalg/chol.h"
 
-#include <cholmod.h>
 #include <math.h>
 #include <string.h>
-
-typedef struct chol {
-    ctn_ctx *ctx;
-    cholmod_common cm;
-    cholmod_sparse *A;                  /* pattern only between factorizations */
-    cholmod_factor *L;
-    cholmod_dense *B, *X, *Y, *E;       /* right-hand side and solve2 workspace */
-    ctn_ordering ordering;
-    double lnz;                         /* non-zeros of L from the analysis */
-    int indefinite;                     /* simplicial LDL' instead of LL' */
-} chol;
-
-static int backend_error(chol *c, const char *what)
-{
-    return ctn_error(c->ctx, c->cm.status == CHOLMOD_OUT_OF_MEMORY ? CTN_ERR_NOMEM : CTN_ERR_LINALG,
-                     "CHOLMOD %s failed (status %d)", what, c->cm.status);
-}
-
-/* Symbolic analysis with one given ordering; flops in *fl. */
-static cholmod_factor *analyze(chol *c, int cholmod_ordering, double *fl, double *lnz)
-{
-    c->cm.nmethods = 1;
-    c->cm.method[0].ordering = cholmod_ordering;
-    c->cm.postorder = cholmod_ordering != CHOLMOD_NATURAL;
-    cholmod_factor *L = cholmod_analyze(c->A, &c->cm);
-    *fl = L ? c->cm.fl : 0;
-    *lnz = L ? c->cm.lnz : 0;
-    return L;
-}
-
-/* AUTO: natural if it has no fill (nothing can beat it), else the fewer flops of natural
- * and AMD (natural on ties within 10 %: it keeps memory access local). */
-static int choose_ordering(chol *c, ctn_ordering ord)
-{
-    double fl_nat = 0, fl_amd = 0, lnz_nat = 0, lnz_amd = 0;
-    cholmod_factor *nat = NULL, *amd = NULL;
-    if (ord != CTN_ORDER_AMD && !(nat = analyze(c, CHOLMOD_NATURAL, &fl_nat, &lnz_nat)))
-        return backend_error(c, "analysis");
-    int no_fill = nat && lnz_nat <= (double)((const int *)c->A->p)[c->A->ncol];
-    if (ord == CTN_ORDER_AUTO && no_fill) ord = CTN_ORDER_NATURAL;
-    if (ord != CTN_ORDER_NATURAL && !(amd = analyze(c, CHOLMOD_AMD, &fl_amd, &lnz_amd))) {
-        cholmod_free_factor(&nat, &c->cm);
-        return backend_error(c, "analysis");
-    }
-    int use_nat = nat && (!amd || fl_nat <= 1.1 * fl_amd);
-    c->L = use_nat ? nat : amd;
-    c->ordering = use_nat ? CTN_ORDER_NATURAL : CTN_ORDER_AMD;
-    c->lnz = use_nat ? lnz_nat : lnz_amd;
-    cholmod_free_factor(use_nat ? &amd : &nat, &c->cm);
-    return CTN_OK;
-}
+#include <unistd.h>
 
 static void chol_destroy(void *impl)
 {
     chol *c = impl;
     if (!c) return;
-    cholmod_free_factor(&c->L, &c->cm);
-    cholmod_free_sparse(&c->A, &c->cm);
-    cholmod_free_dense(&c->B, &c->cm);
-    cholmod_free_dense(&c->X, &c->cm);
-    cholmod_free_dense(&c->Y, &c->cm);
-    cholmod_free_dense(&c->E, &c->cm);
-    cholmod_finish(&c->cm);
+    cholmod_l_free_factor(&c->L, &c->cm);
+    cholmod_l_free_sparse(&c->A, &c->cm);
+    cholmod_l_free_dense(&c->B, &c->cm);
+    cholmod_l_free_dense(&c->X, &c->cm);
+    cholmod_l_free_dense(&c->Y, &c->cm);
+    cholmod_l_free_dense(&c->E, &c->cm);
+    cholmod_l_finish(&c->cm);
     ctn_free(c);
+}
+
+/* A factor that cannot fit in the machine's memory is refused before CHOLMOD tries (and
+ * the system starts to swap or kills the process): out of memory, with what it needs. */
+static int check_memory(chol *c)
+{
+    double need = 8.0 * (c->L->is_super ? (double)c->L->xsize : c->lnz);
+    long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+    double have = pages > 0 && page > 0 ? (double)pages * (double)page : 0;
+    if (!(have > 0) || need < have) return CTN_OK;
+    return ctn_error(c->ctx, CTN_ERR_NOMEM, "the factorization needs %.1f GB for its factor (%.0f non-zeros, "
+                     "ordering %s), more than this machine's %.1f GB of memory", 1e-9 * need, c->lnz,
+                     ctn_ordering_name(c->ordering), 1e-9 * have);
 }
 
 static int chol_create(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, int indefinite, void **out)
@@ -82,21 +47,22 @@ static int chol_create(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, int
     chol *c = ctn_calloc(ctx, 1, sizeof(chol));
     if (!c) return CTN_ERR_NOMEM;
     c->ctx = ctx;
-    cholmod_start(&c->cm);
+    cholmod_l_start(&c->cm);
     c->indefinite = indefinite;
-    c->cm.final_ll = !indefinite;
+    c->cm.final_ll = 0;
     if (indefinite) c->cm.supernodal = CHOLMOD_SIMPLICIAL;
     c->cm.quick_return_if_not_posdef = 1;
     c->cm.print = 0;
     c->cm.error_handler = NULL;
     size_t n = p->n, nnz = (size_t)p->colptr[n];
     int rc = CTN_OK;
-    c->A = cholmod_allocate_sparse(n, n, nnz, 1, 1, 1, CHOLMOD_PATTERN, &c->cm);
-    c->B = cholmod_allocate_dense(n, 1, n, CHOLMOD_REAL, &c->cm);
-    if (!c->A || !c->B) { rc = backend_error(c, "allocation"); goto fail; }
-    memcpy(c->A->p, p->colptr, (n + 1) * sizeof(int));
-    memcpy(c->A->i, p->rowind, nnz * sizeof(int));
-    if ((rc = choose_ordering(c, ord))) goto fail;
+    c->A = cholmod_l_allocate_sparse(n, n, nnz, 1, 1, 1, CHOLMOD_PATTERN, &c->cm);
+    c->B = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, &c->cm);
+    if (!c->A || !c->B) { rc = ctn_chol_error(c, "allocation"); goto fail; }
+    SuiteSparse_long *Ap = c->A->p, *Ai = c->A->i;
+    for (size_t j = 0; j <= n; j++) Ap[j] = p->colptr[j];
+    for (size_t k = 0; k < nnz; k++) Ai[k] = p->rowind[k];
+    if ((rc = ctn_chol_analyze(c, ord)) || (rc = check_memory(c))) goto fail;
     *out = c;
     return CTN_OK;
 fail:
@@ -114,6 +80,18 @@ static int ldl_create(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, void
     return chol_create(ctx, p, ord, 1, out);
 }
 
+/* The first pivot d <= 0 of a simplicial LDL' factor (its column's first entry), -1 if
+ * none or the factor is LL'. */
+static long first_nonpositive(const cholmod_factor *L)
+{
+    if (L->is_super || L->is_ll) return -1;
+    const SuiteSparse_long *p = L->p;
+    const double *x = L->x;
+    for (size_t j = 0; j < L->n; j++)
+        if (!(x[p[j]] > 0)) return (long)j;
+    return -1;
+}
+
 static int chol_factor(void *impl, const double *Kx, double shift, ctn_factor_info *info)
 {
     chol *c = impl;
@@ -122,14 +100,14 @@ static int chol_factor(void *impl, const double *Kx, double shift, ctn_factor_in
     info->fail_col = -1;
     c->A->xtype = CHOLMOD_REAL;                  /* lend the caller's values */
     c->A->x = (void *)Kx;
-    int ok = cholmod_factorize_p(c->A, beta, NULL, 0, c->L, &c->cm);
+    int ok = cholmod_l_factorize_p(c->A, beta, NULL, 0, c->L, &c->cm);
     c->A->x = NULL;
     c->A->xtype = CHOLMOD_PATTERN;
-    if (!ok || c->cm.status < CHOLMOD_OK) return backend_error(c, "factorization");
-    if (c->cm.status == CHOLMOD_NOT_POSDEF) {
-        size_t k = c->L->minor;
-        const int *perm = c->L->Perm;
-        info->fail_col = perm ? perm[k] : (long)k;
+    if (!ok || c->cm.status < CHOLMOD_OK) return ctn_chol_error(c, "factorization");
+    long k = c->cm.status == CHOLMOD_NOT_POSDEF ? (long)c->L->minor : c->indefinite ? -1 : first_nonpositive(c->L);
+    if (k >= 0) {
+        const SuiteSparse_long *perm = c->L->Perm;
+        info->fail_col = perm ? perm[k] : k;
         return CTN_OK;
     }
     info->ok = 1;
@@ -142,7 +120,7 @@ static int chol_solve(void *impl, const double *b, double *x)
     size_t n = c->A->nrow;
     void *own = c->B->x;
     c->B->x = (void *)b;                         /* solve2 only reads B: no copy */
-    /* cholmod_solve2 reallocates its workspace Y whenever Y's shape is not the one it
+    /* cholmod_l_solve2 reallocates its workspace Y whenever Y's shape is not the one it
      * wants (4 x n for a simplicial factor), although the space it kept suffices; give
      * it that shape back, so the loop allocates nothing. Only when the space is there. */
     if (c->Y && !c->L->is_super && c->Y->nzmax >= 4 * n) {
@@ -150,9 +128,9 @@ static int chol_solve(void *impl, const double *b, double *x)
         c->Y->ncol = n;
         c->Y->d = 4;
     }
-    int ok = cholmod_solve2(CHOLMOD_A, c->L, c->B, NULL, &c->X, NULL, &c->Y, &c->E, &c->cm);
+    int ok = cholmod_l_solve2(CHOLMOD_A, c->L, c->B, NULL, &c->X, NULL, &c->Y, &c->E, &c->cm);
     c->B->x = own;
-    if (!ok) return backend_error(c, "solve");
+    if (!ok) return ctn_chol_error(c, "solve");
     memcpy(x, c->X->x, n * sizeof(double));
     return CTN_OK;
 }
@@ -161,7 +139,7 @@ static int chol_solve(void *impl, const double *b, double *x)
 static int ldl_inertia(void *impl, double tol, long *negative, long *zero, long *first)
 {
     chol *c = impl;
-    const int *p = c->L->p, *perm = c->L->Perm;
+    const SuiteSparse_long *p = c->L->p, *perm = c->L->Perm;
     const double *x = c->L->x;
     *negative = *zero = 0;
     *first = -1;
@@ -179,11 +157,16 @@ static ctn_ordering chol_ordering(const void *impl) { return ((const chol *)impl
 
 static size_t chol_factor_nnz(const void *impl) { return (size_t)((const chol *)impl)->lnz; }
 
+static double chol_flops(const void *impl) { return ((const chol *)impl)->fl; }
+
 const ctn_linsolve_ops ctn_cholmod_ll_ops = {
-    "cholmod", 0, ll_create, chol_destroy, chol_factor, chol_solve, NULL, chol_ordering, chol_factor_nnz,
+    .name = "cholmod", .indefinite = 0, .create = ll_create, .destroy = chol_destroy,
+    .factor = chol_factor, .solve = chol_solve, .inertia = NULL, .ordering = chol_ordering,
+    .factor_nnz = chol_factor_nnz, .flops = chol_flops,
 };
 
 const ctn_linsolve_ops ctn_cholmod_ldl_ops = {
-    "cholmod-ldl", 1, ldl_create, chol_destroy, chol_factor, chol_solve, ldl_inertia, chol_ordering,
-    chol_factor_nnz,
+    .name = "cholmod-ldl", .indefinite = 1, .create = ldl_create, .destroy = chol_destroy,
+    .factor = chol_factor, .solve = chol_solve, .inertia = ldl_inertia, .ordering = chol_ordering,
+    .factor_nnz = chol_factor_nnz, .flops = chol_flops,
 };

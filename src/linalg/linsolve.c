@@ -2,12 +2,25 @@
 #include "linalg/linsolve.h"
 
 #include <string.h>
+#include <time.h>
+
+#define CTN_PARALLEL_FLOPS 1e9   /* factorizations smaller than this run on one thread */
 
 struct ctn_linsolve {
     const ctn_linsolve_ops *ops;
     void *impl;
     ctn_ctx *ctx;
+    int threads;               /* asked for: n > 0, or 0 (auto) */
+    int used;                  /* threads of the last factorization */
+    double cpu;                /* CPU seconds of the last factorization */
 };
+
+static double cpu_clock(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
 
 static const ctn_linsolve_ops *const solvers[] = { &ctn_cholmod_ll_ops, &ctn_cholmod_ldl_ops };
 
@@ -47,14 +60,30 @@ void ctn_linsolve_destroy(ctn_linsolve **s)
 
 const ctn_linsolve_ops *ctn_linsolve_type(const ctn_linsolve *s) { return s->ops; }
 
+/* The factorization runs with its own thread count (set for the calling thread, the
+ * caller's restored after). */
 int ctn_linsolve_factor(ctn_linsolve *s, const double *Kx, double shift, ctn_factor_info *info)
 {
-    return s->ops->factor(s->impl, Kx, shift, info);
+    int n = s->threads;
+    if (n <= 0) n = ctn_linsolve_flops(s) > CTN_PARALLEL_FLOPS ? ctn_threads_available() : 1;
+    ctn_threads_saved old;
+    ctn_threads_push(n, &old);
+    double t0 = cpu_clock();
+    int rc = s->ops->factor(s->impl, Kx, shift, info);
+    s->cpu = cpu_clock() - t0;
+    ctn_threads_pop(&old);
+    s->used = old.threads ? n : 1;
+    return rc;
 }
 
+/* Triangular solves are bound by memory traffic: one thread. */
 int ctn_linsolve_solve(ctn_linsolve *s, const double *b, double *x)
 {
-    return s->ops->solve(s->impl, b, x);
+    ctn_threads_saved old;
+    ctn_threads_push(1, &old);
+    int rc = s->ops->solve(s->impl, b, x);
+    ctn_threads_pop(&old);
+    return rc;
 }
 
 int ctn_linsolve_inertia(ctn_linsolve *s, double tol, long *negative, long *zero, long *first)
@@ -66,3 +95,11 @@ int ctn_linsolve_inertia(ctn_linsolve *s, double tol, long *negative, long *zero
 ctn_ordering ctn_linsolve_ordering(const ctn_linsolve *s) { return s->ops->ordering(s->impl); }
 
 size_t ctn_linsolve_factor_nnz(const ctn_linsolve *s) { return s->ops->factor_nnz(s->impl); }
+
+double ctn_linsolve_flops(const ctn_linsolve *s) { return s->ops->flops ? s->ops->flops(s->impl) : 0; }
+
+void ctn_linsolve_set_threads(ctn_linsolve *s, int n) { s->threads = n > 0 ? n : 0; }
+
+int ctn_linsolve_threads(const ctn_linsolve *s) { return s->used ? s->used : 1; }
+
+double ctn_linsolve_cpu(const ctn_linsolve *s) { return s->cpu; }

@@ -21,6 +21,8 @@
 #define CTN_FLOOR_MAX 1e-4             /* largest round-off floor accepted, relative to
                                          the force that meets at the nodes */
 #define CTN_STALLS 3                   /* iterations at resolution above the floor */
+#define CTN_QUADRATIC 0.1              /* |r| fell at least this much in a full Newton
+                                         step: the next may reuse the factorization */
 
 typedef struct corrector {
     ctn_problem *e;
@@ -35,6 +37,9 @@ typedef struct corrector {
     int accepted;       /* the last iteration moved d */
     double dmax;        /* an upper bound of |d| (triangle inequality), for the increment
                            test: |d| itself is computed only when the test can pass */
+    double fref;        /* force scale of the residual test */
+    int quadratic;      /* the last step was a full Newton step that cut |r| by
+                           CTN_QUADRATIC: the next one reuses the factorization */
 } corrector;
 
 /* Raise the shift after a failure (Nielsen: mu *= nu, nu *= 2). */
@@ -133,17 +138,32 @@ static int lm_step(corrector *c, double *alpha, double *rn, double *pi)
     return CTN_OK;
 }
 
+/* The Newton step dd = K^-1 r: with the last factorization while Newton converges
+ * quadratically (reuse.c: to well below the tolerance, or at least a tenth of |r|),
+ * else by a new one. */
+static int newton_step(corrector *c, ctn_reason *why)
+{
+    ctn_problem *e = c->e;
+    int ok = 0, rc = CTN_OK;
+    if (c->quadratic && c->mu == 0) {
+        double target = fmax(0.1 * e->opt.tol * c->fref, 1e-8 * c->rn);
+        if ((rc = ctn_problem_reuse_step(e, target, 0.1 * c->rn, &ok)) || ok) return rc;
+    }
+    if ((rc = factor(c, &ok))) return rc;
+    if (!ok) { *why = CTN_DIVERGED_INDEFINITE; return CTN_OK; }
+    return ctn_problem_linsolve(e, e->r, e->dd);
+}
+
 /* One Newton iteration: factor, solve, accept or reject. *why: 0 or a stop reason. */
 static int iteration(corrector *c, ctn_reason *why)
 {
     ctn_problem *e = c->e;
-    int ok, rc = factor(c, &ok);
-    double alpha, rn = 0, pi = 0;
+    double alpha, rn = 0, pi = 0, r0 = c->rn;
     *why = 0;
     c->accepted = 0;
-    if (rc) return rc;
-    if (!ok) { *why = CTN_DIVERGED_INDEFINITE; return CTN_OK; }
-    if ((rc = ctn_problem_linsolve(e, e->r, e->dd))) return rc;
+    int rc = newton_step(c, why);
+    c->quadratic = 0;
+    if (rc || *why) return rc;
     if (!isfinite(ctn_vec_norm(e->dd, e->ndof))) { *why = CTN_DIVERGED_NANORINF; return CTN_OK; }
     int keep = c->globalized || e->opt.linesearch;   /* a step may be rejected */
     if (keep) memcpy(e->dsave, c->d, e->ns * sizeof(double));
@@ -163,6 +183,7 @@ static int iteration(corrector *c, ctn_reason *why)
     c->rn = rn;
     c->pi = pi;
     c->accepted = 1;
+    c->quadratic = c->globalized && shift == 0 && alpha == 1 && rn <= CTN_QUADRATIC * r0;
     return ctn_problem_record_ex(e, c->s, rn, alpha * ctn_vec_norm(e->dd, e->ndof), 0, shift);
 }
 
@@ -210,6 +231,7 @@ static int correct(ctn_problem *e, ctn_solution *s, double *d, ctn_reason *reaso
         return CTN_OK;
     }
     double fref = ctn_problem_fref(e);                /* once per increment */
+    c.fref = fref;
     int stalls = 0;
     c.dmax = ctn_vec_norm(d, e->ns);
     for (int it = 1; it <= e->opt.maxit; it++) {

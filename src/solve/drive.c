@@ -172,6 +172,8 @@ int ctn_problem_solve(ctn_problem *p, ctn_solution **out)
         s->sum.ordering = p->ls ? ctn_linsolve_ordering(p->ls) : CTN_ORDER_NATURAL;
         s->sum.ndof = p->ndof;
         s->sum.nnz_factor = p->ls ? ctn_linsolve_factor_nnz(p->ls) : 0;
+        s->sum.flops_factor = p->ls ? ctn_linsolve_flops(p->ls) : 0;
+        ctn_blas_name(s->sum.blas, sizeof s->sum.blas);
     }
     ctn_free(d);
     p->sum = NULL;

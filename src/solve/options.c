@@ -25,6 +25,8 @@ void ctn_solve_options_default(ctn_solve_options *opt)
     opt->modal.mass = CTN_MASS_CONSISTENT;
     opt->modal.shift = 0;
     opt->modal.line = 0;
+    opt->threads = 0;
+    opt->reuse = 1;
 }
 
 int ctn_modal_options_fault(const ctn_modal_options *o, char *msg, size_t size)
@@ -38,13 +40,19 @@ int ctn_modal_options_fault(const ctn_modal_options *o, char *msg, size_t size)
     return 0;
 }
 
+const char *ctn_ordering_name(ctn_ordering o)
+{
+    static const char *const names[] = { "auto", "natural", "amd", "metis" };
+    return o >= CTN_ORDER_AUTO && o <= CTN_ORDER_METIS ? names[o] : "?";
+}
+
 int ctn_solve_options_fault(const ctn_solve_options *opt, char *msg, size_t size)
 {
     if (!(opt->tol > 0) || !isfinite(opt->tol) || !(opt->dtol > 0) || !isfinite(opt->dtol))
         return snprintf(msg, size, "solve: tolerances must be positive and finite"), 1;
     if (opt->maxit < 1 || opt->maxit > 100000)
         return snprintf(msg, size, "solve: maxit must be between 1 and 100000 (got %d)", opt->maxit), 1;
-    if (opt->ordering < CTN_ORDER_AUTO || opt->ordering > CTN_ORDER_AMD)
+    if (opt->ordering < CTN_ORDER_AUTO || opt->ordering > CTN_ORDER_METIS)
         return snprintf(msg, size, "solve: unknown ordering"), 1;
     if (!ctn_strategy_of(opt->method))
         return snprintf(msg, size, "solve: unknown method"), 1;
@@ -58,6 +66,10 @@ int ctn_solve_options_fault(const ctn_solve_options *opt, char *msg, size_t size
         return snprintf(msg, size, "solve: arcsteps must be between 1 and 1000000 (got %d)", opt->arcsteps), 1;
     if (!isfinite(opt->lambda_max) || opt->lambda_max == 0)
         return snprintf(msg, size, "solve: lambda must be finite and non-zero"), 1;
+    if (opt->threads < 0 || opt->threads > 1024)
+        return snprintf(msg, size, "solve: threads must be between 0 and 1024 (got %d)", opt->threads), 1;
+    if (opt->reuse != 0 && opt->reuse != 1)
+        return snprintf(msg, size, "solve: reuse must be 0 or 1 (got %d)", opt->reuse), 1;
     if (opt->linear_solver && !ctn_linsolve_find(opt->linear_solver))
         return snprintf(msg, size, "solve: unknown linear solver '%.40s' (expected cholmod or cholmod-ldl)", opt->linear_solver), 1;
     return ctn_modal_options_fault(&opt->modal, msg, size);

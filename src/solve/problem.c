@@ -73,7 +73,11 @@ static int setup(ctn_problem *p)
     if (p->ndof == 0) return CTN_OK;        /* statically determinate: nothing to factor */
     const char *name = p->opt.linear_solver ? p->opt.linear_solver : p->strategy->linear_solver;
     ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
-    return ctn_linsolve_create(p->ctx, name, &pat, p->opt.ordering, &p->ls);
+    if ((rc = ctn_linsolve_create(p->ctx, name, &pat, p->opt.ordering, &p->ls))) return rc;
+    ctn_linsolve_set_threads(p->ls, p->opt.threads);
+    int reuse = p->strategy->globalized && p->opt.reuse && !p->fl && !ctn_linsolve_type(p->ls)->indefinite;
+    if (reuse && !(p->cg = ctn_calloc(p->ctx, 4 * p->ndof, sizeof(double)))) return CTN_ERR_NOMEM;
+    return CTN_OK;
 }
 
 /* A cable set by a target whose length has not been found yet, or NULL. */
@@ -148,7 +152,7 @@ void ctn_problem_destroy(ctn_problem **pp)
     ctn_linsolve_destroy(&p->ls);
     ctn_follow_destroy(&p->fl);
     double *v[] = { p->fint, p->fext, p->f0, p->f1, p->p0, p->p1, p->dsave, p->react, p->r, p->dd, p->w, p->v3, p->Kx,
-                    p->dT0, p->dT1, p->dT };
+                    p->dT0, p->dT1, p->dT, p->cg };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
     ctn_free(p->in_chain);
     ctn_free(p);
@@ -226,11 +230,14 @@ int ctn_problem_factor(ctn_problem *p, double shift, int *posdef, long *fail_col
     ctn_factor_info info = { 1, -1 };
     int rc = p->ls ? ctn_linsolve_factor(p->ls, p->Kx, shift, &info) : CTN_OK;
     p->sum->t_factor += ctn_clock() - t0;
+    p->sum->t_factor_cpu += p->ls ? ctn_linsolve_cpu(p->ls) : 0;
+    p->sum->threads = p->ls ? ctn_linsolve_threads(p->ls) : 1;
     p->sum->factorizations++;
     *posdef = info.ok;
     *fail_col = info.fail_col;
     p->shift = shift;
     p->last_definite = info.ok && shift == 0 && (!p->ls || !ctn_linsolve_type(p->ls)->indefinite);
+    p->spd_factor = p->last_definite;
     return rc;
 }
 

@@ -65,6 +65,9 @@ struct ctn_problem {
     double *dT0, *dT1, *dT;    /* ne: temperature changes at the step's start, end and at
                                   t; NULL when the model has no temperature load */
     ctn_solve_summary *sum;    /* where timings accumulate (the current solution's) */
+    int spd_factor;            /* the factorization held is LL' of a tangent (no shift) */
+    double *cg;                /* 4 ndof: conjugate-gradient workspace (reuse of the last
+                                  factorization), NULL when the strategy does not reuse */
 };
 
 /* ctn_problem_create without the check that every cable target is resolved (for the
@@ -83,6 +86,11 @@ int ctn_problem_residual(ctn_problem *p, const double *d, int with_K, double *rn
 /* Force scale of the residual test: |f_ext| on free DOFs, or where that is zero (pure
  * prescribed displacement) |f_int| on fixed DOFs, or 1. */
 double ctn_problem_fref(const ctn_problem *p);
+/* Newton step dd = K^-1 r on the current tangent (p->Kx) by conjugate gradients
+ * preconditioned by the last factorization (of K + 0 I at an earlier state), to
+ * |K dd - r| <= target; *ok = 0 (nothing to use) if it did not reach rmax, met negative
+ * curvature or no factorization can be reused (reuse.c). */
+int ctn_problem_reuse_step(ctn_problem *p, double target, double rmax, int *ok);
 /* Factorize K + shift I; *posdef = 0 when the factorization failed on a pivot, with its
  * equation in *fail_col. */
 int ctn_problem_factor(ctn_problem *p, double shift, int *posdef, long *fail_col);

@@ -5,6 +5,8 @@
  * within 1e-12 of the largest diagonal entry. */
 #include "solve/problem.h"
 
+#include "linalg/pcg.h"
+
 #include <math.h>
 #include <string.h>
 
@@ -80,7 +82,7 @@ int ctn_problem_stability(ctn_problem *p, const ctn_solution *s, ctn_stability *
         out->stable = 1;
         return CTN_OK;
     }
-    ctn_solve_summary scratch;
+    ctn_solve_summary scratch, *outer = p->sum;   /* a solve's check counts in its summary */
     memset(&scratch, 0, sizeof scratch);
     double *d = ctn_calloc(p->ctx, p->ns, sizeof(double));
     if (!d) return CTN_ERR_NOMEM;
@@ -95,7 +97,12 @@ int ctn_problem_stability(ctn_problem *p, const ctn_solution *s, ctn_stability *
         rc = inertia(p, out);
         out->stable = !rc && !out->semidefinite && out->negative == 0 && out->node == 0;
     }
-    p->sum = NULL;
+    p->sum = outer;
+    if (outer) {
+        outer->factorizations += scratch.factorizations;
+        outer->t_factor += scratch.t_factor;
+        outer->t_factor_cpu += scratch.t_factor_cpu;
+    }
     ctn_free(d);
     return rc;
 }

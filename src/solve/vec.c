@@ -1,4 +1,5 @@
 /* Small vector helpers and the clock of the solver's timings. */
+#include "linalg/pcg.h"
 #include "solve/problem.h"
 
 #include <math.h>
@@ -23,12 +24,6 @@ double ctn_vec_norm(const double *v, size_t n) { return sqrt(ctn_vec_dot(v, v, n
 
 void ctn_problem_symv(const ctn_problem *p, const double *Ax, const double *x, double *y)
 {
-    const int *cp = p->a->colptr, *ri = p->a->rowind;
-    memset(y, 0, p->ndof * sizeof(double));
-    for (size_t c = 0; c < p->ndof; c++)
-        for (int k = cp[c]; k < cp[c + 1]; k++) {
-            size_t r = (size_t)ri[k];
-            y[r] += Ax[k] * x[c];                        /* upper triangle and its mirror */
-            if (r != c) y[c] += Ax[k] * x[r];
-        }
+    ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
+    ctn_sym_matvec(&pat, Ax, x, y);
 }

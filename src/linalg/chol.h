@@ -1,0 +1,33 @@
+/* Internal to linalg/: the CHOLMOD backends' state (cholmod_backend.c) and the choice of
+ * the fill-reducing ordering (cholmod_order.c). CHOLMOD is used through its long-integer
+ * interface (cholmod_l_*): a factor of more than 2^31 entries (a 3-million-DOF net in
+ * the natural ordering) is indexed, not an overflow. */
+#ifndef CTN_LINALG_CHOL_H
+#define CTN_LINALG_CHOL_H
+
+#include "linalg/linsolve.h"
+
+#include <cholmod.h>
+
+typedef struct chol {
+    ctn_ctx *ctx;
+    cholmod_common cm;
+    cholmod_sparse *A;                  /* pattern only between factorizations */
+    cholmod_factor *L;
+    cholmod_dense *B, *X, *Y, *E;       /* right-hand side and solve2 workspace */
+    ctn_ordering ordering;
+    double lnz;                         /* non-zeros of L from the analysis */
+    double fl;                          /* flops of one factorization, from the analysis */
+    int indefinite;                     /* simplicial LDL' instead of LL' */
+} chol;
+
+/* Record a CHOLMOD failure (status in c->cm) with its meaning in words: CTN_ERR_NOMEM
+ * for an allocation, else CTN_ERR_LINALG. */
+int ctn_chol_error(chol *c, const char *what);
+/* The meaning of a CHOLMOD status. */
+const char *ctn_chol_status(int status);
+/* Choose the ordering (ord, or by the analyses' flops for CTN_ORDER_AUTO) and do the
+ * symbolic analysis: c->L, c->ordering, c->lnz, c->fl. */
+int ctn_chol_analyze(chol *c, ctn_ordering ord);
+
+#endif

@@ -1,0 +1,71 @@
+/* Preconditioned conjugate gradients (Hestenes-Stiefel, with the preconditioner M):
+ *   r = b - A x,  z = M^-1 r,  p = z;  repeat: alpha = r.z / p.Ap,  x += alpha p,
+ *   r -= alpha Ap,  beta = r.z' / r.z,  p = z' + beta p. */
+#include "linalg/pcg.h"
+
+#include <math.h>
+#include <string.h>
+
+void ctn_pcg_init(ctn_pcg *g, size_t n, double *work)
+{
+    g->n = n;
+    g->r = work;
+    g->z = work + n;
+    g->p = work + 2 * n;
+    g->q = work + 3 * n;
+}
+
+static double dot(const double *a, const double *b, size_t n)
+{
+    double s = 0;
+    for (size_t i = 0; i < n; i++) s += a[i] * b[i];
+    return s;
+}
+
+int ctn_pcg_solve(ctn_pcg *g, const double *b, double *x, double target, int maxit, double *res,
+                  int *iters, int *posdef)
+{
+    size_t n = g->n;
+    int rc = g->precond(g->data, b, x);                      /* x0 = M^-1 b */
+    if (!rc) rc = g->apply(g->data, x, g->q);
+    if (rc) return rc;
+    for (size_t i = 0; i < n; i++) g->r[i] = b[i] - g->q[i];
+    *res = sqrt(dot(g->r, g->r, n));
+    *iters = 0;
+    *posdef = 1;
+    double rz = 0;
+    while (*res > target && *iters < maxit) {
+        if ((rc = g->precond(g->data, g->r, g->z))) return rc;   /* z = M^-1 r */
+        double rz1 = dot(g->r, g->z, n), beta = *iters ? rz1 / rz : 0;
+        for (size_t i = 0; i < n; i++) g->p[i] = g->z[i] + beta * g->p[i];
+        rz = rz1;
+        if ((rc = g->apply(g->data, g->p, g->q))) return rc;    /* q = A p */
+        double pq = dot(g->p, g->q, n);
+        if (!(pq > 0)) {
+            *posdef = 0;
+            return CTN_OK;
+        }
+        double alpha = rz / pq;
+        for (size_t i = 0; i < n; i++) {
+            x[i] += alpha * g->p[i];
+            g->r[i] -= alpha * g->q[i];
+        }
+        *res = sqrt(dot(g->r, g->r, n));
+        ++*iters;
+    }
+    return CTN_OK;
+}
+
+void ctn_sym_matvec(const ctn_pattern *p, const double *Ax, const double *x, double *y)
+{
+    memset(y, 0, p->n * sizeof *y);
+    for (size_t j = 0; j < p->n; j++) {
+        double xj = x[j], yj = 0;
+        for (int k = p->colptr[j]; k < p->colptr[j + 1]; k++) {
+            size_t i = (size_t)p->rowind[k];
+            y[i] += Ax[k] * xj;                             /* upper entry (i, j) */
+            if (i != j) yj += Ax[k] * x[i];                 /* its mirror (j, i) */
+        }
+        y[j] += yj;
+    }
+}
