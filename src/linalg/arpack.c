@@ -2,6 +2,7 @@
  * eigenvalues theta = 1 / (lambda - sigma) of the operator (A - sigma B)^-1 B of
  * largest magnitude are those lambda nearest sigma; dseupd maps them back. */
 #include "linalg/eigen.h"
+#include "linalg/linsolve.h"
 
 #include <arpack/arpack.h>
 #include <string.h>
@@ -115,6 +116,8 @@ int ctn_eigen_shift_invert(ctn_ctx *ctx, int n, int nev, double sigma, const ctn
     iparam[0] = 1;                                  /* exact shifts */
     iparam[2] = CTN_ARPACK_MAXITER;
     iparam[6] = 3;                                  /* mode 3: shift-invert */
+    ctn_threads_saved saved;                        /* ARPACK's BLAS calls are vector-sized: */
+    ctn_threads_push(1, &saved);                    /* threads would only spin in them */
     if (!rc) {
         start_vector(w.resid, n);
         rc = iterate(ctx, &w, ops, iparam, ipntr, info);
@@ -125,6 +128,7 @@ int ctn_eigen_shift_invert(ctn_ctx *ctx, int n, int nev, double sigma, const ctn
                  iparam, ipntr, w.workd, w.workl, w.lworkl, &status);
         if (status) rc = ctn_error(ctx, CTN_ERR_LINALG, "eigen-solver: ARPACK dseupd failed (info %d)", status);
     }
+    ctn_threads_pop(&saved);
     if (!rc) {
         sort_pairs(w.d, w.v, n, nev);
         memcpy(lambda, w.d, (size_t)nev * sizeof(double));
