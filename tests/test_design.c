@@ -322,6 +322,29 @@ static void test_catenary_temperature(void)
     CHECK(H[0][1] < 0.98 * H[0][0]);
 }
 
+/* The verification example of OpenSees' CatenaryCable element (its manual page: a
+ * modification of Salehi Ahmad Abad et al. 2013): two catenaries of 50 m between three
+ * nodes in 3D, E A = 3e7, a load of 1 per unit length downward, alpha = 6.5e-6 and a
+ * temperature rise of 100; node 2 is held in y only. Published: node 2 moves (8.58693, 0,
+ * 2.82578). */
+static void test_opensees_catenary_temperature(void)
+{
+    const char *text =
+        "gravity 0 0 -1\nmaterial m E=3e7 strain=engineering alpha=6.5e-6\nsection s material=m A=1 w=1\n"
+        "node 1 0 0 90 fix=xyz\nnode 2 15 0 40 fix=y\nnode 3 30 60 30 fix=xyz\n"
+        "catenary 1 1 2 section=s length=50\ncatenary 2 2 3 section=s length=50\n"
+        "temperature all dT=100\nsolve steps=10\n";
+    run r = solve_text(text);
+    CHECK_MSG(r.rc == CTN_OK, "%s", ctn_ctx_message(r.ctx));
+    if (!r.rc) {
+        const double *d = ctn_solution_displacements(r.s);
+        CHECK_CLOSE(d[3], 8.58693, 0, 5e-6);
+        CHECK(d[4] == 0);
+        CHECK_CLOSE(d[5], 2.82578, 0, 5e-6);
+    }
+    done(&r);
+}
+
 static void test_errors(void)
 {
     const char *bad[][2] = {
@@ -362,6 +385,7 @@ int main(void)
     test_unreachable();
     test_groups_capacity();
     test_catenary_temperature();
+    test_opensees_catenary_temperature();
     test_errors();
     CHECK_DONE();
 }
