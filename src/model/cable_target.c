@@ -34,6 +34,11 @@ int ctn_cable_target_check(const ctn_model *m, const ctn_cable_spec *s, const ch
     double g2 = m->gravity[0] * m->gravity[0] + m->gravity[1] * m->gravity[1] + m->gravity[2] * m->gravity[2];
     if (s->target != CTN_TARGET_TENSION && !(g2 > 0))
         return ctn_model_error(m, CTN_ERR_MODEL, "cable: %s= is measured against gravity, and there is none (set gravity before the cable)", key);
+    double gc = 0;
+    for (int k = 0; k < 3; k++) gc += m->gravity[k] * (B[k] - A[k]) / chord;
+    if (s->target != CTN_TARGET_TENSION && !(g2 - gc * gc > 1e-18 * g2))
+        return ctn_model_error(m, CTN_ERR_MODEL, "cable: %s= is measured across the chord, and this chord is vertical "
+                               "(use tension=)", key);
     int si = ctn_model_find_section(m, section);
     if (si < 0) return ctn_model_error(m, CTN_ERR_MODEL, "cable: undefined section '%s'", section);
     const ctn_section *sec = &m->sections.v[si];
