@@ -11,17 +11,8 @@
 
 int ctn_read_tokenize(ctn_line *l, char *s)
 {
-    char *hash = strchr(s, '#');
-    if (hash) *hash = '\0';
-    l->ntok = 0;
-    l->used = 0;
-    char *save = NULL;
-    for (char *p = strtok_r(s, " \t\r\v\f", &save); p; p = strtok_r(NULL, " \t\r\v\f", &save)) {
-        if (l->ntok == CTN_MAX_TOKENS)
-            return ctn_parse_error(l, "too many fields on one line (more than %d)", CTN_MAX_TOKENS);
-        l->tok[l->ntok++] = p;
-    }
-    return CTN_OK;
+    size_t pos = 0;
+    return ctn_parse_scan_line(l, s, strlen(s), &pos);     /* the reader's own rules */
 }
 
 size_t ctn_read_line_end(const char *text, size_t start, size_t len, size_t *next)

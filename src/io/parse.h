@@ -44,6 +44,10 @@ int ctn_parse_leftovers(const ctn_line *l, int from, const char *directive);
 /* The reader's pieces (reader.c), shared with the form-finding writer, which walks the
  * same lines. Split one line (modified in place) into tokens; comments start with '#'. */
 int ctn_read_tokenize(ctn_line *l, char *s);
+/* The tokens of the line at text + *pos, in place (scan.c): blanks after a token and a
+ * comment's '#' become NULs, *pos moves to the next line; the line ends with a break
+ * before len, or at len where text[len] is a NUL. */
+int ctn_parse_scan_line(ctn_line *l, char *text, size_t len, size_t *pos);
 /* End of the line starting at `start`: the index of its LF, CR or CRLF (len if none);
  * *next gets the start of the next line. */
 size_t ctn_read_line_end(const char *text, size_t start, size_t len, size_t *next);

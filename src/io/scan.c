@@ -17,7 +17,7 @@ static int cls(const char *p) { return byte_class[(unsigned char)*p]; }
  * of a comment become NULs; *pos moves to the start of the next line. The line must end
  * with a line break before len, or at len where text[len] is a NUL. A NUL byte on the
  * line is binary data; more than CTN_MAX_TOKENS fields is an error. */
-static int scan_line(ctn_line *l, char *text, size_t len, size_t *pos)
+int ctn_parse_scan_line(ctn_line *l, char *text, size_t len, size_t *pos)
 {
     size_t i = *pos;
     int many = 0, c;
@@ -63,7 +63,7 @@ static int run_directive(ctn_line *l)
 int ctn_parse_lines(ctn_line *l, char *text, size_t len)
 {
     for (size_t pos = 0; pos < len; l->line++) {
-        int rc = scan_line(l, text, len, &pos);
+        int rc = ctn_parse_scan_line(l, text, len, &pos);
         if (!rc && l->ntok) rc = run_directive(l);
         if (rc) return rc;
     }
