@@ -232,10 +232,8 @@ static void put_groups(json_writer *jw, const ctn_solution *s, size_t k)
         ctn_jw_number(j, "min_force", r.min_force);
         ctn_jw_number(j, "max_stress", r.max_stress);
         ctn_jw_number(j, "max_strain", r.max_strain);
-        if (r.has_capacity) {
-            ctn_jw_number(j, "max_utilisation", r.max_utilisation);
-            ctn_jw_number(j, "worst_element", r.worst_element);
-        }
+        ctn_jw_number(j, "max_utilisation", r.max_utilisation);          /* 0 without an mbl */
+        if (r.has_capacity) ctn_jw_number(j, "worst_element", r.worst_element);
         ctn_jw_number(j, "slack", (double)r.slack);
         ctn_jw_number(j, "length", r.length);
         ctn_jw_number(j, "stressed_length", r.stressed_length);
