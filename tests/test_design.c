@@ -227,6 +227,12 @@ static void test_unreachable(void)
     CHECK(ctn_model_resolve_targets(ctx, m, &opt, NULL) == CTN_ERR_MODEL);
     CHECK_MSG(strstr(ctn_ctx_message(ctx), "low.cable:7") && strstr(ctn_ctx_message(ctx), "ranges from"), "%s",
               ctn_ctx_message(ctx));
+    ctn_model_destroy(&m);                  /* a sag below the taut limit: only past 10 % strain */
+    span_model(text, sizeof text, 20, 0, "sag=0.01");
+    CHECK(ctn_read_string(ctx, "taut.cable", text, strlen(text), &m, &opt) == CTN_OK);
+    CHECK(ctn_model_resolve_targets(ctx, m, &opt, NULL) == CTN_ERR_MODEL);
+    CHECK_MSG(strstr(ctn_ctx_message(ctx), "taut.cable:7") && strstr(ctn_ctx_message(ctx), "reachable range ends at sag="),
+              "%s", ctn_ctx_message(ctx));
     /* without resolving, a model with targets is refused */
     ctn_model_destroy(&m);
     span_model(text, sizeof text, 20, 0, "sag=10");

@@ -15,6 +15,7 @@
 
 #define TARGET_MAXIT 60
 #define TARGET_RTOL 1e-10
+#define TARGET_MAX_STRAIN 0.1   /* the largest strain a target may ask of its cable */
 
 typedef struct targets {
     ctn_ctx *ctx;
@@ -310,6 +311,68 @@ static int reachable(targets *tg, char *msg, size_t size)
     return CTN_OK;
 }
 
+/* Largest strain of the members of targeted cable j at the state u3. */
+static double cable_strain(const targets *tg, const double *u3, size_t j)
+{
+    const ctn_model *m = tg->m;
+    const ctn_cable *c = &m->cables.v[tg->cab[j]];
+    double eps = -INFINITY;
+    for (size_t e = c->first; e < c->first + c->count; e++) {
+        const int *nd = ctn_elem_nodes(m, e);
+        double X[6], u[6], f[6];
+        for (int a = 0; a < 2; a++)
+            for (int k = 0; k < 3; k++) {
+                X[3 * a + k] = m->nodes.v[nd[a]].X[k];
+                u[3 * a + k] = u3[3 * (size_t)nd[a] + (size_t)k];
+            }
+        ctn_elem_state st;
+        ctn_asm_block_of(tg->p->a, e)->ops->eval(ctn_asm_props(tg->p->a, e), 0, X, u, f, NULL, &st);
+        eps = fmax(eps, st.strain);
+    }
+    return eps;
+}
+
+/* A target met only by stretching its cable beyond TARGET_MAX_STRAIN (the strain the
+ * summary calls far beyond an elastic cable) is out of reach: for one target, the value
+ * at that strain (bisection on the length) bounds the reachable range. */
+static int elastic_range(targets *tg)
+{
+    size_t worst = 0;
+    double eps = -INFINITY;
+    for (size_t j = 0; j < tg->nt; j++) {
+        double e = cable_strain(tg, tg->u3, j);
+        if (e > eps) { eps = e; worst = j; }
+    }
+    if (!(eps > TARGET_MAX_STRAIN)) return CTN_OK;
+    const ctn_cable *c = &tg->m->cables.v[tg->cab[worst]];
+    double Lbad = tg->L[worst], found = Lbad, q = NAN;
+    char msg[320];
+    if (tg->nt == 1) {
+        double Lok = Lbad * (1 + eps) / (1 + 0.5 * TARGET_MAX_STRAIN);   /* about half the limit strain */
+        for (int it = 0; it < 60 && Lok - Lbad > 1e-9 * Lok; it++) {
+            double mid = 0.5 * (Lbad + Lok);
+            int ok = 0, rc;
+            set_length(tg, 0, mid);
+            if ((rc = solve_at(tg, &ok))) return rc;
+            if (ok && cable_strain(tg, tg->u3, 0) <= TARGET_MAX_STRAIN) {
+                Lok = mid;
+                q = quantity(tg, tg->u3, 0);
+            } else {
+                Lbad = mid;
+            }
+        }
+    }
+    if (isfinite(q))
+        snprintf(msg, sizeof msg, "it needs a strain of %.3g (length %.6g); the reachable range ends at %s=%.6g, the most "
+                 "taut cable with strains up to %g", eps, found, target_key[c->target], q, TARGET_MAX_STRAIN);
+    else
+        snprintf(msg, sizeof msg, "it needs a strain of %.3g (length %.6g), beyond the %g an elastic cable takes", eps, found,
+                 TARGET_MAX_STRAIN);
+    return ctn_error_at(tg->ctx, CTN_ERR_MODEL, tg->m->file, c->line, "cable %d-%d: no unstressed length gives %s=%g within "
+                        "the elastic range: %s", tg->m->nodes.v[c->node[0]].id, tg->m->nodes.v[c->node[1]].id,
+                        target_key[c->target], c->target_value, msg);
+}
+
 /* Outer Newton on the lengths. */
 static int find_lengths(targets *tg)
 {
@@ -354,7 +417,7 @@ static int find_lengths(targets *tg)
         }
         if (!accepted) return not_met(tg, "the model does not converge near the lengths that the target needs");
     }
-    return CTN_OK;
+    return elastic_range(tg);
 }
 
 static int alloc_targets(targets *tg)
