@@ -9,6 +9,7 @@
  * - threads and the BLAS are reported. */
 #include "catena.h"
 #include "check.h"
+#include "linalg/chol.h"
 #include "linalg/linsolve.h"
 #include "linalg/pcg.h"
 
@@ -220,8 +221,62 @@ static void test_orderings(void)
     free(c.d);
 }
 
+/* The quotient graph: supervariables of a pattern given by its upper columns (rows
+ * listed), against the grouping worked out by hand. */
+static size_t supervariables(int n, const int *const *cols, ctn_chol_quot *q, chol *c)
+{
+    size_t nz = 0;
+    for (int j = 0; j < n; j++)
+        for (const int *r = cols[j]; *r >= 0; r++) nz++;
+    c->A = cholmod_l_allocate_sparse((size_t)n, (size_t)n, nz, 1, 1, 1, CHOLMOD_PATTERN, &c->cm);
+    if (!c->A) return 0;
+    SuiteSparse_long *Ap = c->A->p, *Ai = c->A->i;
+    nz = 0;
+    for (int j = 0; j < n; j++) {
+        Ap[j] = (SuiteSparse_long)nz;
+        for (const int *r = cols[j]; *r >= 0; r++) Ai[nz++] = *r;
+    }
+    Ap[n] = (SuiteSparse_long)nz;
+    size_t ns = ctn_chol_quotient(c, q) == CTN_OK ? q->ns : 0;
+    cholmod_l_free_sparse(&c->A, &c->cm);
+    return ns;
+}
+
+static void test_quotient(void)
+{
+    chol c;
+    ctn_chol_quot q;
+    memset(&c, 0, sizeof c);
+    CHECK(ctn_ctx_create(&c.ctx) == CTN_OK);
+    cholmod_l_start(&c.cm);
+    /* Three nodes in a chain with 3, 2 and 3 free DOFs (columns 0-2, 3-4, 5-7): column 3
+     * is column 2 and its diagonal, but column 5 sees DOF 3 and not DOF 2. */
+    static const int c0[] = { 0, -1 }, c1[] = { 0, 1, -1 }, c2[] = { 0, 1, 2, -1 }, c3[] = { 0, 1, 2, 3, -1 },
+                     c4[] = { 0, 1, 2, 3, 4, -1 }, c5[] = { 3, 4, 5, -1 }, c6[] = { 3, 4, 5, 6, -1 },
+                     c7[] = { 3, 4, 5, 6, 7, -1 };
+    static const int *const chain[] = { c0, c1, c2, c3, c4, c5, c6, c7 };
+    CHECK(supervariables(8, chain, &q, &c) == 3);
+    if (q.first) CHECK(q.first[1] == 3 && q.first[2] == 5 && q.first[3] == 8);
+    if (q.G) {                                   /* the quotient: a path 0 - 1 - 2 */
+        const SuiteSparse_long *Gp = q.G->p, *Gi = q.G->i;
+        CHECK(Gp[3] == 5 && Gi[0] == 0 && Gi[1] == 0 && Gi[2] == 1 && Gi[3] == 1 && Gi[4] == 2);
+        SuiteSparse_long sperm[3] = { 2, 0, 1 }, perm[8];
+        ctn_chol_quotient_expand(&q, sperm, perm);
+        CHECK(perm[0] == 5 && perm[2] == 7 && perm[3] == 0 && perm[5] == 2 && perm[6] == 3 && perm[7] == 4);
+    }
+    ctn_chol_quotient_free(&c, &q);
+    /* Column 1 is column 0 and its diagonal, but column 3 sees row 0 alone: no merge. */
+    static const int d0[] = { 0, -1 }, d1[] = { 0, 1, -1 }, d2[] = { 1, 2, -1 }, d3[] = { 0, 3, -1 };
+    static const int *const apart[] = { d0, d1, d2, d3 };
+    CHECK(supervariables(4, apart, &q, &c) == 4 && !q.G);
+    ctn_chol_quotient_free(&c, &q);
+    cholmod_l_finish(&c.cm);
+    ctn_ctx_destroy(&c.ctx);
+}
+
 int main(void)
 {
+    test_quotient();
     test_pcg();
     test_reuse();
     test_orderings();

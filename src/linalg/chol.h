@@ -30,4 +30,17 @@ const char *ctn_chol_status(int status);
  * symbolic analysis: c->L, c->ordering, c->lnz, c->fl. */
 int ctn_chol_analyze(chol *c, ctn_ordering ord);
 
+/* The quotient graph of c->A (cholmod_quotient.c): ns supervariables, runs of
+ * consecutive columns with identical patterns (a node's DOFs), supervariable s holding
+ * columns first[s] .. first[s + 1] - 1; G its upper pattern (NULL when ns = n: nothing
+ * merged). Expand a permutation of the supervariables into one of the columns. */
+typedef struct ctn_chol_quot {
+    size_t ns;
+    SuiteSparse_long *first;            /* ns + 1 */
+    cholmod_sparse *G;
+} ctn_chol_quot;
+int ctn_chol_quotient(chol *c, ctn_chol_quot *q);
+void ctn_chol_quotient_expand(const ctn_chol_quot *q, const SuiteSparse_long *sperm, SuiteSparse_long *perm);
+void ctn_chol_quotient_free(chol *c, ctn_chol_quot *q);
+
 #endif
