@@ -5,6 +5,7 @@
 #include "model/cable_target.h"
 
 #include <math.h>
+#include <string.h>
 
 static const char *const names[] = { "length", "H", "sag", "tension" };
 
@@ -33,7 +34,8 @@ int ctn_cable_target_check(const ctn_model *m, const char *what, const ctn_cable
         return ctn_model_error(m, CTN_ERR_MODEL, "%s: a target (%s=) sets the length: give no prestress with it", what, key);
     double g2 = m->gravity[0] * m->gravity[0] + m->gravity[1] * m->gravity[1] + m->gravity[2] * m->gravity[2];
     if (s->target != CTN_TARGET_TENSION && !(g2 > 0))
-        return ctn_model_error(m, CTN_ERR_MODEL, "%s: %s= is measured against gravity, and there is none (set gravity before the %s)", what, key, what);
+        return ctn_model_error(m, CTN_ERR_MODEL, "%s: %s= is measured against gravity, and there is none (set gravity before the %.*s)", what, key,
+                               (int)strcspn(what, " "), what);
     double gc = 0;
     for (int k = 0; k < 3; k++) gc += m->gravity[k] * (B[k] - A[k]) / chord;
     if (s->target != CTN_TARGET_TENSION && !(g2 - gc * gc > 1e-18 * g2))
