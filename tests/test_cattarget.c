@@ -259,10 +259,43 @@ static void test_errors(void)
     ctn_ctx_destroy(&ctx);
 }
 
+/* Every allocation of the root find and the solve after it may fail: CTN_ERR_NOMEM and
+ * no leak (the sanitizer build checks), until the run needs no more allocations. */
+static void test_alloc_failures(void)
+{
+    const char *text =
+        "units kN m\ngravity 0 0 -1\nmaterial steel E=1.6e8 strain=engineering\nmaterial mast E=2e8\n"
+        "section guy material=steel A=2e-4 w=0.02\nsection pole material=mast A=0.01\nnode 1 0 0 0 fix=xyz\n"
+        "node 2 0 0 40\nnode 3 30 0 0 fix=xyz\nnode 4 -30 0 0 fix=xyz\nnode 5 0 30 0 fix=xyz\nnode 6 0 -30 0 fix=xyz\n"
+        "element 1 1 2 section=pole\ncatenary 2 3 2 section=guy tension=20\ncatenary 3 4 2 section=guy tension=20\n"
+        "cable 5 2 section=guy n=4 H=15\ncable 6 2 section=guy n=4 H=15\nload 2 1 0 0\n";
+    int nomem = 0, ok = 0;
+    for (long k = 1; k < 100000 && !ok; k += k < 300 ? 1 : 13) {   /* every one, then a sample */
+        ctn_ctx *ctx = NULL;
+        ctn_model *m = NULL;
+        ctn_solution *s = NULL;
+        ctn_solve_options opt;
+        ctn_ctx_create(&ctx);
+        int rc = ctn_read_string(ctx, "alloc.cable", text, strlen(text), &m, &opt);
+        CHECK(rc == CTN_OK);
+        ctn_ctx_fail_alloc_at(ctx, k);
+        if (!rc) rc = ctn_model_resolve_targets(ctx, m, &opt, NULL);
+        if (!rc) rc = ctn_solve(ctx, m, &opt, &s);
+        CHECK_MSG(rc == CTN_OK || rc == CTN_ERR_NOMEM, "k=%ld: rc %d: %s", k, rc, ctn_ctx_message(ctx));
+        nomem += rc == CTN_ERR_NOMEM;
+        ok = rc == CTN_OK;
+        ctn_solution_destroy(&s);
+        ctn_model_destroy(&m);
+        ctn_ctx_destroy(&ctx);
+    }
+    CHECK_MSG(ok && nomem > 10, "ok %d, %d allocation failures", ok, nomem);
+}
+
 int main(void)
 {
     test_spans();
     test_guyed();
     test_errors();
+    test_alloc_failures();
     CHECK_DONE();
 }
