@@ -119,12 +119,14 @@ static int read_models(ctn_ctx *ctx, study_args *a, ctn_model **base, ctn_span *
     return CTN_EXIT_OK;
 }
 
+/* The four figures, and with catenary elements beside a mesh the fifth. */
 static int figures(ctn_ctx *ctx, const ctn_study *st, const study_args *a)
 {
-    const char *names[4];
+    const char *names[5] = { NULL, NULL, NULL, NULL, NULL };
     int rc = ctn_study_write_figures(ctx, st, a->outdir, names);
+    if (!rc) rc = ctn_study_write_element_figure(ctx, st, a->outdir, &names[4]);
     if (rc) return ctn_app_fail(ctx, rc);
-    return ctn_app_render(ctx, a->outdir, names, 4, a->quiet || a->json);
+    return ctn_app_render(ctx, a->outdir, names, names[4] ? 5 : 4, a->quiet || a->json);
 }
 
 int ctn_cmd_study(int argc, char **argv)

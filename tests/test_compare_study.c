@@ -230,6 +230,10 @@ static void test_study_catenary(const char *dir)
         CHECK(ctn_study_write_figures(ctx, st, dir, names) == CTN_OK);
         CHECK(has_file(dir, "study_mesh.dat") && file_contains(dir, "study_fea.dat", "catenary element"));
         CHECK(file_contains(dir, "study_stress_max.gp", "FE mesh, 20 cable elements"));
+        const char *el = NULL;
+        CHECK(ctn_study_write_element_figure(ctx, st, dir, &el) == CTN_OK && el && !strcmp(el, "study_element"));
+        CHECK(has_file(dir, "study_element.dat") && file_contains(dir, "study_element.gp", "\"study_element.dat\" using 2:3"));
+        CHECK(ctn_study_write_element_figure(ctx, mesh, dir, &el) == CTN_OK && el == NULL);
     }
     ctn_study_destroy(&st);
     ctn_study_destroy(&mesh);

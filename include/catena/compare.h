@@ -265,6 +265,13 @@ int ctn_study_level_at(const ctn_study *s, ctn_level_axis axis, double stress,
  * NULL. */
 int ctn_study_write_figures(ctn_ctx *ctx, const ctn_study *s, const char *dir,
                             const char *names[4]);
+/* A study on catenary elements with the span's mesh beside them (CTN_STUDY_CATENARY on a
+ * span of cable elements): the figure study_element into dir, |X - element| / element
+ * against L0 - chord (log-log) for X = the mesh and the elastic catenary (sag, support
+ * stress, H; data study_element.dat, rows where both converged). *name (may be NULL)
+ * gets "study_element", or NULL when the study has no mesh (then nothing is written). */
+int ctn_study_write_element_figure(ctn_ctx *ctx, const ctn_study *s, const char *dir,
+                                   const char **name);
 
 /* ---------------------------------------------------------------------------------------
  * Mesh convergence: the base model's span rebuilt with n elements (engineering strain,

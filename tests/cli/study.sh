@@ -87,6 +87,7 @@ for L in 200.3340 201.3545 250.8777 279.6157; do
     [ "$(grep -c "^ *$L |" "$T/out")" = 1 ] || WHY+=("no line for $L in the element-against-mesh table")
 done
 [ -s "$T/cat/study_mesh.dat" ] || WHY+=("study_mesh.dat missing")
+[ -s "$T/cat/study_element.gp" ] && [ -s "$T/cat/study_element.dat" ] || WHY+=("study_element figure missing")
 grep -q "FE mesh, 20 cable elements" "$T/cat/study_sag.gp" || WHY+=("the sag figure lacks the mesh")
 "$BIN" study "${PAPER[@]}" --sweep 12 --element catenary --json >"$T/c.json" 2>"$T/err" || WHY+=("--element --json: exit $?")
 if [ "$have_python" = 1 ]; then
