@@ -6,39 +6,24 @@
  * on the closed form at the solved chord; the summary record, the JSON and the errors. */
 #include "catena.h"
 #include "check.h"
+#include "run_text.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
-typedef struct run {
-    ctn_ctx *ctx;
-    ctn_model *m;
-    ctn_solution *s;
-    int rc;
-} run;
-
-static run solve_text(const char *name, const char *text)
+/* Read a model given as text, every allocation of the library allowed (0) or the k-th
+ * after the read failing; then its targets resolved and, with solve, the solve. */
+static int read_resolve(ctn_ctx *ctx, const char *name, const char *text, long k, int solve, ctn_model **m,
+                        ctn_solution **s)
 {
-    run r = { NULL, NULL, NULL, 0 };
     ctn_solve_options opt;
-    ctn_ctx_create(&r.ctx);
-    r.rc = ctn_read_string(r.ctx, name, text, strlen(text), &r.m, &opt);
-    if (!r.rc) r.rc = ctn_model_resolve_targets(r.ctx, r.m, &opt, NULL);
-    if (!r.rc) r.rc = ctn_solve(r.ctx, r.m, &opt, &r.s);
-    if (!r.rc) {
-        ctn_solve_summary sum;
-        ctn_solution_summary(r.s, &sum);
-        CHECK_MSG(sum.reason == CTN_CONVERGED, "%s", ctn_reason_name(sum.reason));
-    }
-    return r;
-}
-
-static void done(run *r)
-{
-    ctn_solution_destroy(&r->s);
-    ctn_model_destroy(&r->m);
-    ctn_ctx_destroy(&r->ctx);
+    int rc = ctn_read_string(ctx, name, text, strlen(text), m, &opt);
+    ctn_ctx_fail_alloc_at(ctx, rc ? 0 : k);
+    if (!rc) rc = ctn_model_resolve_targets(ctx, *m, &opt, NULL);
+    if (!rc && solve) rc = ctn_solve(ctx, *m, &opt, s);
+    ctn_ctx_fail_alloc_at(ctx, 0);
+    return rc;
 }
 
 enum { KIND_H = 0, KIND_SAG = 1, KIND_TENSION = 2 };
@@ -93,7 +78,7 @@ static void check_span(const span_case *sc, int kind)
     static const char *const keys[3] = { "H=30", "sag=12", "tension=45" };
     static const double values[3] = { 30, 12, 45 };
     char text[1024], key[64];
-    run r = solve_text("span.cable", span_text(text, sizeof text, sc, keys[kind]));
+    run r = run_text("span.cable", span_text(text, sizeof text, sc, keys[kind]));
     CHECK_MSG(r.rc == CTN_OK, "%s: %s", keys[kind], ctn_ctx_message(r.ctx));
     if (r.rc) { done(&r); return; }
     ctn_cable_info t;
@@ -115,7 +100,7 @@ static void check_span(const span_case *sc, int kind)
     done(&r);
     /* the length found, given as length=, gives the target back */
     snprintf(key, sizeof key, "length=%.17g", t.length);
-    r = solve_text("again.cable", span_text(text, sizeof text, sc, key));
+    r = run_text("again.cable", span_text(text, sizeof text, sc, key));
     CHECK(r.rc == CTN_OK);
     if (!r.rc && !ctn_solution_catenary(r.m, r.s, 0, 0, &cr)) {
         ctn_ecatenary_in in = { sc->l, sc->h, sc->w * sc->g, EA, t.length };
@@ -161,7 +146,7 @@ static void test_guyed(void)
         "node 5 -15 -25.98 0 fix=xyz\nelement 1 1 2 section=pole\n"
         "catenary 2 3 2 section=guy tension=20\ncatenary 3 4 2 section=guy tension=25\n"
         "cable 5 2 section=guy n=10 tension=30\nload 2 2 0 0\n";
-    run r = solve_text("guyed.cable", text);
+    run r = run_text("guyed.cable", text);
     CHECK_MSG(r.rc == CTN_OK, "%s", ctn_ctx_message(r.ctx));
     if (r.rc) { done(&r); return; }
     ctn_cable_info t, c;
@@ -202,15 +187,17 @@ static void test_guyed(void)
     done(&r);
 }
 
+/* The model fails to resolve its targets (resolve) or to solve without it, with code
+ * and a message holding what. */
 static void expect_error(const char *text, int resolve, int code, const char *what)
 {
     ctn_ctx *ctx = NULL;
     ctn_model *m = NULL;
     ctn_solution *s = NULL;
-    ctn_solve_options opt;
     ctn_ctx_create(&ctx);
-    int rc = ctn_read_string(ctx, "bad.cable", text, strlen(text), &m, &opt);
-    if (!rc) rc = resolve ? ctn_model_resolve_targets(ctx, m, &opt, NULL) : ctn_solve(ctx, m, &opt, &s);
+    int rc = resolve ? read_resolve(ctx, "bad.cable", text, 0, 0, &m, &s) : ctn_read_string(ctx, "bad.cable", text,
+                                                                                         strlen(text), &m, NULL);
+    if (!resolve && !rc) rc = ctn_solve(ctx, m, NULL, &s);
     CHECK_MSG(rc == code && strstr(ctn_ctx_message(ctx), what), "rc %d: %s (expected '%s')", rc, ctn_ctx_message(ctx), what);
     CHECK(s == NULL);
     ctn_model_destroy(&m);
@@ -274,13 +261,8 @@ static void test_alloc_failures(void)
         ctn_ctx *ctx = NULL;
         ctn_model *m = NULL;
         ctn_solution *s = NULL;
-        ctn_solve_options opt;
         ctn_ctx_create(&ctx);
-        int rc = ctn_read_string(ctx, "alloc.cable", text, strlen(text), &m, &opt);
-        CHECK(rc == CTN_OK);
-        ctn_ctx_fail_alloc_at(ctx, k);
-        if (!rc) rc = ctn_model_resolve_targets(ctx, m, &opt, NULL);
-        if (!rc) rc = ctn_solve(ctx, m, &opt, &s);
+        int rc = read_resolve(ctx, "alloc.cable", text, k, 1, &m, &s);
         CHECK_MSG(rc == CTN_OK || rc == CTN_ERR_NOMEM, "k=%ld: rc %d: %s", k, rc, ctn_ctx_message(ctx));
         nomem += rc == CTN_ERR_NOMEM;
         ok = rc == CTN_OK;

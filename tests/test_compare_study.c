@@ -239,8 +239,9 @@ static void test_study_catenary(const char *dir)
     ctn_study_destroy(&mesh);
     ctn_model_destroy(&base);
     /* a base of one catenary element: catenary rows, no mesh beside them */
-    const char *one = "units kN m\ngravity 0 -1 0\nmaterial steel E=2e8\nsection s material=steel A=3.14e-4 w=0.1\n"
-                      "node 1 0 0 0 fix=xyz\nnode 2 200 0 0 fix=xyz\ncatenary 1 1 2 section=s length=201.3545\n";
+#define PAPER_SUPPORTS "units kN m\ngravity 0 -1 0\nmaterial steel E=2e8\nsection s material=steel A=3.14e-4 w=0.1\n" \
+                       "node 1 0 0 0 fix=xyz\nnode 2 200 0 0 fix=xyz\n"
+    const char *one = PAPER_SUPPORTS "catenary 1 1 2 section=s length=201.3545\n";
     CHECK(ctn_read_string(ctx, "one.cable", one, strlen(one), &base, NULL) == CTN_OK);
     opt.element = CTN_STUDY_MESH;
     opt.nlengths = 0;
@@ -257,8 +258,7 @@ static void test_study_catenary(const char *dir)
     ctn_study_destroy(&st);
     ctn_model_destroy(&base);
     /* an hload cannot ride on a catenary element; an unknown kind is refused */
-    const char *hl = "units kN m\ngravity 0 -1 0\nmaterial steel E=2e8\nsection s material=steel A=3.14e-4 w=0.1\n"
-                     "node 1 0 0 0 fix=xyz\nnode 2 200 0 0 fix=xyz\ncable 1 2 section=s n=10 length=201\nhload q=0.5 elements=all\n";
+    const char *hl = PAPER_SUPPORTS "cable 1 2 section=s n=10 length=201\nhload q=0.5 elements=all\n";
     CHECK(ctn_read_string(ctx, "hl.cable", hl, strlen(hl), &base, NULL) == CTN_OK);
     opt.element = CTN_STUDY_CATENARY;
     CHECK(ctn_study_run(ctx, base, &opt, &st) == CTN_ERR_MODEL && strstr(ctn_ctx_message(ctx), "hl.cable: a catenary element"));
