@@ -1,6 +1,7 @@
 /* Cables and catenary elements set by a target (H=, sag=, tension=; the quantities in
- * target_q.c): the unstressed lengths that meet every target in the solved first load step, by Newton's method on the lengths (outer loop)
- * with the sensitivities from the FE tangent (docs/theory.md, "Cables set by a target"):
+ * target_q.c): the unstressed lengths that meet every target in the solved first load
+ * step, by Newton's method on the lengths (outer loop) with the sensitivities from the FE
+ * tangent (docs/theory.md, "Cables set by a target"):
  *   F(u, L) = f_ext(L) - f_int(u, L) = 0  =>  du/dL_j = K^-1 dF/dL_j,
  *   dQ_i/dL_j = d/dh Q_i(u + h du/dL_j, L + h e_j) at h = 0,
  * dF/dL_j and the directional derivative of Q by central differences (the partial
