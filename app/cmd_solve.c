@@ -70,18 +70,22 @@ static const char *method_title(ctn_method m)
     return m == CTN_METHOD_NEWTON ? "Newton-Raphson" : m == CTN_METHOD_ARCLENGTH ? "arc-length" : "Newton (auto)";
 }
 
-/* The lengths found for cables set by a target, a line each. */
+/* The lengths found for cables and catenary elements set by a target, a line each. */
 static void print_targets(const ctn_model *m)
 {
     static const char *const key[] = { "length", "H", "sag", "tension" };
-    for (size_t i = 0; i < ctn_model_cable_count(m); i++) {
+    size_t nc = ctn_model_cable_count(m), ne = ctn_model_element_count(m);
+    for (size_t i = 0; i < nc + ne; i++) {
         ctn_cable_info c;
+        ctn_element_info e;
         ctn_node_info a, b;
-        if (ctn_model_cable(m, i, &c) || c.target == CTN_TARGET_NONE || ctn_model_node(m, (size_t)c.node[0], &a) ||
-            ctn_model_node(m, (size_t)c.node[1], &b))
+        if ((i < nc ? ctn_model_cable(m, i, &c) : ctn_model_element_target(m, i - nc, &c)) || c.target == CTN_TARGET_NONE ||
+            ctn_model_node(m, (size_t)c.node[0], &a) || ctn_model_node(m, (size_t)c.node[1], &b))
             continue;
-        printf("cable %d-%d: %s=%g reached (%.12g), length found %.12g %s (%d outer iterations)\n", a.id, b.id,
-               key[c.target], c.target_value, c.target_achieved, c.length, ctn_model_length_unit(m), c.target_iterations);
+        if (i < nc) printf("cable %d-%d", a.id, b.id);
+        else if (!ctn_model_element(m, i - nc, &e)) printf("catenary %d (nodes %d-%d)", e.id, a.id, b.id);
+        printf(": %s=%g reached (%.12g), length found %.12g %s (%d outer iterations)\n", key[c.target], c.target_value,
+               c.target_achieved, c.length, ctn_model_length_unit(m), c.target_iterations);
     }
 }
 

@@ -1,5 +1,5 @@
 /* catena study MODEL... [--lengths LIST] [--sweep N] [--from L] [--to L] [--levels LIST]
- *                       [--claims LIST] [--json] [-o DIR] [-q]
+ *                       [--claims LIST] [--element mesh|catenary] [--json] [-o DIR] [-q]
  * The founding paper's study: the span of MODEL re-solved over a sweep of unstressed
  * lengths, FEA against the inextensible catenary (catena/compare.h, ctn_study_*). The
  * lengths of every MODEL given (same span otherwise) and of --lengths are marked. */
@@ -49,7 +49,10 @@ static int parse_option(int argc, char **argv, int *i, study_args *a)
     else if (!strcmp(o, "--lengths")) bad = list_option(o, v, a->lengths, MAX_LIST, &a->nlengths);
     else if (!strcmp(o, "--levels")) bad = list_option(o, v, a->levels, MAX_LIST, &a->nlevels);
     else if (!strcmp(o, "--claims")) bad = list_option(o, v, a->claims, 2 * MAX_LIST, &a->nclaims) || a->nclaims % 2;
-    else if (!strcmp(o, "--from")) bad = number_option(o, v, &a->opt.sweep_from);
+    else if (!strcmp(o, "--element")) {
+        bad = strcmp(v, "catenary") && strcmp(v, "mesh");
+        a->opt.element = strcmp(v, "catenary") ? CTN_STUDY_MESH : CTN_STUDY_CATENARY;
+    } else if (!strcmp(o, "--from")) bad = number_option(o, v, &a->opt.sweep_from);
     else if (!strcmp(o, "--to")) bad = number_option(o, v, &a->opt.sweep_to);
     else if (!strcmp(o, "--sweep")) {
         bad = number_option(o, v, &x) || x != floor(x) || x > 100000;
@@ -78,7 +81,8 @@ static int parse_args(int argc, char **argv, study_args *a)
     a->nclaims /= 2;
     if (!a->nmodel)
         fprintf(stderr, "usage: catena study MODEL... [--lengths LIST] [--sweep N] [--from L] [--to L]\n"
-                        "                    [--levels LIST] [--claims S:E,...] [--claims-title TEXT] [--json] [-o DIR] [-q]\n");
+                        "                    [--levels LIST] [--claims S:E,...] [--claims-title TEXT]\n"
+                        "                    [--element mesh|catenary] [--json] [-o DIR] [-q]\n");
     return a->nmodel ? 0 : 1;
 }
 
@@ -115,12 +119,14 @@ static int read_models(ctn_ctx *ctx, study_args *a, ctn_model **base, ctn_span *
     return CTN_EXIT_OK;
 }
 
+/* The four figures, and with catenary elements beside a mesh the fifth. */
 static int figures(ctn_ctx *ctx, const ctn_study *st, const study_args *a)
 {
-    const char *names[4];
+    const char *names[5] = { NULL, NULL, NULL, NULL, NULL };
     int rc = ctn_study_write_figures(ctx, st, a->outdir, names);
+    if (!rc) rc = ctn_study_write_element_figure(ctx, st, a->outdir, &names[4]);
     if (rc) return ctn_app_fail(ctx, rc);
-    return ctn_app_render(ctx, a->outdir, names, 4, a->quiet || a->json);
+    return ctn_app_render(ctx, a->outdir, names, names[4] ? 5 : 4, a->quiet || a->json);
 }
 
 int ctn_cmd_study(int argc, char **argv)

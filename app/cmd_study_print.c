@@ -5,27 +5,79 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* "FEA", or "element" when each row is one catenary element. */
+static const char *fea_label(const ctn_study *st)
+{
+    return ctn_study_element_kind(st) == CTN_STUDY_CATENARY ? "element" : "FEA";
+}
+
 static void print_marked(const ctn_study *st)
 {
     const ctn_span *s = ctn_study_span(st);
-    char L[16], S[16];
+    const char *fea = fea_label(st);
+    char L[16], S[16], h[3][16];
     snprintf(L, sizeof L, "[%s]", s->length_unit);
     snprintf(S, sizeof S, "[%s]", s->mpa > 0 ? "MPa" : "F/L^2");
-    printf("\nFEA against the inextensible catenary at the marked lengths (difference = (catenary - FEA) / FEA)\n");
-    printf("%10s %4s | %9s %9s %7s | %9s %9s %7s | %9s %9s %7s\n", "L0", "it", "sag FEA", "catenary", "diff",
-           "s_max FEA", "catenary", "diff", "s_min FEA", "catenary", "diff");
+    snprintf(h[0], sizeof h[0], "sag %s", *fea == 'e' ? "el." : fea);
+    snprintf(h[1], sizeof h[1], "s_max %s", *fea == 'e' ? "el." : fea);
+    snprintf(h[2], sizeof h[2], "s_min %s", *fea == 'e' ? "el." : fea);
+    if (*fea == 'e') printf("\nThe catenary element (one per length) against the inextensible catenary at the marked lengths\n"
+                            "(difference = (catenary - element) / element)\n");
+    else printf("\nFEA against the inextensible catenary at the marked lengths (difference = (catenary - FEA) / FEA)\n");
+    printf("%10s %4s | %9s %9s %7s | %9s %9s %7s | %9s %9s %7s\n", "L0", "it", h[0], "catenary", "diff",
+           h[1], "catenary", "diff", h[2], "catenary", "diff");
     printf("%10s %4s | %9s %9s %7s | %9s %9s %7s | %9s %9s %7s\n", L, "", L, L, "[%]", S, S, "[%]", S, S, "[%]");
     for (size_t i = 0; i < ctn_study_count(st); i++) {
         const ctn_study_row *r = ctn_study_row_at(st, i);
         if (!r->marked) continue;
         const ctn_compare_values *f = &r->v[CTN_FORM_FEA], *c = &r->v[CTN_FORM_CATENARY];
         printf("%10.4f %4d", r->L0, r->iterations);
-        if (!(r->present & 1u << CTN_FORM_FEA)) { printf("  FEA not converged: %s\n", ctn_reason_name(r->reason)); continue; }
+        if (!(r->present & 1u << CTN_FORM_FEA)) { printf("  %s not converged: %s\n", fea, ctn_reason_name(r->reason)); continue; }
         if (!(r->present & 1u << CTN_FORM_CATENARY)) { printf("  no catenary (not longer than the chord)\n"); continue; }
         printf(" | %9.4f %9.4f %+7.2f | %9.3f %9.3f %+7.2f | %9.3f %9.3f %+7.2f\n", f->sag, c->sag,
                100 * ctn_compare_rel(c->sag, f->sag), ctn_app_stress(s, f->stress_max), ctn_app_stress(s, c->stress_max),
                100 * ctn_compare_rel(c->stress_max, f->stress_max), ctn_app_stress(s, f->stress_min),
                ctn_app_stress(s, c->stress_min), 100 * ctn_compare_rel(c->stress_min, f->stress_min));
+    }
+}
+
+/* Relative difference of a from the element b, or "-" when a is absent. */
+static void print_rel(int has, double a, double b)
+{
+    if (has) printf(" %+10.2e", ctn_compare_rel(a, b));
+    else printf(" %10s", "-");
+}
+
+/* The catenary element against the elastic catenary (the same law, so round-off) and the
+ * span's mesh (its strain law and discretization) at the marked lengths. */
+static void print_mesh(const ctn_study *st)
+{
+    const ctn_span *s = ctn_study_span(st);
+    int any = 0;
+    for (size_t i = 0; i < ctn_study_count(st); i++) any |= ctn_study_row_at(st, i)->has_mesh;
+    if (!any) return;
+    printf("\nThe catenary element against the elastic catenary and the FE mesh (%zu cable elements, %s strain)\n"
+           "at the marked lengths (relative difference = (X - element) / element)\n", s->n,
+           s->strain == CTN_STRAIN_ENGINEERING ? "engineering" : "Green-Lagrange");
+    printf("%10s | %10s %10s %10s | %10s %10s %10s | %10s %10s\n", "L0", "sag el.", "elastic", "mesh", "s_max el.",
+           "elastic", "mesh", "H elastic", "H mesh");
+    for (size_t i = 0; i < ctn_study_count(st); i++) {
+        const ctn_study_row *r = ctn_study_row_at(st, i);
+        if (!r->marked) continue;
+        const ctn_compare_values *f = &r->v[CTN_FORM_FEA], *e = &r->v[CTN_FORM_ECATENARY], *m = &r->mesh;
+        int he = (r->present & 1u << CTN_FORM_ECATENARY) != 0;
+        printf("%10.4f |", r->L0);
+        if (!(r->present & 1u << CTN_FORM_FEA)) { printf(" element not converged: %s\n", ctn_reason_name(r->reason)); continue; }
+        printf(" %10.4f", f->sag);
+        print_rel(he, e->sag, f->sag);
+        print_rel(r->has_mesh, m->sag, f->sag);
+        printf(" | %10.3f", ctn_app_stress(s, f->stress_max));
+        print_rel(he, e->stress_max, f->stress_max);
+        print_rel(r->has_mesh, m->stress_max, f->stress_max);
+        printf(" |");
+        print_rel(he, e->H, f->H);
+        print_rel(r->has_mesh, m->H, f->H);
+        putchar('\n');
     }
 }
 
@@ -67,9 +119,9 @@ static void print_slack(const ctn_study *st)
         lo = fmin(lo, f->stress_max), hi = fmax(hi, f->stress_max), k++;
     }
     if (!k) return;
-    printf("slack branch (L0 > %.4f %s, %zu length%s, FEA support stress %.4g to %.4g %s): |difference| at most\n"
+    printf("slack branch (L0 > %.4f %s, %zu length%s, %s support stress %.4g to %.4g %s): |difference| at most\n"
            "  %.2f %% (support stress), %.2f %% (vertex stress), %.2f %% (sag)\n", ctn_study_row_at(st, end)->L0,
-           s->length_unit, k, k > 1 ? "s" : "", ctn_app_stress(s, lo), ctn_app_stress(s, hi),
+           s->length_unit, k, k > 1 ? "s" : "", fea_label(st), ctn_app_stress(s, lo), ctn_app_stress(s, hi),
            s->mpa > 0 ? "MPa" : "F/L^2", 100 * e[0], 100 * e[1], 100 * e[2]);
 }
 
@@ -92,10 +144,12 @@ static void print_levels(const ctn_study *st, double *levels, size_t nlevels, si
     char su[16], L[16];
     snprintf(su, sizeof su, "[%s]", ctn_study_span(st)->mpa > 0 ? "MPa" : "F/L^2");
     snprintf(L, sizeof L, "L0 [%s]", ctn_study_span(st)->length_unit);
-    printf("\nDifference of the inextensible catenary from the FEA against the stress level, in %%\n"
-           "(taut branch of the sweep, interpolated; the level is the support stress of the FEA or of the catenary)\n");
-    printf("%8s | %37s | %37s |%s\n", "level", "level = FEA support stress", "level = catenary support stress",
-           nclaims ? " reference" : "");
+    const char *fea = fea_label(st);
+    char lv[48];
+    snprintf(lv, sizeof lv, "level = %s support stress", fea);
+    printf("\nDifference of the inextensible catenary from the %s against the stress level, in %%\n"
+           "(taut branch of the sweep, interpolated; the level is the support stress of the %s or of the catenary)\n", fea, fea);
+    printf("%8s | %37s | %37s |%s\n", "level", lv, "level = catenary support stress", nclaims ? " reference" : "");
     printf("%8s | %10s %8s %8s %8s | %10s %8s %8s %8s |%s\n", su, L, "s_max", "s_min", "sag", L, "s_max",
            "s_min", "sag", nclaims ? "       [%]" : "");
     for (size_t i = 0; i < nlevels; i++) {
@@ -122,6 +176,7 @@ static void print_summary(const ctn_study *st, const char *model, size_t sweep)
     ctn_app_print_span(stdout, s);
     printf("%zu lengths from %.6g to %.6g %s (a sweep of %zu and the marked ones): ", n,
            ctn_study_row_at(st, 0)->L0, ctn_study_row_at(st, n - 1)->L0, s->length_unit, sweep);
+    if (ctn_study_element_kind(st) == CTN_STUDY_CATENARY) printf("each length one catenary element: ");
     if (!fb && !bad) printf("every FEA converged with the model's solver\n");
     else printf("%zu solved only by the globalized Newton, %zu did not converge\n", fb, bad);
 }
@@ -130,7 +185,8 @@ int ctn_app_study_json(const ctn_study *st, const char *model)
 {
     cJSON *root = cJSON_CreateObject(), *rows = root ? cJSON_AddArrayToObject(root, "rows") : NULL;
     int ok = rows && cJSON_AddStringToObject(root, "model", model) &&
-             cJSON_AddNumberToObject(root, "mpa_factor", ctn_study_span(st)->mpa);
+             cJSON_AddNumberToObject(root, "mpa_factor", ctn_study_span(st)->mpa) &&
+             cJSON_AddStringToObject(root, "element", ctn_study_element_kind(st) == CTN_STUDY_CATENARY ? "catenary" : "mesh");
     for (size_t i = 0; ok && i < ctn_study_count(st); i++) {
         const ctn_study_row *r = ctn_study_row_at(st, i);
         cJSON *o = cJSON_CreateObject();
@@ -143,6 +199,8 @@ int ctn_app_study_json(const ctn_study *st, const char *model)
             if (r->present >> f & 1u)
                 ok = ctn_app_values_json(o, ctn_form_key((ctn_form)f), &r->v[f],
                                          f && (r->present & 1u) ? &r->v[CTN_FORM_FEA] : NULL) != NULL;
+        if (ok && r->has_mesh)
+            ok = ctn_app_values_json(o, "mesh", &r->mesh, (r->present & 1u) ? &r->v[CTN_FORM_FEA] : NULL) != NULL;
     }
     int code = ctn_app_print_json(ok ? root : NULL);
     cJSON_Delete(root);
@@ -154,5 +212,6 @@ void ctn_app_study_report(const ctn_study *st, const char *model, size_t sweep, 
 {
     print_summary(st, model, sweep);
     print_marked(st);
+    print_mesh(st);
     print_levels(st, levels, nlevels, cap, claims, nclaims);
 }

@@ -47,7 +47,8 @@ static const ctn_app_command commands[] = {
       "            converge, 4 I/O or other error\n" },
     { "study", ctn_cmd_study,
       "MODEL... [--lengths LIST] [--sweep N] [--from L] [--to L] [--levels LIST]\n"
-      "                    [--claims S:E,...] [--claims-title TEXT] [--json] [-o DIR] [-q]",
+      "                    [--claims S:E,...] [--claims-title TEXT] [--element mesh|catenary]\n"
+      "                    [--json] [-o DIR] [-q]",
       "MODEL... [options]", "FEA against the catenary over cable lengths",
       "The founding paper's study: the span of the first MODEL re-solved over a sweep of\n"
       "unstressed lengths L0, FEA against the inextensible catenary; the lengths of every\n"
@@ -62,9 +63,14 @@ static const ctn_app_command commands[] = {
       "  --levels LIST        stress levels of the error table in MPa (default 50,100,...,300)\n"
       "  --claims S:E,...     reference points, stress level S [MPa] : error E [%], on the table and figure\n"
       "  --claims-title TEXT  legend of the reference points (default \"reference points\")\n"
+      "  --element KIND       what each length is solved on: mesh (default: the span's n cable\n"
+      "                       elements, or its one catenary element) or catenary (one exact\n"
+      "                       catenary element per length, the row's FEA; the mesh is solved\n"
+      "                       beside it and shown in a second table and the figures)\n"
       "  --json               print the study as JSON on stdout instead of the tables\n"
       "  -o DIR               write the figures study_stress_max, study_stress_min, study_sag and\n"
-      "                       study_error into DIR (gnuplot scripts, data, SVG when gnuplot is installed)\n"
+      "                       study_error into DIR (gnuplot scripts, data, SVG when gnuplot is installed),\n"
+      "                       with --element catenary also study_element (the mesh against the element)\n"
       "  -q, --quiet          print nothing on stdout (--json still prints the JSON)\n"
       "  -h, --help           print this help and exit\n"
       "\n"

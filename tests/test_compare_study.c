@@ -6,7 +6,9 @@
  *   paper's range (150 MPa: a few %; catenary at 300 MPa: 20-40 %), absent outside;
  * - figures: data files of %.17g numbers (NaN refused, nothing written), scripts naming
  *   their data, rendering without gnuplot is not an error, a failing gnuplot is;
- * - allocation failures in ctn_study_run give CTN_ERR_NOMEM and no leak. */
+ * - one catenary element per length (CTN_STUDY_CATENARY): the elastic catenary to
+ *   round-off, the mesh beside it equal to the plain study's FEA;
+ * - allocation failures in ctn_study_run give CTN_ERR_NOMEM and no leak (both kinds). */
 #include "catena.h"
 #include "check.h"
 
@@ -183,6 +185,89 @@ static void test_study(const char *dir)
     ctn_ctx_destroy(&ctx);
 }
 
+/* The study on one catenary element per length: the element is the elastic catenary to
+ * round-off on every row, the mesh beside it is the plain study's FEA, the figures carry
+ * it; a catenary base is studied on catenary elements; an hload span is refused. */
+static void test_study_catenary(const char *dir)
+{
+    ctn_ctx *ctx = NULL;
+    ctn_ctx_create(&ctx);
+    ctn_model *base = paper_model(ctx, 250.8777, 20);
+    ctn_study *st = NULL, *mesh = NULL;
+    ctn_study_options opt;
+    ctn_study_options_default(&opt);
+    opt.lengths = paper_lengths;
+    opt.nlengths = 4;
+    opt.sweep = 12;
+    ctn_solve_options o = newton();
+    opt.solve = &o;
+    CHECK(base && ctn_study_run(ctx, base, &opt, &mesh) == CTN_OK);
+    opt.element = CTN_STUDY_CATENARY;
+    CHECK(base && ctn_study_run(ctx, base, &opt, &st) == CTN_OK);
+    if (st && mesh) {
+        CHECK(ctn_study_element_kind(st) == CTN_STUDY_CATENARY && ctn_study_element_kind(mesh) == CTN_STUDY_MESH);
+        CHECK(ctn_study_count(st) == ctn_study_count(mesh));
+        double worst = 0, mesh_worst = 0;
+        for (size_t i = 0; i < ctn_study_count(st) && i < ctn_study_count(mesh); i++) {
+            const ctn_study_row *r = ctn_study_row_at(st, i), *q = ctn_study_row_at(mesh, i);
+            const unsigned both = 1u << CTN_FORM_FEA | 1u << CTN_FORM_ECATENARY;
+            CHECK((r->present & both) == both && r->has_mesh && r->mesh_reason == CTN_CONVERGED);
+            const ctn_compare_values *f = &r->v[CTN_FORM_FEA], *e = &r->v[CTN_FORM_ECATENARY];
+            double d[3] = { ctn_compare_rel(f->sag, e->sag), ctn_compare_rel(f->stress_max, e->stress_max),
+                            ctn_compare_rel(f->H, e->H) };
+            for (int k = 0; k < 3; k++) worst = fmax(worst, fabs(d[k]));
+            /* the mesh beside it is the plain study's FEA, and differs from the element by
+             * the mesh's error (Green-Lagrange strain, 20 elements: a few 1e-4) */
+            CHECK(q->present & 1u << CTN_FORM_FEA);
+            CHECK(r->mesh.sag == q->v[CTN_FORM_FEA].sag && r->mesh.stress_max == q->v[CTN_FORM_FEA].stress_max);
+            mesh_worst = fmax(mesh_worst, fabs(ctn_compare_rel(r->mesh.stress_max, f->stress_max)));
+        }
+        printf("catenary element against the elastic catenary: largest relative difference %.2e; FE mesh %.2e\n", worst,
+               mesh_worst);
+        CHECK(worst < 1e-10);
+        CHECK(mesh_worst > 1e-5 && mesh_worst < 3e-3);
+        const char *names[4] = { NULL, NULL, NULL, NULL };
+        CHECK(ctn_study_write_figures(ctx, st, dir, names) == CTN_OK);
+        CHECK(has_file(dir, "study_mesh.dat") && file_contains(dir, "study_fea.dat", "catenary element"));
+        CHECK(file_contains(dir, "study_stress_max.gp", "FE mesh, 20 cable elements"));
+        const char *el = NULL;
+        CHECK(ctn_study_write_element_figure(ctx, st, dir, &el) == CTN_OK && el && !strcmp(el, "study_element"));
+        CHECK(has_file(dir, "study_element.dat") && file_contains(dir, "study_element.gp", "\"study_element.dat\" using 2:3"));
+        CHECK(ctn_study_write_element_figure(ctx, mesh, dir, &el) == CTN_OK && el == NULL);
+    }
+    ctn_study_destroy(&st);
+    ctn_study_destroy(&mesh);
+    ctn_model_destroy(&base);
+    /* a base of one catenary element: catenary rows, no mesh beside them */
+#define PAPER_SUPPORTS "units kN m\ngravity 0 -1 0\nmaterial steel E=2e8\nsection s material=steel A=3.14e-4 w=0.1\n" \
+                       "node 1 0 0 0 fix=xyz\nnode 2 200 0 0 fix=xyz\n"
+    const char *one = PAPER_SUPPORTS "catenary 1 1 2 section=s length=201.3545\n";
+    CHECK(ctn_read_string(ctx, "one.cable", one, strlen(one), &base, NULL) == CTN_OK);
+    opt.element = CTN_STUDY_MESH;
+    opt.nlengths = 0;
+    opt.sweep = 3;
+    CHECK(base && ctn_study_run(ctx, base, &opt, &st) == CTN_OK);
+    if (st) {
+        CHECK(ctn_study_element_kind(st) == CTN_STUDY_CATENARY && ctn_study_count(st) == 4);
+        for (size_t i = 0; i < ctn_study_count(st); i++) {
+            const ctn_study_row *r = ctn_study_row_at(st, i);
+            CHECK(!r->has_mesh && (r->present & 1u << CTN_FORM_FEA));
+            CHECK_CLOSE(r->v[CTN_FORM_FEA].stress_max, r->v[CTN_FORM_ECATENARY].stress_max, 1e-10, 0);
+        }
+    }
+    ctn_study_destroy(&st);
+    ctn_model_destroy(&base);
+    /* an hload cannot ride on a catenary element; an unknown kind is refused */
+    const char *hl = PAPER_SUPPORTS "cable 1 2 section=s n=10 length=201\nhload q=0.5 elements=all\n";
+    CHECK(ctn_read_string(ctx, "hl.cable", hl, strlen(hl), &base, NULL) == CTN_OK);
+    opt.element = CTN_STUDY_CATENARY;
+    CHECK(ctn_study_run(ctx, base, &opt, &st) == CTN_ERR_MODEL && strstr(ctn_ctx_message(ctx), "hl.cable: a catenary element"));
+    opt.element = (ctn_study_element)7;
+    CHECK(ctn_study_run(ctx, base, &opt, &st) == CTN_ERR_INVALID && st == NULL);
+    ctn_model_destroy(&base);
+    ctn_ctx_destroy(&ctx);
+}
+
 static void test_plot(const char *dir)
 {
     ctn_ctx *ctx = NULL;
@@ -224,20 +309,23 @@ static void test_alloc(void)
     opt.sweep = 2;
     ctn_solve_options o = newton();
     opt.solve = &o;
-    int done = 0, failures = 0;
-    for (long k = 1; k < 20000 && base && !done; k++) {
-        ctn_study *st = NULL;
-        ctn_ctx_fail_alloc_at(ctx, k);
-        int rc = ctn_study_run(ctx, base, &opt, &st);
-        ctn_ctx_fail_alloc_at(ctx, 0);
-        if (rc) {
-            failures++;
-            CHECK_MSG(rc == CTN_ERR_NOMEM && st == NULL, "allocation %ld: status %d", k, rc);
-        } else done = 1;
-        ctn_study_destroy(&st);
-        ctn_ctx_clear(ctx);
+    for (int kind = 0; kind < 2; kind++) {          /* the mesh, then catenary elements */
+        int done = 0, failures = 0;
+        opt.element = kind ? CTN_STUDY_CATENARY : CTN_STUDY_MESH;
+        for (long k = 1; k < 20000 && base && !done; k++) {
+            ctn_study *st = NULL;
+            ctn_ctx_fail_alloc_at(ctx, k);
+            int rc = ctn_study_run(ctx, base, &opt, &st);
+            ctn_ctx_fail_alloc_at(ctx, 0);
+            if (rc) {
+                failures++;
+                CHECK_MSG(rc == CTN_ERR_NOMEM && st == NULL, "allocation %ld: status %d", k, rc);
+            } else done = 1;
+            ctn_study_destroy(&st);
+            ctn_ctx_clear(ctx);
+        }
+        CHECK(done && failures >= 10);
     }
-    CHECK(done && failures >= 10);
     ctn_model_destroy(&base);
     ctn_ctx_destroy(&ctx);
 }
@@ -250,6 +338,7 @@ int main(void)
         return 1;
     }
     test_study(dir);
+    test_study_catenary(dir);
     test_plot(dir);
     test_alloc();
     remove_dir(dir);

@@ -4,40 +4,13 @@
  * measured on two meshes, a solve with the length found, and sums over the elements. */
 #include "catena.h"
 #include "check.h"
+#include "run_text.h"
 
 #include <math.h>
 #include <stdio.h>
 
-typedef struct run {
-    ctn_ctx *ctx;
-    ctn_model *m;
-    ctn_solution *s;
-    int rc;
-} run;
-
 /* Read text, resolve its targets and solve; rc the first failure. */
-static run solve_text(const char *text)
-{
-    run r = { NULL, NULL, NULL, 0 };
-    ctn_solve_options opt;
-    ctn_ctx_create(&r.ctx);
-    r.rc = ctn_read_string(r.ctx, "design.cable", text, strlen(text), &r.m, &opt);
-    if (!r.rc) r.rc = ctn_model_resolve_targets(r.ctx, r.m, &opt, NULL);
-    if (!r.rc) r.rc = ctn_solve(r.ctx, r.m, &opt, &r.s);
-    if (!r.rc) {
-        ctn_solve_summary sum;
-        ctn_solution_summary(r.s, &sum);
-        CHECK_MSG(sum.reason == CTN_CONVERGED, "%s", ctn_reason_name(sum.reason));
-    }
-    return r;
-}
-
-static void done(run *r)
-{
-    ctn_solution_destroy(&r->s);
-    ctn_model_destroy(&r->m);
-    ctn_ctx_destroy(&r->ctx);
-}
+static run solve_text(const char *text) { return run_text("design.cable", text); }
 
 static double force_of(const run *r, size_t k, size_t e)
 {

@@ -118,7 +118,7 @@ static int run_example(const char *path)
 
 int main(void)
 {
-    const char *dirs[] = { "examples/paper", "examples/robust", "examples/springs" };
+    const char *dirs[] = { "examples/paper", "examples/robust", "examples/springs", "examples/catenary", "examples/design" };
     int files = 0;
     for (size_t i = 0; i < sizeof dirs / sizeof *dirs; i++) {
         DIR *dir = opendir(dirs[i]);

@@ -172,7 +172,17 @@ int ctn_compare_write_figures(ctn_ctx *ctx, const ctn_compare *c, const char *di
  * elastic catenary and the elastic funicular. A length whose solution does not
  * converge with the model's method is solved again with CTN_METHOD_AUTO (row.fallback).
  * Only spans with distributed loads (no point loads) can be studied.
+ * With CTN_STUDY_CATENARY each length is solved on ONE exact catenary element (Irvine,
+ * engineering strain, no mesh) and that element is the row's FEA form; a span of cable
+ * elements is solved on its mesh as well (row.mesh), for the figures and the tables.
+ * A base whose span is one catenary element is studied on one catenary element.
  * ------------------------------------------------------------------------------------- */
+/* What each length of a study is solved on. */
+typedef enum ctn_study_element {
+    CTN_STUDY_MESH = 0,       /* the span's own elements: n cable elements (the paper's) or
+                                 its one catenary element */
+    CTN_STUDY_CATENARY = 1    /* one catenary element per length (and the mesh beside it) */
+} ctn_study_element;
 typedef struct ctn_study_options {
     const double *lengths;  /* [nlengths] lengths of the marked cases (e.g. the paper's
                                four); NULL if none */
@@ -188,6 +198,8 @@ typedef struct ctn_study_options {
     size_t nclaims;
     const char *claims_title; /* legend of those points; NULL: "reference points" */
     const ctn_solve_options *solve; /* options of every FEA solve (NULL: the defaults) */
+    ctn_study_element element; /* default CTN_STUDY_MESH; CTN_STUDY_CATENARY needs a span
+                                  under self-weight only (no hload) */
 } ctn_study_options;
 
 void ctn_study_options_default(ctn_study_options *opt);
@@ -201,6 +213,10 @@ typedef struct ctn_study_row {
     int fallback;           /* 1 if the model's method failed and CTN_METHOD_AUTO solved */
     unsigned present;       /* bit (1 << f) set when v[f] holds form f's values */
     ctn_compare_values v[CTN_FORM_COUNT];
+    int has_mesh;           /* 1 when the rows are catenary elements (CTN_STUDY_CATENARY)
+                               and the span's mesh of n cable elements converged too */
+    ctn_reason mesh_reason; /* outcome of the mesh's solve (CTN_STUDY_CATENARY only) */
+    ctn_compare_values mesh;/* the mesh's values, beside the element's v[CTN_FORM_FEA] */
 } ctn_study_row;
 
 typedef struct ctn_study ctn_study;
@@ -212,6 +228,9 @@ int ctn_study_run(ctn_ctx *ctx, const ctn_model *base, const ctn_study_options *
                   ctn_study **out);
 void ctn_study_destroy(ctn_study **s);
 const ctn_span *ctn_study_span(const ctn_study *s);
+/* What the rows were solved on: CTN_STUDY_CATENARY when the FEA form of the rows is one
+ * catenary element (asked for, or the base's span is one), else CTN_STUDY_MESH. */
+ctn_study_element ctn_study_element_kind(const ctn_study *s);
 size_t ctn_study_count(const ctn_study *s);
 /* Row i (0-based, by increasing L0); NULL if out of range. Owned by s. */
 const ctn_study_row *ctn_study_row_at(const ctn_study *s, size_t i);
@@ -246,6 +265,13 @@ int ctn_study_level_at(const ctn_study *s, ctn_level_axis axis, double stress,
  * NULL. */
 int ctn_study_write_figures(ctn_ctx *ctx, const ctn_study *s, const char *dir,
                             const char *names[4]);
+/* A study on catenary elements with the span's mesh beside them (CTN_STUDY_CATENARY on a
+ * span of cable elements): the figure study_element into dir, |X - element| / element
+ * against L0 - chord (log-log) for X = the mesh and the elastic catenary (sag, support
+ * stress, H; data study_element.dat, rows where both converged). *name (may be NULL)
+ * gets "study_element", or NULL when the study has no mesh (then nothing is written). */
+int ctn_study_write_element_figure(ctn_ctx *ctx, const ctn_study *s, const char *dir,
+                                   const char **name);
 
 /* ---------------------------------------------------------------------------------------
  * Mesh convergence: the base model's span rebuilt with n elements (engineering strain,

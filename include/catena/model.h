@@ -142,7 +142,8 @@ int ctn_model_add_section_spec(ctn_model *m, const ctn_section_spec *s);
  *            distance); N = k (l - l0), two-way, weightless, no section;
  *   "catenary" two nodes, section, unstressed length l0 (default: the reference distance):
  *            one exact elastic catenary (Irvine, engineering strain) with its weight
- *            w l0 along gravity; prestress N0 = its largest end tension;
+ *            w l0 along gravity; prestress N0 = its largest end tension; or a target
+ *            (H, sag, tension) that sets l0;
  *   "pulley" three or more nodes (ends, then pulleys in order; at most 64), section, the
  *            unstressed length l0 of the whole cable (default: the reference polyline):
  *            one tension along straight segments, tension-only. */
@@ -164,6 +165,12 @@ typedef struct ctn_element_spec {
                              [force/length], > 0; 0 (default): none. ctn_solve ignores it */
     double force;         /* form finding: target force [force], > 0; 0 (default): none.
                              At most one of q and force; ctn_solve ignores it */
+    ctn_cable_target target;  /* catenary: instead of l0 (then l0 must stay CTN_L0_DEFAULT
+                                 and no prestress be given), the unstressed length is
+                                 found to meet H, sag or tension in the solved model, as a
+                                 cable's (ctn_model_resolve_targets); default
+                                 CTN_TARGET_NONE */
+    double target_value;      /* H [force], sag [length] or tension [force], > 0 */
 } ctn_element_spec;
 void ctn_element_spec_init(ctn_element_spec *s);
 int ctn_model_add_element_spec(ctn_model *m, const ctn_element_spec *s);
@@ -273,7 +280,8 @@ typedef struct ctn_element_info {
     double alpha;    /* thermal expansion of its material [1/K] */
 } ctn_element_info;
 
-/* A cable made by the generator: its end nodes and its element index range. */
+/* A cable made by the generator: its end nodes and its element index range (also the
+ * record of a catenary element set by a target, ctn_model_element_target). */
 typedef struct ctn_cable_info {
     int node[2];     /* end node indices */
     size_t first;    /* index of its first element */
@@ -292,6 +300,12 @@ size_t ctn_model_cable_count(const ctn_model *m);
 int ctn_model_node(const ctn_model *m, size_t i, ctn_node_info *out);
 int ctn_model_element(const ctn_model *m, size_t i, ctn_element_info *out);
 int ctn_model_cable(const ctn_model *m, size_t i, ctn_cable_info *out);
+/* The target that sets the unstressed length of element i (a catenary given H=, sag= or
+ * tension=), described as a one-element cable: its end nodes, first = i, count = 1,
+ * length = its unstressed length (the one found, once resolved) and the target fields.
+ * out->target is CTN_TARGET_NONE for an element without a target. CTN_ERR_INVALID if i
+ * is out of range. Logarithmic in the number of such elements. */
+int ctn_model_element_target(const ctn_model *m, size_t i, ctn_cable_info *out);
 /* Node index of a user id; CTN_ERR_INVALID if there is none. */
 int ctn_model_node_index(const ctn_model *m, int id, size_t *index);
 /* Gravity vector (zero if none). */

@@ -213,15 +213,17 @@ typedef struct ctn_element_state {
     int slack;            /* 1 if a tension-only element carries no force */
 } ctn_element_state;
 
-/* Cables set by a target (ctn_cable_spec.target: H, sag or tension): find the unstressed
- * lengths that meet every target at the end of the first load step, under the loads
- * acting in it, to 1e-10 relative, by Newton's method on the lengths with sensitivities
- * from the FE tangent (docs/theory.md). The model is changed in place: the cables'
- * elements get the lengths found (ctn_model_cable reports them with the value reached)
- * and the nodes' starting displacements become the first step's solution. *outer (may be
- * NULL) gets the outer iterations. A target no length can reach is CTN_ERR_MODEL naming
- * the cable's line and the closest value reached. No-op without targets. Until it has
- * run, ctn_problem_create refuses a model with targets. */
+/* Cables and catenary elements set by a target (ctn_cable_spec.target,
+ * ctn_element_spec.target: H, sag or tension): find the unstressed lengths that meet
+ * every target at the end of the first load step, under the loads acting in it, to 1e-10
+ * relative, all together, by Newton's method on the lengths with sensitivities from the
+ * FE tangent (docs/theory.md). The model is changed in place: the cables' elements and
+ * the catenaries get the lengths found (ctn_model_cable and ctn_model_element_target
+ * report them with the value reached) and the nodes' starting displacements become the
+ * first step's solution. *outer (may be NULL) gets the outer iterations. A target no
+ * length can reach is CTN_ERR_MODEL naming the cable's or catenary's line and the
+ * closest value reached. No-op without targets. Until it has run, ctn_problem_create
+ * refuses a model with targets. */
 int ctn_model_resolve_targets(ctn_ctx *ctx, ctn_model *m, const ctn_solve_options *opt, int *outer);
 
 /* The analysis of model m with options opt (NULL: the defaults), set up once. The model

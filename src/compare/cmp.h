@@ -73,7 +73,7 @@ int ctn_cmp_catenary_fea(ctn_compare *c, const double *d);
 void ctn_cmp_catenary_sample(const ctn_compare *c, int stress, double t, double out[2]);
 
 /* A fresh single-span model like the span of base (see ctn_study_run): unstressed
- * length L0, n elements, strain measure (build.c). */
+ * length L0, n cable elements, strain measure; n == 0: one catenary element (build.c). */
 int ctn_cmp_build(ctn_ctx *ctx, const ctn_model *base, const ctn_span *span, double L0,
                   size_t n, ctn_strain strain, ctn_model **out);
 /* Solve a built model with options base (NULL: defaults; tol > 0 replaces its tol); on

@@ -50,15 +50,16 @@ static int lengths(ctn_ctx *ctx, ctn_study *st, const ctn_study_options *o, doub
     return CTN_OK;
 }
 
-/* Solve length row->L0 and fill the row. */
-static int solve_row(ctn_ctx *ctx, const ctn_model *base, const ctn_solve_options *opt, const ctn_span *sp,
-                     ctn_study_row *row)
+/* Solve the span at length row->L0 on n cable elements (0: one catenary element) and
+ * fill the row's outcome and the values of every form. */
+static int solve_length(ctn_ctx *ctx, const ctn_model *base, const ctn_solve_options *opt, const ctn_span *sp, size_t n,
+                        ctn_study_row *row)
 {
     ctn_model *m = NULL;
     ctn_solution *s = NULL;
     ctn_compare *c = NULL;
     ctn_solve_summary sum;
-    int rc = ctn_cmp_build(ctx, base, sp, row->L0, sp->n, sp->strain, &m);
+    int rc = ctn_cmp_build(ctx, base, sp, row->L0, n, sp->strain, &m);
     if (!rc) rc = ctn_cmp_solve(ctx, m, opt, 0, &s, &row->fallback);
     if (!rc) rc = ctn_compare_create(ctx, m, &c);
     if (!rc) {
@@ -75,6 +76,34 @@ static int solve_row(ctn_ctx *ctx, const ctn_model *base, const ctn_solve_option
     ctn_solution_destroy(&s);
     ctn_model_destroy(&m);
     return rc;
+}
+
+/* One row: the span's mesh, or one catenary element (and the mesh beside it). */
+static int solve_row(ctn_ctx *ctx, const ctn_model *base, const ctn_solve_options *opt, const ctn_study *st,
+                     ctn_study_row *row)
+{
+    if (!st->mesh) return solve_length(ctx, base, opt, &st->span, st->catenary ? 0 : st->span.n, row);
+    ctn_study_row mesh = { .L0 = row->L0 };
+    int rc = solve_length(ctx, base, opt, &st->span, st->span.n, &mesh);
+    if (!rc) rc = solve_length(ctx, base, opt, &st->span, 0, row);
+    row->mesh_reason = mesh.reason;
+    row->has_mesh = (mesh.present & 1u << CTN_FORM_FEA) != 0;
+    row->mesh = mesh.v[CTN_FORM_FEA];
+    return rc;
+}
+
+/* What the rows are solved on: one catenary element for a catenary span or when asked
+ * (the mesh beside it), which needs a span under self-weight only. */
+static int element_kind(ctn_ctx *ctx, ctn_study *st, const ctn_compare *c, ctn_study_element element)
+{
+    if (element != CTN_STUDY_MESH && element != CTN_STUDY_CATENARY)
+        return ctn_error(ctx, CTN_ERR_INVALID, "ctn_study_run: unknown element kind %d", (int)element);
+    st->catenary = c->catenary || element == CTN_STUDY_CATENARY;
+    st->mesh = st->catenary && !c->catenary;
+    if (st->catenary && (c->span.loads & CTN_SPAN_HLOAD))
+        return ctn_cmp_error(ctx, c->file, CTN_ERR_MODEL, "a catenary element carries its own weight only: a span under "
+                             "hload cannot be studied on one");
+    return CTN_OK;
 }
 
 static int copy_claims(ctn_ctx *ctx, ctn_study *st, const ctn_study_options *o)
@@ -105,9 +134,10 @@ int ctn_study_run(ctn_ctx *ctx, const ctn_model *base, const ctn_study_options *
     if (!rc && (c->span.loads & CTN_SPAN_POINT))
         rc = ctn_cmp_error(ctx, c->file, CTN_ERR_MODEL, "the study needs a span under self-weight or hload, not point loads");
     if (!rc) st->span = c->span;
+    if (!rc) rc = element_kind(ctx, st, c, opt->element);
     if (!rc) rc = lengths(ctx, st, opt, c->span.L0);
     if (!rc) rc = copy_claims(ctx, st, opt);
-    for (size_t i = 0; !rc && i < st->n; i++) rc = solve_row(ctx, base, opt->solve, &st->span, &st->row[i]);
+    for (size_t i = 0; !rc && i < st->n; i++) rc = solve_row(ctx, base, opt->solve, st, &st->row[i]);
     ctn_compare_destroy(&c);
     if (rc) ctn_study_destroy(&st);
     *out = st;
@@ -125,4 +155,8 @@ void ctn_study_destroy(ctn_study **s)
 
 const ctn_span *ctn_study_span(const ctn_study *s) { return s ? &s->span : NULL; }
 size_t ctn_study_count(const ctn_study *s) { return s ? s->n : 0; }
+ctn_study_element ctn_study_element_kind(const ctn_study *s)
+{
+    return s && s->catenary ? CTN_STUDY_CATENARY : CTN_STUDY_MESH;
+}
 const ctn_study_row *ctn_study_row_at(const ctn_study *s, size_t i) { return s && i < s->n ? &s->row[i] : NULL; }

@@ -11,6 +11,8 @@ struct ctn_study {
     double *claims;         /* [2 nclaims] copied from the options */
     size_t nclaims;
     char claims_title[128]; /* legend of the claims */
+    int catenary;           /* the rows are one catenary element each */
+    int mesh;               /* and the span's mesh is solved beside it (row.mesh) */
 };
 
 /* Index of the last row of the taut branch: the row of least FEA support stress among

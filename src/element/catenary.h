@@ -44,6 +44,9 @@ double ctn_ecat_length(const ctn_ecat *c);
 /* Sag: the distance along gravity from the chord's mid-point down to the cable at
  * mid-span (horizontal coordinate l / 2); 0 for a vertical chord (H = 0). */
 double ctn_ecat_sag(const ctn_ecat *c);
+/* The largest distance along gravity below the chord at the same horizontal position:
+ * at the point whose slope is the chord's, V(s) = -H h / l; 0 for a vertical chord. */
+double ctn_ecat_max_sag(const ctn_ecat *c);
 
 /* Properties of a catenary element (catenary2.c). */
 typedef struct ctn_catenary_props {

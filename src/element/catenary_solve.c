@@ -142,3 +142,12 @@ double ctn_ecat_sag(const ctn_ecat *c)
     ctn_ecat_point(c, s, &x, &z);
     return 0.5 * c->h - z;
 }
+
+double ctn_ecat_max_sag(const ctn_ecat *c)
+{
+    double x, z;
+    if (!(c->H > 0) || !(c->l > 0) || !(c->W > 0)) return 0;
+    double s = (c->Va + c->H * c->h / c->l) * (c->L / c->W);   /* V(s) = Va - (W / L) s */
+    ctn_ecat_point(c, fmin(fmax(s, 0), c->L), &x, &z);
+    return x * (c->h / c->l) - z;
+}

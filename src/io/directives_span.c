@@ -23,16 +23,40 @@ static int span_keys(ctn_line *l, int from, const char *what, ctn_element_spec *
     return rc;
 }
 
+/* A target H=, sag= or tension= instead of the length (at most one of every key that
+ * sets the length: length=, the prestress keys, the targets). */
+static int span_target(ctn_line *l, int from, const char *what, ctn_element_spec *spec)
+{
+    static const char *const keys[] = { "length", "H", "sag", "tension", "N0", "s0", "eps0" };
+    int given = -1, rc = CTN_OK;
+    for (int k = 0; k < 7; k++) {
+        if (!ctn_parse_key(l, from, keys[k])) continue;
+        int targets = (k >= 1 && k <= 3) || (given >= 1 && given <= 3);   /* the others: span_keys */
+        if (given >= 0 && targets)
+            return ctn_parse_error(l, "%s: give one of length=, H=, sag=, tension=, N0=, s0=, eps0= (found %s= and %s=)", what,
+                                   keys[given], keys[k]);
+        if (given < 0) given = k;
+    }
+    if (given < 1 || given > 3) return CTN_OK;
+    double v = 0;
+    rc = ctn_parse_key_num(l, from, keys[given], 1, &v);
+    if (!rc && !(v > 0)) return ctn_parse_error(l, "%s: %s must be positive (found %g)", what, keys[given], v);
+    spec->target = (ctn_cable_target)given;
+    spec->target_value = v;
+    return rc;
+}
+
 int ctn_parse_catenary(ctn_line *l)
 {
     int id = 0, nodes[2] = { 0, 0 };
     char what[32];
     ctn_element_spec spec;
     ctn_element_spec_init(&spec);
-    int rc = ctn_parse_positional(l, 3, "catenary ID NODE1 NODE2 section=SECTION [length=LENGTH|N0=FORCE|s0=STRESS|eps0=STRAIN] [group=NAME]");
+    int rc = ctn_parse_positional(l, 3, "catenary ID NODE1 NODE2 section=SECTION [length=LENGTH|H=FORCE|sag=LENGTH|tension=FORCE|N0=FORCE|s0=STRESS|eps0=STRAIN] [group=NAME]");
     if (!rc) rc = ctn_parse_int(l, "the element id", l->tok[1], &id);
     for (int k = 0; k < 2 && !rc; k++) rc = ctn_parse_int(l, "a node id", l->tok[2 + k], &nodes[k]);
     snprintf(what, sizeof what, "catenary %d", id);
+    if (!rc) rc = span_target(l, 4, what, &spec);
     if (!rc) rc = span_keys(l, 4, what, &spec);
     if (!rc) rc = ctn_parse_leftovers(l, 4, "catenary");
     spec.type = "catenary";

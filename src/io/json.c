@@ -115,11 +115,26 @@ static int node_id(const ctn_model *m, int index)
 
 /* A catenary's forces and its shape at CTN_JSON_SHAPE + 1 points (docs/format.md). */
 #define CTN_JSON_SHAPE 20
+/* "target": what set the length of a cable or catenary element, and what was reached. */
+static void put_target(ctn_jw *j, const ctn_cable_info *c)
+{
+    static const char *const kind[] = { "length", "H", "sag", "tension" };
+    if (c->target == CTN_TARGET_NONE) return;
+    ctn_jw_object(j, "target");
+    ctn_jw_string(j, "kind", kind[c->target]);
+    ctn_jw_number(j, "value", c->target_value);
+    ctn_jw_number(j, "achieved", c->target_achieved);
+    ctn_jw_number(j, "iterations", c->target_iterations);
+    ctn_jw_end(j);
+}
+
 static void put_catenary(json_writer *jw, const ctn_solution *s, size_t k, size_t i)
 {
     ctn_jw *j = &jw->j;
     ctn_catenary_result c = { .size = sizeof c };
+    ctn_cable_info t;
     double xyzv[3 * (CTN_JSON_SHAPE + 1)];
+    if (!ctn_model_element_target(jw->w.m, i, &t)) put_target(j, &t);
     if (ctn_solution_catenary(jw->w.m, s, k, i, &c)) return;
     ctn_jw_number(j, "H", c.H);
     numbers(j, "tension", c.tension, 2);
@@ -200,15 +215,7 @@ static void put_cables(json_writer *jw, const ctn_solution *s)
         ctn_jw_number(j, "length", c.length);
         if (!ctn_solution_cable_sag(m, s, i, &sag)) ctn_jw_number(j, "sag", sag);
         if (!ctn_solution_cable_max_sag_from_chord(m, s, i, &dmax)) ctn_jw_number(j, "max_sag_from_chord", dmax);
-        if (c.target != CTN_TARGET_NONE) {
-            static const char *const kind[] = { "length", "H", "sag", "tension" };
-            ctn_jw_object(j, "target");
-            ctn_jw_string(j, "kind", kind[c.target]);
-            ctn_jw_number(j, "value", c.target_value);
-            ctn_jw_number(j, "achieved", c.target_achieved);
-            ctn_jw_number(j, "iterations", c.target_iterations);
-            ctn_jw_end(j);
-        }
+        put_target(j, &c);
         ctn_jw_end(j);
     }
     ctn_jw_end(j);

@@ -77,7 +77,7 @@ int ctn_model_add_cable(ctn_model *m, int a, int b, const char *section,
     double chord = sqrt((B[0] - A[0]) * (B[0] - A[0]) + (B[1] - A[1]) * (B[1] - A[1]) + (B[2] - A[2]) * (B[2] - A[2]));
     if (!(chord > 0)) return ctn_model_error(m, CTN_ERR_MODEL, "cable: nodes %d and %d coincide", a, b);
     ctn_cable_spec given = *spec;
-    int rc = ctn_cable_target_check(m, spec, section, A, B, chord, &given.length);
+    int rc = ctn_cable_target_check(m, "cable", spec, section, A, B, chord, &given.length);
     if (rc) return rc;
     spec = &given;
     if ((rc = check_spec(m, spec, chord))) return rc;

@@ -5,6 +5,7 @@
 #include "model/cable_target.h"
 
 #include <math.h>
+#include <string.h>
 
 static const char *const names[] = { "length", "H", "sag", "tension" };
 
@@ -20,27 +21,28 @@ static double normal_weight(const ctn_model *m, double w, const double A[3], con
     return w * sqrt(gn2 > 0 ? gn2 : 0);
 }
 
-int ctn_cable_target_check(const ctn_model *m, const ctn_cable_spec *s, const char *section, const double A[3],
-                           const double B[3], double chord, double *length)
+int ctn_cable_target_check(const ctn_model *m, const char *what, const ctn_cable_spec *s, const char *section,
+                           const double A[3], const double B[3], double chord, double *length)
 {
     if (s->target == CTN_TARGET_NONE) return CTN_OK;
     if (s->target < CTN_TARGET_NONE || s->target > CTN_TARGET_TENSION)
-        return ctn_model_error(m, CTN_ERR_MODEL, "cable: unknown target");
+        return ctn_model_error(m, CTN_ERR_MODEL, "%s: unknown target", what);
     const char *key = names[s->target];
     double v = s->target_value;
-    if (!isfinite(v) || v <= 0) return ctn_model_error(m, CTN_ERR_MODEL, "cable: %s= must be positive and finite (got %g)", key, v);
+    if (!isfinite(v) || v <= 0) return ctn_model_error(m, CTN_ERR_MODEL, "%s: %s= must be positive and finite (got %g)", what, key, v);
     if (s->prestress != CTN_PRESTRESS_NONE)
-        return ctn_model_error(m, CTN_ERR_MODEL, "cable: a target (%s=) sets the length: give no prestress with it", key);
+        return ctn_model_error(m, CTN_ERR_MODEL, "%s: a target (%s=) sets the length: give no prestress with it", what, key);
     double g2 = m->gravity[0] * m->gravity[0] + m->gravity[1] * m->gravity[1] + m->gravity[2] * m->gravity[2];
     if (s->target != CTN_TARGET_TENSION && !(g2 > 0))
-        return ctn_model_error(m, CTN_ERR_MODEL, "cable: %s= is measured against gravity, and there is none (set gravity before the cable)", key);
+        return ctn_model_error(m, CTN_ERR_MODEL, "%s: %s= is measured against gravity, and there is none (set gravity before the %.*s)", what, key,
+                               (int)strcspn(what, " "), what);
     double gc = 0;
     for (int k = 0; k < 3; k++) gc += m->gravity[k] * (B[k] - A[k]) / chord;
     if (s->target != CTN_TARGET_TENSION && !(g2 - gc * gc > 1e-18 * g2))
-        return ctn_model_error(m, CTN_ERR_MODEL, "cable: %s= is measured across the chord, and this chord is vertical "
-                               "(use tension=)", key);
+        return ctn_model_error(m, CTN_ERR_MODEL, "%s: %s= is measured across the chord, and this chord is vertical "
+                               "(use tension=)", what, key);
     int si = ctn_model_find_section(m, section);
-    if (si < 0) return ctn_model_error(m, CTN_ERR_MODEL, "cable: undefined section '%s'", section);
+    if (si < 0) return ctn_model_error(m, CTN_ERR_MODEL, "%s: undefined section '%s'", what, section);
     const ctn_section *sec = &m->sections.v[si];
     double EA = m->materials.v[sec->material].E * sec->A, wn = normal_weight(m, sec->w, A, B, chord);
     double H, d;

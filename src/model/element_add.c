@@ -1,5 +1,6 @@
 /* Elements of any registered family: the spec, the generic checks, and the record. */
 #include "element/element.h"
+#include "model/cable_target.h"
 
 #include <math.h>
 #include <string.h>
@@ -105,6 +106,7 @@ static int make_record(ctn_model *m, const ctn_element_spec *s, int type, ctn_el
         if (!rc) rc = ops->prestress_l0(m, e, (int)s->prestress, s->prestress_value, chord, &e->l0);
         if (rc) return rc;
     }
+    if (s->target != CTN_TARGET_NONE && (rc = ctn_element_target_first(m, s, e, chord))) return rc;
     return ops->check(m, e);
 }
 
@@ -123,6 +125,7 @@ int ctn_model_add_element_spec(ctn_model *m, const ctn_element_spec *spec)
     if ((rc = make_record(m, &s, type, &e, idx)) || (rc = check_room(m))) return rc;
     if (s.group && (rc = ctn_model_group_get(m, s.group, &e.group))) return rc;
     if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->elements, 1))) return rc;
+    if (s.target != CTN_TARGET_NONE && (rc = CTN_ARRAY_RESERVE(m->ctx, m->etargets, 1))) return rc;
     if ((rc = ctn_array_reserve(m->ctx, (void **)&m->conn.v, &m->conn.cap, m->conn.n + (size_t)e.nnodes, sizeof(int))))
         return rc;
     if ((rc = ctn_idmap_put(m->ctx, &m->element_ids, s.id, (int)m->elements.n))) return rc;
@@ -130,6 +133,7 @@ int ctn_model_add_element_spec(ctn_model *m, const ctn_element_spec *spec)
     memcpy(m->conn.v + m->conn.n, idx, (size_t)e.nnodes * sizeof(int));
     m->conn.n += (size_t)e.nnodes;
     m->elements.v[m->elements.n++] = e;
+    if (s.target != CTN_TARGET_NONE) ctn_element_target_record(m, &s, m->elements.n - 1);
     if (s.id > m->max_element_id) m->max_element_id = s.id;
     return CTN_OK;
 }

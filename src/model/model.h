@@ -129,6 +129,9 @@ struct ctn_model {
     CTN_ARRAY(ctn_tload) tloads;
     ctn_idmap node_ids, element_ids;
     int max_node_id, max_element_id;
+    CTN_ARRAY(ctn_cable) etargets;  /* catenary elements set by a target, each as the
+                                       record of a one-element cable (first = the element
+                                       index, count = 1), by increasing element index */
 };
 
 /* Make room for one more item in a CTN_ARRAY; 0 or CTN_ERR_NOMEM. */

@@ -46,10 +46,8 @@ int ctn_model_element(const ctn_model *m, size_t i, ctn_element_info *out)
     return CTN_OK;
 }
 
-int ctn_model_cable(const ctn_model *m, size_t i, ctn_cable_info *out)
+static void cable_info(const ctn_cable *c, ctn_cable_info *out)
 {
-    if (!m || !out || i >= m->cables.n) return CTN_ERR_INVALID;
-    const ctn_cable *c = &m->cables.v[i];
     out->node[0] = c->node[0];
     out->node[1] = c->node[1];
     out->first = c->first;
@@ -59,6 +57,26 @@ int ctn_model_cable(const ctn_model *m, size_t i, ctn_cable_info *out)
     out->target_value = c->target_value;
     out->target_achieved = c->resolved ? c->target_achieved : 0;
     out->target_iterations = c->target_iterations;
+}
+
+int ctn_model_cable(const ctn_model *m, size_t i, ctn_cable_info *out)
+{
+    if (!m || !out || i >= m->cables.n) return CTN_ERR_INVALID;
+    cable_info(&m->cables.v[i], out);
+    return CTN_OK;
+}
+
+int ctn_model_element_target(const ctn_model *m, size_t i, ctn_cable_info *out)
+{
+    if (!m || !out || i >= m->elements.n) return CTN_ERR_INVALID;
+    size_t lo = 0, hi = m->etargets.n;                 /* sorted by element index */
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (m->etargets.v[mid].first < i) lo = mid + 1;
+        else hi = mid;
+    }
+    memset(out, 0, sizeof *out);
+    if (lo < m->etargets.n && m->etargets.v[lo].first == i) cable_info(&m->etargets.v[lo], out);
     return CTN_OK;
 }
 

@@ -88,6 +88,14 @@ static const ctn_cable *unresolved(const ctn_model *m)
     return NULL;
 }
 
+/* A catenary element set by a target whose length has not been found yet, or NULL. */
+static const ctn_cable *unresolved_element(const ctn_model *m)
+{
+    for (size_t i = 0; i < m->etargets.n; i++)
+        if (!m->etargets.v[i].resolved) return &m->etargets.v[i];
+    return NULL;
+}
+
 /* A modal analysis asked for in the options is checked before any solve: its count
  * and the model's mass (errors at the `modes` line). */
 static int modal_precheck(ctn_problem *p)
@@ -108,6 +116,10 @@ int ctn_problem_create(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options
         return ctn_error_at(ctx, CTN_ERR_INVALID, m->file, c->line,
                             "cable %d-%d is set by a target: find its length first (ctn_model_resolve_targets)",
                             m->nodes.v[c->node[0]].id, m->nodes.v[c->node[1]].id);
+    if ((c = m ? unresolved_element(m) : NULL))
+        return ctn_error_at(ctx, CTN_ERR_INVALID, m->file, c->line,
+                            "catenary %d is set by a target: find its length first (ctn_model_resolve_targets)",
+                            m->elements.v[c->first].id);
     return ctn_problem_create_any(ctx, m, opt, out);
 }
 

@@ -1,13 +1,13 @@
-/* Cables set by a target (H=, sag=, tension=): the unstressed lengths that meet every
- * target in the solved first load step, by Newton's method on the lengths (outer loop)
- * with the sensitivities from the FE tangent (docs/theory.md, "Cables set by a target"):
+/* Cables and catenary elements set by a target (H=, sag=, tension=; the quantities in
+ * target_q.c): the unstressed lengths that meet every target in the solved first load
+ * step, by Newton's method on the lengths (outer loop) with the sensitivities from the FE
+ * tangent (docs/theory.md, "Cables set by a target"):
  *   F(u, L) = f_ext(L) - f_int(u, L) = 0  =>  du/dL_j = K^-1 dF/dL_j,
  *   dQ_i/dL_j = d/dh Q_i(u + h du/dL_j, L + h e_j) at h = 0,
  * dF/dL_j and the directional derivative of Q by central differences (the partial
  * derivatives of closed-form element quantities; the solution's sensitivity itself comes
  * from the tangent). Each outer step is a full non-linear solve started from the last. */
-#include "solve/problem.h"
-#include "solve/sag.h"
+#include "solve/target.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -21,7 +21,8 @@ typedef struct targets {
     ctn_ctx *ctx;
     ctn_model *m;
     ctn_problem *p;
-    size_t nt, *cab;         /* cables with a target */
+    size_t nt, ncab;         /* targets; the first ncab are cables, the rest catenaries */
+    ctn_cable **rec;         /* [nt] their records (m->cables, then m->etargets) */
     double *L, *Q, *J, *dL, *Lold;
     double *d, *dp, *u3, *f, *fm, *b, *v;   /* state, state, 3 nn, state, state, ndof, ndof */
     int outer;               /* outer iterations */
@@ -30,106 +31,26 @@ typedef struct targets {
 
 static const char *const target_key[] = { "length", "H", "sag", "tension" };
 
-/* ---- the target quantities at a state (u3: 3 displacements per node) ---- */
-
-static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-static void node_pos(const ctn_model *m, const double *u3, size_t i, double x[3])
-{
-    for (int k = 0; k < 3; k++) x[k] = m->nodes.v[i].X[k] + u3[3 * i + (size_t)k];
-}
-
-/* Tension N and unit chord t (node 0 to node 1) of two-node element e. */
-static void element_force(const targets *tg, const double *u3, size_t e, double *N, double t[3])
-{
-    const ctn_model *m = tg->m;
-    const int *nd = ctn_elem_nodes(m, e);
-    double X[6], u[6], f[6], x0[3], x1[3];
-    for (int a = 0; a < 2; a++)
-        for (int k = 0; k < 3; k++) {
-            X[3 * a + k] = m->nodes.v[nd[a]].X[k];
-            u[3 * a + k] = u3[3 * (size_t)nd[a] + (size_t)k];
-        }
-    ctn_elem_state st;
-    const ctn_asm_block *b = ctn_asm_block_of(tg->p->a, e);
-    b->ops->eval(ctn_asm_props(tg->p->a, e), 0, X, u, f, NULL, &st);
-    node_pos(m, u3, (size_t)nd[0], x0);
-    node_pos(m, u3, (size_t)nd[1], x1);
-    double l = 0;
-    for (int k = 0; k < 3; k++) {
-        t[k] = x1[k] - x0[k];
-        l += t[k] * t[k];
-    }
-    l = sqrt(l);
-    for (int k = 0; k < 3; k++) t[k] = l > 0 ? t[k] / l : 0;
-    *N = st.N;
-}
-
-static void unit_down(const ctn_model *m, double g[3])
-{
-    double n = sqrt(dot3(m->gravity, m->gravity));
-    for (int k = 0; k < 3; k++) g[k] = n > 0 ? m->gravity[k] / n : 0;
-}
-
-/* Force of the cable on its end node (end 0 or 1): the end element's pull plus the half
- * of its weight that the end node carries. */
-static double end_tension(const targets *tg, const double *u3, const ctn_cable *c, int end)
-{
-    size_t e = end ? c->first + c->count - 1 : c->first;
-    const ctn_model *m = tg->m;
-    double N, t[3], F[3];
-    element_force(tg, u3, e, &N, t);
-    double W = 0.5 * m->sections.v[m->elements.v[e].section].w * m->elements.v[e].l0;
-    for (int k = 0; k < 3; k++) F[k] = (end ? -N : N) * t[k] + W * m->gravity[k];
-    return sqrt(dot3(F, F));
-}
-
-/* Largest vertical distance (along gravity) of a node below the chord, read at the
- * chord's point with the same horizontal position along the chord's horizontal part. */
-static double vertical_sag(const targets *tg, const double *u3, const ctn_cable *c)
-{
-    const ctn_model *m = tg->m;
-    double g[3], A[3], B[3], ch[3], h[3], best = 0;
-    unit_down(m, g);
-    node_pos(m, u3, (size_t)c->node[0], A);
-    node_pos(m, u3, (size_t)c->node[1], B);
-    for (int k = 0; k < 3; k++) ch[k] = B[k] - A[k];
-    double cg = dot3(ch, g);
-    for (int k = 0; k < 3; k++) h[k] = ch[k] - cg * g[k];      /* horizontal part of the chord */
-    double hh = dot3(h, h);
-    if (!(hh > 0)) return NAN;
-    for (size_t j = 0; j + 1 < c->count; j++) {
-        double P[3], r[3];
-        node_pos(m, u3, (size_t)ctn_elem_nodes(m, c->first + j)[1], P);
-        for (int k = 0; k < 3; k++) r[k] = P[k] - A[k];
-        double s = dot3(r, h) / hh;                            /* chord parameter */
-        double y = dot3(r, g) - s * cg;
-        best = fmax(best, y);
-    }
-    return best;
-}
-
 static double quantity(const targets *tg, const double *u3, size_t j)
 {
-    const ctn_cable *c = &tg->m->cables.v[tg->cab[j]];
-    switch (c->target) {
-    case CTN_TARGET_H: {
-        double N, t[3], g[3];
-        element_force(tg, u3, c->first, &N, t);
-        unit_down(tg->m, g);
-        double tg_ = dot3(t, g), hz = 1 - tg_ * tg_;
-        return N * sqrt(hz > 0 ? hz : 0);
-    }
-    case CTN_TARGET_SAG: return vertical_sag(tg, u3, c);
-    default: return fmax(end_tension(tg, u3, c, 0), end_tension(tg, u3, c, 1));
-    }
+    return ctn_target_quantity(tg->p, tg->rec[j], u3);
+}
+
+/* How messages name target j: "cable 1-2" or "catenary 7". */
+static const char *name_of(const targets *tg, size_t j, char *buf, size_t size)
+{
+    const ctn_model *m = tg->m;
+    const ctn_cable *c = tg->rec[j];
+    if (j >= tg->ncab) snprintf(buf, size, "catenary %d", m->elements.v[c->first].id);
+    else snprintf(buf, size, "cable %d-%d", m->nodes.v[c->node[0]].id, m->nodes.v[c->node[1]].id);
+    return buf;
 }
 
 /* ---- lengths, solves, sensitivities ---- */
 
 static void set_length(targets *tg, size_t j, double L)
 {
-    ctn_cable *c = &tg->m->cables.v[tg->cab[j]];
+    ctn_cable *c = tg->rec[j];
     for (size_t e = c->first; e < c->first + c->count; e++) {
         tg->m->elements.v[e].l0 = L / (double)c->count;
         ctn_asm_setup_element(tg->p->a, e);
@@ -249,7 +170,7 @@ static double misfit(const targets *tg)
 {
     double worst = 0;
     for (size_t i = 0; i < tg->nt; i++) {
-        const ctn_cable *c = &tg->m->cables.v[tg->cab[i]];
+        const ctn_cable *c = tg->rec[i];
         worst = fmax(worst, fabs(tg->Q[i] - c->target_value) / c->target_value);
     }
     return isfinite(worst) ? worst : INFINITY;
@@ -260,23 +181,23 @@ static void evaluate(targets *tg)
     for (size_t i = 0; i < tg->nt; i++) tg->Q[i] = quantity(tg, tg->u3, i);
 }
 
-/* The error when the targets are not met: which cable, what it asked, what was reached. */
+/* The error when the targets are not met: which record, what it asked, what was reached. */
 static int not_met(targets *tg, const char *why)
 {
     size_t worst = 0;
     double w = -1;
+    char name[48];
     for (size_t i = 0; i < tg->nt; i++) {
-        const ctn_cable *c = &tg->m->cables.v[tg->cab[i]];
+        const ctn_cable *c = tg->rec[i];
         double e = fabs(tg->Q[i] - c->target_value) / c->target_value;
         if (!(e <= w)) {
             w = e;
             worst = i;
         }
     }
-    const ctn_cable *c = &tg->m->cables.v[tg->cab[worst]];
-    return ctn_error_at(tg->ctx, CTN_ERR_MODEL, tg->m->file, c->line,
-                        "cable %d-%d: no unstressed length gives %s=%g: %s", tg->m->nodes.v[c->node[0]].id,
-                        tg->m->nodes.v[c->node[1]].id, target_key[c->target], c->target_value, why);
+    const ctn_cable *c = tg->rec[worst];
+    return ctn_error_at(tg->ctx, CTN_ERR_MODEL, tg->m->file, c->line, "%s: no unstressed length gives %s=%g: %s",
+                        name_of(tg, worst, name, sizeof name), target_key[c->target], c->target_value, why);
 }
 
 /* For one target not met: the range of the target over unstressed lengths from just
@@ -285,7 +206,7 @@ static int reachable(targets *tg, char *msg, size_t size)
 {
     static const double s[] = { -2e-3, -1e-3, -3e-4, 0, 1e-4, 3e-4, 1e-3, 3e-3, 0.01, 0.02, 0.05, 0.1,
                                 0.2, 0.35, 0.5, 0.75, 1, 1.5, 2, 3 };
-    const ctn_cable *c = &tg->m->cables.v[tg->cab[0]];
+    const ctn_cable *c = tg->rec[0];
     const double *A = tg->m->nodes.v[c->node[0]].X, *B = tg->m->nodes.v[c->node[1]].X;
     double chord = sqrt((B[0] - A[0]) * (B[0] - A[0]) + (B[1] - A[1]) * (B[1] - A[1]) + (B[2] - A[2]) * (B[2] - A[2]));
     double lo = INFINITY, hi = -INFINITY, Llo = 0, Lhi = 0, L0 = INFINITY, L1 = 0;
@@ -311,27 +232,6 @@ static int reachable(targets *tg, char *msg, size_t size)
     return CTN_OK;
 }
 
-/* Largest strain of the members of targeted cable j at the state u3. */
-static double cable_strain(const targets *tg, const double *u3, size_t j)
-{
-    const ctn_model *m = tg->m;
-    const ctn_cable *c = &m->cables.v[tg->cab[j]];
-    double eps = -INFINITY;
-    for (size_t e = c->first; e < c->first + c->count; e++) {
-        const int *nd = ctn_elem_nodes(m, e);
-        double X[6], u[6], f[6];
-        for (int a = 0; a < 2; a++)
-            for (int k = 0; k < 3; k++) {
-                X[3 * a + k] = m->nodes.v[nd[a]].X[k];
-                u[3 * a + k] = u3[3 * (size_t)nd[a] + (size_t)k];
-            }
-        ctn_elem_state st;
-        ctn_asm_block_of(tg->p->a, e)->ops->eval(ctn_asm_props(tg->p->a, e), 0, X, u, f, NULL, &st);
-        eps = fmax(eps, st.strain);
-    }
-    return eps;
-}
-
 /* A target met only by stretching its cable beyond TARGET_MAX_STRAIN (the strain the
  * summary calls far beyond an elastic cable) is out of reach: for one target, the value
  * at that strain (bisection on the length) bounds the reachable range. */
@@ -340,13 +240,13 @@ static int elastic_range(targets *tg)
     size_t worst = 0;
     double eps = -INFINITY;
     for (size_t j = 0; j < tg->nt; j++) {
-        double e = cable_strain(tg, tg->u3, j);
+        double e = ctn_target_strain(tg->p, tg->rec[j], tg->u3);
         if (e > eps) { eps = e; worst = j; }
     }
     if (!(eps > TARGET_MAX_STRAIN)) return CTN_OK;
-    const ctn_cable *c = &tg->m->cables.v[tg->cab[worst]];
+    const ctn_cable *c = tg->rec[worst];
     double Lbad = tg->L[worst], found = Lbad, q = NAN;
-    char msg[320];
+    char msg[320], name[48];
     if (tg->nt == 1) {
         double Lok = Lbad * (1 + eps) / (1 + 0.5 * TARGET_MAX_STRAIN);   /* about half the limit strain */
         for (int it = 0; it < 60 && Lok - Lbad > 1e-9 * Lok; it++) {
@@ -354,7 +254,7 @@ static int elastic_range(targets *tg)
             int ok = 0, rc;
             set_length(tg, 0, mid);
             if ((rc = solve_at(tg, &ok))) return rc;
-            if (ok && cable_strain(tg, tg->u3, 0) <= TARGET_MAX_STRAIN) {
+            if (ok && ctn_target_strain(tg->p, tg->rec[0], tg->u3) <= TARGET_MAX_STRAIN) {
                 Lok = mid;
                 q = quantity(tg, tg->u3, 0);
             } else {
@@ -368,9 +268,9 @@ static int elastic_range(targets *tg)
     else
         snprintf(msg, sizeof msg, "it needs a strain of %.3g (length %.6g), beyond the %g an elastic cable takes", eps, found,
                  TARGET_MAX_STRAIN);
-    return ctn_error_at(tg->ctx, CTN_ERR_MODEL, tg->m->file, c->line, "cable %d-%d: no unstressed length gives %s=%g within "
-                        "the elastic range: %s", tg->m->nodes.v[c->node[0]].id, tg->m->nodes.v[c->node[1]].id,
-                        target_key[c->target], c->target_value, msg);
+    return ctn_error_at(tg->ctx, CTN_ERR_MODEL, tg->m->file, c->line, "%s: no unstressed length gives %s=%g within "
+                        "the elastic range: %s", name_of(tg, worst, name, sizeof name), target_key[c->target],
+                        c->target_value, msg);
 }
 
 /* Outer Newton on the lengths. */
@@ -392,7 +292,7 @@ static int find_lengths(targets *tg)
         }
         if ((rc = jacobian(tg, &ok))) return rc;
         if (!ok) return not_met(tg, "the equilibrium reached is not stable");
-        for (size_t i = 0; i < tg->nt; i++) tg->dL[i] = tg->m->cables.v[tg->cab[i]].target_value - tg->Q[i];
+        for (size_t i = 0; i < tg->nt; i++) tg->dL[i] = tg->rec[i]->target_value - tg->Q[i];
         if (!dense_solve(tg->nt, tg->J, tg->dL))
             return not_met(tg, "the target does not change with the length there (a slack or straight cable?)");
         memcpy(tg->Lold, tg->L, tg->nt * sizeof(double));
@@ -426,7 +326,7 @@ static int alloc_targets(targets *tg)
     size_t nt = tg->nt ? tg->nt : 1, ns = tg->p->ns, nd = tg->p->ndof ? tg->p->ndof : 1;
     double **small[] = { &tg->L, &tg->Q, &tg->dL, &tg->Lold };
     double **state[] = { &tg->d, &tg->dp, &tg->f, &tg->fm };
-    if (!(tg->cab = ctn_calloc(ctx, nt, sizeof(size_t))) || !(tg->J = ctn_calloc(ctx, nt * nt, sizeof(double))))
+    if (!(tg->rec = ctn_calloc(ctx, nt, sizeof(ctn_cable *))) || !(tg->J = ctn_calloc(ctx, nt * nt, sizeof(double))))
         return CTN_ERR_NOMEM;
     for (size_t i = 0; i < 4; i++)
         if (!(*small[i] = ctn_calloc(ctx, nt, sizeof(double))) || !(*state[i] = ctn_calloc(ctx, ns, sizeof(double))))
@@ -441,19 +341,37 @@ static void free_targets(targets *tg)
 {
     double *v[] = { tg->L, tg->Q, tg->dL, tg->Lold, tg->d, tg->dp, tg->f, tg->fm, tg->u3, tg->b, tg->v, tg->J };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
-    ctn_free(tg->cab);
+    ctn_free(tg->rec);
     ctn_problem_destroy(&tg->p);
+}
+
+/* The records still to resolve, cables first, into tg->rec (NULL: count only). */
+static size_t collect(ctn_model *m, ctn_cable **rec, size_t *ncab)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < m->cables.n; i++)
+        if (m->cables.v[i].target != CTN_TARGET_NONE && !m->cables.v[i].resolved) {
+            if (rec) rec[n] = &m->cables.v[i];
+            n++;
+        }
+    *ncab = n;
+    for (size_t i = 0; i < m->etargets.n; i++)
+        if (!m->etargets.v[i].resolved) {
+            if (rec) rec[n] = &m->etargets.v[i];
+            n++;
+        }
+    return n;
 }
 
 int ctn_model_resolve_targets(ctn_ctx *ctx, ctn_model *m, const ctn_solve_options *opt, int *outer)
 {
     if (!m) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_model_resolve_targets: model is NULL");
     if (outer) *outer = 0;
-    size_t nt = 0;
-    for (size_t i = 0; i < m->cables.n; i++) nt += m->cables.v[i].target != CTN_TARGET_NONE && !m->cables.v[i].resolved;
+    size_t ncab, nt = collect(m, NULL, &ncab);
     if (!nt) return CTN_OK;
     if (nt > 64)
-        return ctn_error(ctx, CTN_ERR_MODEL, "%s%smore than 64 cables set by a target (%zu)", m->file, *m->file ? ": " : "", nt);
+        return ctn_error(ctx, CTN_ERR_MODEL, "%s%smore than 64 cables and catenaries set by a target (%zu)", m->file,
+                         *m->file ? ": " : "", nt);
     ctn_solve_options o;
     if (opt) o = *opt;
     else ctn_solve_options_default(&o);
@@ -466,20 +384,18 @@ int ctn_model_resolve_targets(ctn_ctx *ctx, ctn_model *m, const ctn_solve_option
     tg.ctx = ctx;
     tg.m = m;
     tg.nt = nt;
+    tg.ncab = ncab;
     for (size_t i = 0; i < m->cables.n; i++) m->cables.v[i].resolved |= m->cables.v[i].target == CTN_TARGET_NONE;
     int rc = ctn_problem_create_any(ctx, m, &o, &tg.p);
     if (!rc) rc = alloc_targets(&tg);
     if (!rc) {
         tg.p->max_steps = 1;
-        for (size_t i = 0, j = 0; i < m->cables.n; i++)
-            if (!m->cables.v[i].resolved) {
-                tg.cab[j] = i;
-                tg.L[j++] = m->cables.v[i].length;
-            }
+        collect(m, tg.rec, &ncab);
+        for (size_t j = 0; j < nt; j++) tg.L[j] = tg.rec[j]->length;
         rc = find_lengths(&tg);
     }
     for (size_t j = 0; !rc && j < nt; j++) {
-        ctn_cable *c = &m->cables.v[tg.cab[j]];
+        ctn_cable *c = tg.rec[j];
         c->resolved = 1;
         c->target_achieved = tg.Q[j];
         c->target_iterations = tg.outer;

@@ -6,6 +6,8 @@
 #     slack-branch line; --json: every row converged, 4 marked, the catenary over-predicts
 #     the support stress and under-predicts the sag at the two taut lengths;
 #   - -o DIR: data files and the four scripts (SVGs when gnuplot is there);
+#   - --element catenary: the element and the mesh tables, study_mesh.dat, --json: the
+#     element equals the elastic catenary to 1e-10 on every row, the mesh is within 0.3 %;
 #   - a model of another span is refused (exit 2), bad options exit 1;
 #   - convergence: the observed orders are 2 +- 0.1 (--json), -o writes the figure's
 #     script and data, bad --n exits 1.
@@ -74,6 +76,37 @@ grep -qi "nan\|inf" "$T/fig"/*.dat && WHY+=("a data file holds nan or inf")
 [ -s "$T/out" ] && WHY+=("-q printed something")
 finish "study -o"
 
+# ---- one catenary element per length (--element catenary) ------------------------------------------
+"$BIN" study "${PAPER[@]}" --sweep 12 --element catenary -o "$T/cat" >"$T/out" 2>"$T/err"
+rc=$?
+[ "$rc" = 0 ] || WHY+=("--element catenary: exit $rc: $(head -c 300 "$T/err")")
+grep -q "^The catenary element (one per length) against the inextensible catenary" "$T/out" || WHY+=("no element table")
+grep -q "^The catenary element against the elastic catenary and the FE mesh (20 cable elements" "$T/out" ||
+    WHY+=("no element-against-mesh table")
+for L in 200.3340 201.3545 250.8777 279.6157; do
+    [ "$(grep -c "^ *$L |" "$T/out")" = 1 ] || WHY+=("no line for $L in the element-against-mesh table")
+done
+[ -s "$T/cat/study_mesh.dat" ] || WHY+=("study_mesh.dat missing")
+[ -s "$T/cat/study_element.gp" ] && [ -s "$T/cat/study_element.dat" ] || WHY+=("study_element figure missing")
+grep -q "FE mesh, 20 cable elements" "$T/cat/study_sag.gp" || WHY+=("the sag figure lacks the mesh")
+"$BIN" study "${PAPER[@]}" --sweep 12 --element catenary --json >"$T/c.json" 2>"$T/err" || WHY+=("--element --json: exit $?")
+if [ "$have_python" = 1 ]; then
+    msg=$(python3 - "$T/c.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+err = []
+if d.get("element") != "catenary": err.append("element %r" % d.get("element"))
+for r in d["rows"]:
+    f, e, m = r["fea"], r["elastic_catenary"], r.get("mesh")
+    for k in ("sag", "max_tension", "horizontal_force"):
+        if abs(e[k] - f[k]) > 1e-10 * abs(f[k]): err.append("L0=%g: %s element %r elastic %r" % (r["length"], k, f[k], e[k]))
+    if not m or abs(m["max_tension"] - f["max_tension"]) > 3e-3 * f["max_tension"]: err.append("L0=%g: mesh" % r["length"])
+print("; ".join(err[:5])); sys.exit(1 if err else 0)
+PY
+) || WHY+=("--element --json: $msg")
+fi
+finish "study --element catenary"
+
 # ---- errors ---------------------------------------------------------------------------------------
 expect() {   # expect CODE TEXT ARGS...
     local code=$1 text=$2
@@ -89,6 +122,7 @@ expect 1 "usage: catena study" study
 expect 1 "invalid option '--sweep'" study examples/paper/s200.3340.cable --sweep x
 expect 1 "invalid option '--claims'" study examples/paper/s200.3340.cable --claims 1,2,3
 expect 1 "sweep must run" study examples/paper/s200.3340.cable --from 150 --to 300
+expect 1 "invalid option '--element'" study examples/paper/s200.3340.cable --element chain
 finish "study errors"
 
 # ---- convergence ------------------------------------------------------------------------------------
