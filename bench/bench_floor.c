@@ -145,6 +145,36 @@ static int time_catena(ctn_ctx *ctx, const ctn_asm *a, const double *Kx, int rep
     return 0;
 }
 
+/* catena's Newton iteration on the same matrix: assembly of the residual and the
+ * tangent at the state d (ctn_asm_eval, as every iteration does), then its factorize and
+ * solve: what the issue's "assembly + factorization + solves per iteration" is. */
+static int time_iteration(ctn_ctx *ctx, ctn_asm *a, const double *d, int reps, timing *t)
+{
+    ctn_pattern pat = { a->ndof, a->colptr, a->rowind };
+    ctn_linsolve *ls = NULL;
+    ctn_factor_info info;
+    double tf[MAX_REPEAT], ts[MAX_REPEAT], tc[MAX_REPEAT];
+    double *f = malloc(a->map.nstate * sizeof *f), *Kx = malloc(a->nnz * sizeof *Kx);
+    int rc = f && Kx ? ctn_linsolve_create(ctx, "cholmod", &pat, CTN_ORDER_NATURAL, &ls) : CTN_ERR_NOMEM;
+    for (int k = -1; !rc && k < reps; k++) {
+        double c0 = cpu_now(), t0 = now();
+        if (ctn_asm_eval(a, d, 0, f, Kx, NULL, NULL)) rc = CTN_ERR_LINALG;
+        if (!rc) rc = ctn_linsolve_factor(ls, Kx, 0.0, &info);
+        double t1 = now();
+        if (!rc) rc = info.ok ? ctn_linsolve_solve(ls, f, f) : CTN_ERR_LINALG;
+        double t2 = now(), c2 = cpu_now();
+        if (k >= 0) { tf[k] = t1 - t0; ts[k] = t2 - t1; tc[k] = c2 - c0; }
+    }
+    ctn_linsolve_destroy(&ls);
+    free(f);
+    free(Kx);
+    if (rc) return 1;
+    t->fac = median(tf, reps);
+    t->sol = median(ts, reps);
+    t->cpu = median(tc, reps);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     int n = 200000, reps = 7;
@@ -174,14 +204,11 @@ int main(int argc, char **argv)
     if (!rc) rc = ctn_asm_create(ctx, m, &a);
     double *f = a ? malloc(a->map.nstate * sizeof *f) : NULL, *Kx = a ? malloc(a->nnz * sizeof *Kx) : NULL;
     if (!rc && (!f || !Kx)) rc = CTN_ERR_NOMEM;
+    double *d = a ? malloc(a->map.nstate * sizeof *d) : NULL;
+    if (!rc && !d) rc = CTN_ERR_NOMEM;
     if (!rc) {
-        double *d = malloc(a->map.nstate * sizeof *d);
-        if (!d) rc = CTN_ERR_NOMEM;
-        else {
-            ctn_dofmap_from3(&a->map, ctn_solution_displacements(s), d);
-            if (ctn_asm_eval(a, d, 0, f, Kx, NULL, NULL)) rc = CTN_ERR_LINALG;
-            free(d);
-        }
+        ctn_dofmap_from3(&a->map, ctn_solution_displacements(s), d);
+        if (ctn_asm_eval(a, d, 0, f, Kx, NULL, NULL)) rc = CTN_ERR_LINALG;
     }
     if (rc) {
         fprintf(stderr, "bench_floor: %s\n", ctn_ctx_message(ctx));
@@ -194,6 +221,9 @@ int main(int argc, char **argv)
     if (!time_catena(ctx, a, Kx, reps, &t))
         printf("%-48s %10.2f %10.2f %10.2f %10.2f\n", "catena backend (\"cholmod\")", 1e3 * t.fac, 1e3 * t.sol,
                1e3 * (t.fac + t.sol), 1e3 * t.cpu);
+    if (!time_iteration(ctx, a, d, reps, &t))
+        printf("%-48s %10.2f %10.2f %10.2f %10.2f\n", "catena iteration (assembly + factor, solve)", 1e3 * t.fac,
+               1e3 * t.sol, 1e3 * (t.fac + t.sol), 1e3 * t.cpu);
     for (size_t i = 0; i < sizeof vs / sizeof *vs; i++)
         if (!time_bare(&vs[i], a, Kx, reps, &t))
             printf("%-48s %10.2f %10.2f %10.2f %10.2f\n", vs[i].name, 1e3 * t.fac, 1e3 * t.sol, 1e3 * (t.fac + t.sol),
@@ -201,6 +231,7 @@ int main(int argc, char **argv)
         else printf("%-48s failed\n", vs[i].name);
     free(f);
     free(Kx);
+    free(d);
     ctn_asm_destroy(&a);
     ctn_solution_destroy(&s);
     ctn_model_destroy(&m);

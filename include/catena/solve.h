@@ -109,10 +109,8 @@ typedef struct ctn_solve_options {
                                   ctn_problem_modes with these when modal.count > 0 (the
                                   file's `modes` line) */
     int threads;          /* threads of the numeric factorization (OpenMP, shared by CHOLMOD
-                             and an OpenMP OpenBLAS); 0 (default): sized to the machine and
-                             the work: the OpenMP default (the CPUs available, or
-                             OMP_NUM_THREADS) for a factorization of more than 1e9 flops,
-                             else 1 (threads cost more than they give there) */
+                             and an OpenMP OpenBLAS); 0 (default): one, the fastest measured
+                             (docs/solver.md "Threads") */
     int reuse;            /* CTN_METHOD_AUTO: once Newton converges quadratically, take the
                              next step with the last factorization (conjugate gradients on
                              the current tangent, preconditioned by it) instead of factoring

@@ -4,7 +4,14 @@
 #include <string.h>
 #include <time.h>
 
-#define CTN_PARALLEL_FLOPS 1e9   /* factorizations smaller than this run on one thread */
+/* The default is one thread per factorization, measured: CHOLMOD's supernodal
+ * factorization on Debian's OpenBLAS for OpenMP, on the K = 400 hypar net (2.1e10 flops)
+ * on an idle 2-vCPU machine, took 2.5 s on one thread and 8.6 s on two (CHOLMOD's own
+ * loops ask for 4 threads whatever the count says, and the supernodes are mostly too
+ * small for a parallel BLAS call to pay its fork and join); OpenBLAS's pthreads build
+ * with CHOLMOD's loops serial took 2.3 s wall for twice the CPU. A large dense product
+ * does run 1.6 times faster on two threads there, so threads=N stays for machines and
+ * factors where it pays. */
 
 struct ctn_linsolve {
     const ctn_linsolve_ops *ops;
@@ -64,8 +71,7 @@ const ctn_linsolve_ops *ctn_linsolve_type(const ctn_linsolve *s) { return s->ops
  * caller's restored after). */
 int ctn_linsolve_factor(ctn_linsolve *s, const double *Kx, double shift, ctn_factor_info *info)
 {
-    int n = s->threads;
-    if (n <= 0) n = ctn_linsolve_flops(s) > CTN_PARALLEL_FLOPS ? ctn_threads_available() : 1;
+    int n = s->threads > 0 ? s->threads : 1;
     ctn_threads_saved old;
     ctn_threads_push(n, &old);
     double t0 = cpu_clock();

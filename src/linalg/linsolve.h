@@ -65,22 +65,21 @@ int ctn_linsolve_inertia(ctn_linsolve *s, double tol, long *negative, long *zero
 ctn_ordering ctn_linsolve_ordering(const ctn_linsolve *s);
 size_t ctn_linsolve_factor_nnz(const ctn_linsolve *s);
 double ctn_linsolve_flops(const ctn_linsolve *s);
-/* Threads of the numeric factorizations: n > 0 that many, 0 sized to the machine and the
- * work (ctn_solve_options.threads). The threads of the last one, and its CPU seconds. */
+/* Threads of the numeric factorizations: n > 0 that many, 0 the default, one thread
+ * (ctn_solve_options.threads; linsolve.c says why). The threads of the last one, and its
+ * CPU seconds. */
 void ctn_linsolve_set_threads(ctn_linsolve *s, int n);
 int ctn_linsolve_threads(const ctn_linsolve *s);
 double ctn_linsolve_cpu(const ctn_linsolve *s);
 
-/* Threads (threads.c): the OpenMP threads a factorization should use (OpenMP's count
- * less the CPUs other processes keep busy; 1 without OpenMP); run the calling thread's
- * OpenMP regions on n threads (n = 1: no parallel region at all, as OpenMP's
- * max-active-levels 0, which is process-wide) until ctn_threads_pop restores the
- * settings saved; the name of the BLAS loaded in the process. */
+/* Threads (threads.c): run the calling thread's OpenMP regions on n threads (n = 1: no
+ * parallel region at all, as OpenMP's max-active-levels 0, which is process-wide) until
+ * ctn_threads_pop restores the settings saved; the name of the BLAS loaded in the
+ * process. */
 typedef struct ctn_threads_saved {
     int threads;               /* the caller's count, 0 without OpenMP */
     int levels;                /* the caller's max-active-levels, -1 without OpenMP */
 } ctn_threads_saved;
-int ctn_threads_available(void);
 void ctn_threads_push(int n, ctn_threads_saved *old);
 void ctn_threads_pop(const ctn_threads_saved *old);
 void ctn_blas_name(char *buf, size_t size);

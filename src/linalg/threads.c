@@ -16,46 +16,12 @@
 #include <dlfcn.h>
 #include <stdint.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 typedef int (*get_fn)(void);
 typedef void (*set_fn)(int);
 
 static void *symbol(const char *name) { return dlsym(RTLD_DEFAULT, name); }
-
-/* Runnable threads on the machine now, other than the caller: the fourth field of
- * Linux's /proc/loadavg ("running/total", the caller included); -1 if unknown. */
-static double running_now(void)
-{
-    FILE *f = fopen("/proc/loadavg", "r");
-    double a, b, c;
-    long running = -1, total;
-    if (!f) return -1;
-    if (fscanf(f, "%lf %lf %lf %ld/%ld", &a, &b, &c, &running, &total) != 5) running = -1;
-    fclose(f);
-    return running > 0 ? (double)running - 1 : -1;
-}
-
-/* OpenMP's default (the CPUs available, or OMP_NUM_THREADS), less the CPUs other
- * processes keep busy: the larger of the threads runnable right now and the 1-minute
- * load average beyond this process's own 1 (the average lags: a build started a few
- * seconds ago is in the first, not yet in the second). Threads beyond the idle CPUs only
- * wait for one another at CHOLMOD's and OpenBLAS's barriers: measured on the K = 400 net
- * on 2 CPUs with one kept busy by another process, a 2-thread factorization took 26 s
- * and 25 s of CPU where 1 thread took 2.4 s. */
-int ctn_threads_available(void)
-{
-    get_fn max = (get_fn)(uintptr_t)symbol("omp_get_max_threads");
-    int n = max ? max() : 1;
-    double load, busy = running_now();
-    if (n > 1 && getloadavg(&load, 1) == 1 && load - 1 > busy) busy = load - 1;
-    if (n > 1 && busy > 0) {
-        double idle = (double)n - busy;
-        n = idle < 1 ? 1 : (int)(idle + 0.5) < n ? (int)(idle + 0.5) : n;
-    }
-    return n > 0 ? n : 1;
-}
 
 /* n threads: the calling thread's OpenMP count (which OpenBLAS follows), and for n = 1
  * no active parallel region at all (max-active-levels 0): CHOLMOD's own loops ask for
