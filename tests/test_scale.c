@@ -274,9 +274,34 @@ static void test_quotient(void)
     ctn_ctx_destroy(&c.ctx);
 }
 
+/* A net past the size where AMD is analysed on a second thread beside METIS: `auto`
+ * keeps the cheaper of the two, as each analysed alone finds them; the same equilibrium
+ * as with AMD alone. */
+static void test_parallel_orderings(void)
+{
+    static const char *lines[] = { "solve ordering=amd tol=1e-10", "solve ordering=metis tol=1e-10", "solve tol=1e-10" };
+    run r[3];
+    int ok = 1;
+    for (int i = 0; i < 3; i++) {
+        char *t = net_text(90, lines[i]);
+        ok &= t && solve_text(t, &r[i]);
+        free(t);
+    }
+    if (ok) {
+        CHECK(r[2].sum.ndof >= 20000);
+        double best = fmin(r[0].sum.flops_factor, r[1].sum.flops_factor);
+        CHECK_MSG(r[2].sum.flops_factor == best, "auto %g, amd %g, metis %g", r[2].sum.flops_factor,
+                  r[0].sum.flops_factor, r[1].sum.flops_factor);
+        CHECK(r[2].sum.ordering == (r[0].sum.flops_factor <= r[1].sum.flops_factor ? CTN_ORDER_AMD : CTN_ORDER_METIS));
+        CHECK_MSG(converged(&r[2], 1e-10) && rel_diff(&r[0], &r[2]) < 1e-9, "%g", rel_diff(&r[0], &r[2]));
+    }
+    for (int i = 0; i < 3; i++) free(r[i].d);
+}
+
 int main(void)
 {
     test_quotient();
+    test_parallel_orderings();
     test_pcg();
     test_reuse();
     test_orderings();

@@ -11,10 +11,9 @@
  * for the ordering kept, with its permutation. */
 #include "linalg/chol.h"
 
+#include <pthread.h>
 #include <stdio.h>
 #include <string.h>
-
-#define CANDIDATES 3
 
 const char *ctn_chol_status(int status)
 {
@@ -46,37 +45,73 @@ static int cholmod_method(ctn_ordering o)
     return o == CTN_ORDER_AMD ? CHOLMOD_AMD : o == CTN_ORDER_METIS ? CHOLMOD_METIS : CHOLMOD_NATURAL;
 }
 
-/* Workspace of the analyses: 7 arrays of n, and the quotient graph AMD and METIS
- * order (cholmod_quotient.c). */
-typedef struct order_work {
-    SuiteSparse_long *perm, *best, *parent, *post, *count, *first, *level, *sperm;
-    ctn_chol_quot q;
-} order_work;
+/* One ordering's analysis: its permutation (and the analysis' other outputs, which
+ * CHOLMOD requires), its flops and factor size, on the caller's CHOLMOD common or on a
+ * thread's own. */
+enum { PERM, PARENT, POST, COUNT, FIRST, LEVEL, SPERM, ARRAYS };
+typedef struct cand {
+    chol *c;
+    const ctn_chol_quot *q;
+    ctn_ordering o;
+    cholmod_common own, *cm;
+    SuiteSparse_long *a[ARRAYS];
+    double fl, lnz;
+    int ok, status;
+} cand;
 
-/* AMD or METIS on the quotient graph (built on first use), expanded into w->perm; on
- * the pattern itself when no two columns merge or the quotient could not be built. */
-static int fill_reducing(chol *c, ctn_ordering o, order_work *w)
+static int cand_alloc(cand *k, chol *c, const ctn_chol_quot *q)
 {
-    if (!w->q.first) (void)ctn_chol_quotient(c, &w->q);
-    cholmod_sparse *G = w->q.G ? w->q.G : c->A;
-    SuiteSparse_long *p = w->q.G ? w->sperm : w->perm;
-    int ok = o == CTN_ORDER_AMD ? cholmod_l_amd(G, NULL, 0, p, &c->cm) : cholmod_l_metis(G, NULL, 0, 0, p, &c->cm);
-    if (ok && w->q.G) ctn_chol_quotient_expand(&w->q, w->sperm, w->perm);
-    return ok;
+    size_t n = c->A->ncol;
+    k->c = c;
+    k->q = q;
+    k->cm = &c->cm;
+    for (int i = 0; i < ARRAYS; i++)
+        if (!(k->a[i] = ctn_malloc(c->ctx, n ? n : 1, sizeof(SuiteSparse_long)))) return CTN_ERR_NOMEM;
+    return CTN_OK;
 }
 
-/* Analyse one ordering: its permutation in w->perm, flops and lnz; 0 if it failed. */
-static int try_order(chol *c, ctn_ordering o, order_work *w, double *fl, double *lnz)
+static void cand_free(cand *k)
 {
+    for (int i = 0; i < ARRAYS; i++) ctn_free(k->a[i]);
+}
+
+/* Analyse ordering o: AMD and METIS order the quotient graph when there is one (its
+ * permutation expanded), natural is the identity. */
+static void cand_run(cand *k, ctn_ordering o)
+{
+    chol *c = k->c;
+    SuiteSparse_long **a = k->a;
     int ok = 1;
+    k->o = o;
     if (o == CTN_ORDER_NATURAL)
-        for (size_t j = 0; j < c->A->ncol; j++) w->perm[j] = (SuiteSparse_long)j;
-    else ok = fill_reducing(c, o, w);
-    ok = ok && cholmod_l_analyze_ordering(c->A, cholmod_method(o), w->perm, NULL, 0, w->parent, w->post,
-                                        w->count, w->first, w->level, &c->cm);
-    *fl = ok ? c->cm.fl : 0;
-    *lnz = ok ? c->cm.lnz : 0;
-    return ok && c->cm.status == CHOLMOD_OK;
+        for (size_t j = 0; j < c->A->ncol; j++) a[PERM][j] = (SuiteSparse_long)j;
+    else {
+        cholmod_sparse *G = k->q->G ? k->q->G : c->A;
+        SuiteSparse_long *p = k->q->G ? a[SPERM] : a[PERM];
+        ok = o == CTN_ORDER_AMD ? cholmod_l_amd(G, NULL, 0, p, k->cm) : cholmod_l_metis(G, NULL, 0, 0, p, k->cm);
+        if (ok && k->q->G) ctn_chol_quotient_expand(k->q, a[SPERM], a[PERM]);
+    }
+    ok = ok && cholmod_l_analyze_ordering(c->A, cholmod_method(o), a[PERM], NULL, 0, a[PARENT], a[POST], a[COUNT],
+                                        a[FIRST], a[LEVEL], k->cm);
+    k->status = k->cm->status;
+    k->ok = ok && k->status == CHOLMOD_OK;
+    k->fl = k->ok ? k->cm->fl : 0;
+    k->lnz = k->ok ? k->cm->lnz : 0;
+}
+
+/* A candidate on a second thread, with a CHOLMOD common of its own (the library is
+ * reentrant across commons; the pattern and the quotient graph are only read). */
+static void *cand_thread(void *arg)
+{
+    cand *k = arg;
+    cholmod_l_start(&k->own);
+    k->own.print = 0;
+    k->own.error_handler = NULL;
+    k->cm = &k->own;
+    cand_run(k, k->o);
+    cholmod_l_finish(&k->own);
+    k->cm = &k->c->cm;
+    return NULL;
 }
 
 /* The envelope of the upper pattern (rows sorted): the positions between each column's
@@ -89,64 +124,79 @@ static double envelope(const cholmod_sparse *A)
     return e;
 }
 
-/* The best ordering by flops into w->best (and *kept); the status of the last failure
- * in *status when all failed. For AUTO: a full envelope means the natural ordering makes
- * no fill (a chain), and nothing can beat it; otherwise AMD and METIS are analysed, and
- * natural too unless its envelope is more than NATURAL_ENVELOPE times the better one's
- * factor (a mesh numbered row by row: its factor fills the envelope, and analysing it
- * costs as much as the others together at 3 million DOFs). Natural is kept on ties
- * within 10 % (it keeps memory access local). */
-#define NATURAL_ENVELOPE 4.0
-static int pick(chol *c, ctn_ordering ord, order_work *w, ctn_ordering *kept, int *status)
+/* The better of two analysed candidates (natural kept on ties within 10 %, it keeps
+ * memory access local; else the earlier on ties), -1 if neither succeeded. */
+static int better(const cand *k, int i, int j)
 {
-    static const ctn_ordering all[CANDIDATES] = { CTN_ORDER_AMD, CTN_ORDER_METIS, CTN_ORDER_NATURAL };
+    if (i < 0 || !k[i].ok) return j >= 0 && k[j].ok ? j : -1;
+    if (j < 0 || !k[j].ok) return i;
+    if (k[j].o == CTN_ORDER_NATURAL) return k[j].fl <= 1.1 * k[i].fl ? j : i;
+    if (k[i].o == CTN_ORDER_NATURAL) return k[j].fl < k[i].fl / 1.1 ? j : i;
+    return k[j].fl < k[i].fl ? j : i;
+}
+
+/* The best ordering by flops: the index of its candidate (k[0] or k[1]), -1 if every
+ * analysis failed (*status: the last failure's). For AUTO: a full envelope means the
+ * natural ordering makes no fill (a chain), and nothing can beat it; otherwise METIS and
+ * AMD are analysed, AMD on a second thread for large patterns (the two are independent;
+ * on a busy machine the thread only shares the CPU), and natural too unless its
+ * envelope is more than NATURAL_ENVELOPE times the better one's factor (a mesh numbered
+ * row by row: its factor fills the envelope, and analysing it costs as much as the
+ * others together at 3 million DOFs). */
+#define NATURAL_ENVELOPE 4.0
+#define PARALLEL_DOFS 20000
+static int pick(chol *c, ctn_ordering ord, cand *k, int *status)
+{
     size_t n = c->A->ncol;
     double env = envelope(c->A), anz = (double)((SuiteSparse_long *)c->A->p)[n];
-    double best = -1, best_lnz = 0, fl, lnz;
-    for (int i = 0; i < CANDIDATES; i++) {
-        ctn_ordering o = all[i];
-        if (ord != CTN_ORDER_AUTO && o != ord) continue;
-        if (ord == CTN_ORDER_AUTO && o != CTN_ORDER_NATURAL && env <= anz) continue;
-        if (ord == CTN_ORDER_AUTO && o == CTN_ORDER_NATURAL && best > 0 && env > NATURAL_ENVELOPE * best_lnz) continue;
-        if (!try_order(c, o, w, &fl, &lnz)) {
-            *status = c->cm.status;
-            continue;
-        }
-        if (best < 0 || (o == CTN_ORDER_NATURAL ? fl <= 1.1 * best : fl < best)) {
-            best = fl;
-            best_lnz = lnz;
-            *kept = o;
-            memcpy(w->best, w->perm, n * sizeof *w->perm);
+    int best;
+    if (ord != CTN_ORDER_AUTO || env <= anz) {
+        cand_run(&k[0], ord == CTN_ORDER_AUTO ? CTN_ORDER_NATURAL : ord);
+        best = better(k, 0, -1);
+    } else {
+        pthread_t t;
+        k[1].o = CTN_ORDER_AMD;
+        int threaded = n >= PARALLEL_DOFS && !pthread_create(&t, NULL, cand_thread, &k[1]);
+        cand_run(&k[0], CTN_ORDER_METIS);
+        if (threaded) pthread_join(t, NULL);
+        else cand_run(&k[1], CTN_ORDER_AMD);
+        best = better(k, 1, 0);                               /* AMD on ties */
+        if (best < 0 || env <= NATURAL_ENVELOPE * k[best].lnz) {
+            int spare = best == 0 ? 1 : 0;
+            cand_run(&k[spare], CTN_ORDER_NATURAL);
+            best = better(k, best, spare);
         }
     }
-    return best >= 0;
+    if (best < 0) *status = k[0].ok ? k[1].status : k[0].status;
+    return best;
 }
 
 int ctn_chol_analyze(chol *c, ctn_ordering ord)
 {
-    size_t n = c->A->ncol;
-    order_work w;
-    SuiteSparse_long **arrays[] = { &w.perm, &w.best, &w.parent, &w.post, &w.count, &w.first, &w.level, &w.sperm };
-    memset(&w, 0, sizeof w);
+    cand k[2];
+    ctn_chol_quot q;
+    memset(k, 0, sizeof k);
+    memset(&q, 0, sizeof q);
     int rc = CTN_OK, status = CHOLMOD_OK;
-    for (size_t i = 0; !rc && i < sizeof arrays / sizeof *arrays; i++)
-        if (!(*arrays[i] = ctn_malloc(c->ctx, n ? n : 1, sizeof(SuiteSparse_long)))) rc = CTN_ERR_NOMEM;
-    ctn_ordering kept = CTN_ORDER_NATURAL;
-    if (!rc && !pick(c, ord, &w, &kept, &status)) {
+    if (ord != CTN_ORDER_NATURAL) rc = ctn_chol_quotient(c, &q);
+    for (int i = 0; !rc && i < 2; i++) rc = cand_alloc(&k[i], c, &q);
+    int best = rc ? -1 : pick(c, ord, k, &status);
+    if (!rc && best < 0) {
         c->cm.status = status;
         rc = ctn_chol_error(c, ord == CTN_ORDER_AUTO ? "analysis (every ordering)" : "analysis");
     }
     if (!rc) {
+        ctn_ordering kept = k[best].o;
         c->cm.nmethods = 1;
         c->cm.method[0].ordering = kept == CTN_ORDER_NATURAL ? CHOLMOD_NATURAL : CHOLMOD_GIVEN;
         c->cm.postorder = kept != CTN_ORDER_NATURAL;
-        c->L = cholmod_l_analyze_p(c->A, kept == CTN_ORDER_NATURAL ? NULL : w.best, NULL, 0, &c->cm);
+        c->L = cholmod_l_analyze_p(c->A, kept == CTN_ORDER_NATURAL ? NULL : k[best].a[PERM], NULL, 0, &c->cm);
         if (!c->L) rc = ctn_chol_error(c, "analysis");
         c->ordering = kept;
         c->fl = c->cm.fl;
         c->lnz = c->cm.lnz;
     }
-    for (size_t i = 0; i < sizeof arrays / sizeof *arrays; i++) ctn_free(*arrays[i]);
-    ctn_chol_quotient_free(c, &w.q);
+    for (int i = 0; i < 2; i++) cand_free(&k[i]);
+    ctn_chol_quotient_free(c, &q);
     return rc;
 }

@@ -36,8 +36,10 @@ int ctn_pcg_solve(ctn_pcg *g, const double *b, double *x, double target, int max
     double rz = 0;
     while (*res > target && *iters < maxit) {
         if ((rc = g->precond(g->data, g->r, g->z))) return rc;   /* z = M^-1 r */
-        double rz1 = dot(g->r, g->z, n), beta = *iters ? rz1 / rz : 0;
-        for (size_t i = 0; i < n; i++) g->p[i] = g->z[i] + beta * g->p[i];
+        double rz1 = dot(g->r, g->z, n);
+        if (*iters == 0) memcpy(g->p, g->z, n * sizeof *g->p);   /* p holds no direction yet */
+        else
+            for (size_t i = 0; i < n; i++) g->p[i] = g->z[i] + rz1 / rz * g->p[i];
         rz = rz1;
         if ((rc = g->apply(g->data, g->p, g->q))) return rc;    /* q = A p */
         double pq = dot(g->p, g->q, n);
