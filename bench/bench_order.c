@@ -27,6 +27,7 @@ static double cpu_now(void)
 int main(int argc, char **argv)
 {
     ctn_ctx *ctx = NULL;
+    bench_keep_heap();
     ctn_model *m = NULL;
     ctn_asm *a = NULL;
     int n = 0, rc = ctn_ctx_create(&ctx);

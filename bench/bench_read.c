@@ -89,6 +89,7 @@ static int run_once(const char *path, int no_setup, double *wall, double *cpu, s
 int main(int argc, char **argv)
 {
     int repeat = 3, no_setup = 0;
+    bench_keep_heap();
     if (argc < 2) goto usage;
     for (int i = 2; i < argc; i++) {
         if (!strcmp(argv[i], "--no-setup")) no_setup = 1;

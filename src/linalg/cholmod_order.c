@@ -45,13 +45,15 @@ static int cholmod_method(ctn_ordering o)
     return o == CTN_ORDER_AMD ? CHOLMOD_AMD : o == CTN_ORDER_METIS ? CHOLMOD_METIS : CHOLMOD_NATURAL;
 }
 
-/* One ordering's analysis: its permutation (and the analysis' other outputs, which
- * CHOLMOD requires), its flops and factor size, on the caller's CHOLMOD common or on a
- * thread's own. */
-enum { PERM, PARENT, POST, COUNT, FIRST, LEVEL, SPERM, ARRAYS };
+/* One ordering's analysis on the graph H the orderings see (the quotient graph, or the
+ * pattern itself when no columns merge): its permutation of H's vertices (and the
+ * analysis' other outputs, which CHOLMOD requires), its flops and factor size, on the
+ * caller's CHOLMOD common or on a thread's own. */
+enum { PERM, PARENT, POST, COUNT, FIRST, LEVEL, ARRAYS };
 typedef struct cand {
     chol *c;
     const ctn_chol_quot *q;
+    cholmod_sparse *H;
     ctn_ordering o;
     cholmod_common own, *cm;
     SuiteSparse_long *a[ARRAYS];
@@ -61,12 +63,13 @@ typedef struct cand {
 
 static int cand_alloc(cand *k, chol *c, const ctn_chol_quot *q)
 {
-    size_t n = c->A->ncol;
     k->c = c;
     k->q = q;
+    k->H = q->G ? q->G : c->A;
     k->cm = &c->cm;
+    size_t m = k->H->ncol;
     for (int i = 0; i < ARRAYS; i++)
-        if (!(k->a[i] = ctn_malloc(c->ctx, n ? n : 1, sizeof(SuiteSparse_long)))) return CTN_ERR_NOMEM;
+        if (!(k->a[i] = ctn_malloc(c->ctx, m ? m : 1, sizeof(SuiteSparse_long)))) return CTN_ERR_NOMEM;
     return CTN_OK;
 }
 
@@ -75,28 +78,45 @@ static void cand_free(cand *k)
     for (int i = 0; i < ARRAYS; i++) ctn_free(k->a[i]);
 }
 
-/* Analyse ordering o: AMD and METIS order the quotient graph when there is one (its
- * permutation expanded), natural is the identity. */
-static void cand_run(cand *k, ctn_ordering o)
+/* The factor's size and flops from the column counts of H's factor: vertex v (a
+ * supervariable of w DOFs) whose column has c vertices is w DOF columns of w_avg (c - 1)
+ * + w, ..., w_avg (c - 1) + 1 entries (w_avg: the mean weight stands for the weights of
+ * the other vertices). Exact when every node has the same number of free DOFs, as the
+ * block structure of the factor is the factor of the block structure; the final
+ * analysis counts the kept ordering exactly in any case. */
+static void estimate(cand *k)
 {
-    chol *c = k->c;
+    const ctn_chol_quot *q = k->q;
+    size_t m = k->H->ncol;
+    double wbar = (double)k->c->A->ncol / (double)(m ? m : 1), fl = 0, lnz = 0;
+    for (size_t j = 0; j < m; j++) {
+        SuiteSparse_long v = k->a[PERM][j];
+        long w = q->G ? (long)(q->first[v + 1] - q->first[v]) : 1;
+        double off = wbar * (double)(k->a[COUNT][j] - 1);
+        lnz += (double)w * off + 0.5 * (double)w * (double)(w + 1);
+        for (long t = 1; t <= w; t++) fl += (off + (double)t) * (off + (double)t);
+    }
+    k->fl = fl;
+    k->lnz = lnz;
+}
+
+/* Order H by o (natural: the identity) and, if analyse, count its factor. */
+static void cand_run(cand *k, ctn_ordering o, int analyse)
+{
     SuiteSparse_long **a = k->a;
+    size_t m = k->H->ncol;
     int ok = 1;
     k->o = o;
     if (o == CTN_ORDER_NATURAL)
-        for (size_t j = 0; j < c->A->ncol; j++) a[PERM][j] = (SuiteSparse_long)j;
-    else {
-        cholmod_sparse *G = k->q->G ? k->q->G : c->A;
-        SuiteSparse_long *p = k->q->G ? a[SPERM] : a[PERM];
-        ok = o == CTN_ORDER_AMD ? cholmod_l_amd(G, NULL, 0, p, k->cm) : cholmod_l_metis(G, NULL, 0, 0, p, k->cm);
-        if (ok && k->q->G) ctn_chol_quotient_expand(k->q, a[SPERM], a[PERM]);
-    }
-    ok = ok && cholmod_l_analyze_ordering(c->A, cholmod_method(o), a[PERM], NULL, 0, a[PARENT], a[POST], a[COUNT],
+        for (size_t j = 0; j < m; j++) a[PERM][j] = (SuiteSparse_long)j;
+    else if (o == CTN_ORDER_AMD) ok = cholmod_l_amd(k->H, NULL, 0, a[PERM], k->cm);
+    else ok = cholmod_l_metis(k->H, NULL, 0, 0, a[PERM], k->cm);
+    if (ok && analyse)
+        ok = cholmod_l_analyze_ordering(k->H, cholmod_method(o), a[PERM], NULL, 0, a[PARENT], a[POST], a[COUNT],
                                         a[FIRST], a[LEVEL], k->cm);
     k->status = k->cm->status;
     k->ok = ok && k->status == CHOLMOD_OK;
-    k->fl = k->ok ? k->cm->fl : 0;
-    k->lnz = k->ok ? k->cm->lnz : 0;
+    if (k->ok && analyse) estimate(k);
 }
 
 /* A candidate on a second thread, with a CHOLMOD common of its own (the library is
@@ -108,7 +128,7 @@ static void *cand_thread(void *arg)
     k->own.print = 0;
     k->own.error_handler = NULL;
     k->cm = &k->own;
-    cand_run(k, k->o);
+    cand_run(k, k->o, 1);
     cholmod_l_finish(&k->own);
     k->cm = &k->c->cm;
     return NULL;
@@ -136,13 +156,13 @@ static int better(const cand *k, int i, int j)
 }
 
 /* The best ordering by flops: the index of its candidate (k[0] or k[1]), -1 if every
- * analysis failed (*status: the last failure's). For AUTO: a full envelope means the
- * natural ordering makes no fill (a chain), and nothing can beat it; otherwise METIS and
- * AMD are analysed, AMD on a second thread for large patterns (the two are independent;
- * on a busy machine the thread only shares the CPU), and natural too unless its
- * envelope is more than NATURAL_ENVELOPE times the better one's factor (a mesh numbered
- * row by row: its factor fills the envelope, and analysing it costs as much as the
- * others together at 3 million DOFs). */
+ * ordering failed (*status: the last failure's). An ordering asked for is taken without
+ * counting. AUTO: a full envelope means the natural ordering makes no fill (a chain), and
+ * nothing can beat it; otherwise METIS and AMD are counted on the quotient graph, AMD on
+ * a second thread for large patterns (the two are independent; on a busy machine the
+ * thread only shares the CPU), and natural too unless its envelope is more than
+ * NATURAL_ENVELOPE times the better one's factor (a mesh numbered row by row: its
+ * factor fills the envelope, and counting it costs as much as the others together). */
 #define NATURAL_ENVELOPE 4.0
 #define PARALLEL_DOFS 20000
 static int pick(chol *c, ctn_ordering ord, cand *k, int *status)
@@ -151,19 +171,19 @@ static int pick(chol *c, ctn_ordering ord, cand *k, int *status)
     double env = envelope(c->A), anz = (double)((SuiteSparse_long *)c->A->p)[n];
     int best;
     if (ord != CTN_ORDER_AUTO || env <= anz) {
-        cand_run(&k[0], ord == CTN_ORDER_AUTO ? CTN_ORDER_NATURAL : ord);
-        best = better(k, 0, -1);
+        cand_run(&k[0], ord == CTN_ORDER_AUTO ? CTN_ORDER_NATURAL : ord, 0);
+        best = k[0].ok ? 0 : -1;
     } else {
         pthread_t t;
         k[1].o = CTN_ORDER_AMD;
         int threaded = n >= PARALLEL_DOFS && !pthread_create(&t, NULL, cand_thread, &k[1]);
-        cand_run(&k[0], CTN_ORDER_METIS);
+        cand_run(&k[0], CTN_ORDER_METIS, 1);
         if (threaded) pthread_join(t, NULL);
-        else cand_run(&k[1], CTN_ORDER_AMD);
+        else cand_run(&k[1], CTN_ORDER_AMD, 1);
         best = better(k, 1, 0);                               /* AMD on ties */
         if (best < 0 || env <= NATURAL_ENVELOPE * k[best].lnz) {
             int spare = best == 0 ? 1 : 0;
-            cand_run(&k[spare], CTN_ORDER_NATURAL);
+            cand_run(&k[spare], CTN_ORDER_NATURAL, 1);
             best = better(k, best, spare);
         }
     }
@@ -177,9 +197,12 @@ int ctn_chol_analyze(chol *c, ctn_ordering ord)
     ctn_chol_quot q;
     memset(k, 0, sizeof k);
     memset(&q, 0, sizeof q);
+    size_t n = c->A->ncol;
+    SuiteSparse_long *perm = NULL;
     int rc = CTN_OK, status = CHOLMOD_OK;
     if (ord != CTN_ORDER_NATURAL) rc = ctn_chol_quotient(c, &q);
     for (int i = 0; !rc && i < 2; i++) rc = cand_alloc(&k[i], c, &q);
+    if (!rc && q.G && !(perm = ctn_malloc(c->ctx, n ? n : 1, sizeof *perm))) rc = CTN_ERR_NOMEM;
     int best = rc ? -1 : pick(c, ord, k, &status);
     if (!rc && best < 0) {
         c->cm.status = status;
@@ -187,16 +210,19 @@ int ctn_chol_analyze(chol *c, ctn_ordering ord)
     }
     if (!rc) {
         ctn_ordering kept = k[best].o;
+        if (q.G) ctn_chol_quotient_expand(&q, k[best].a[PERM], perm);
         c->cm.nmethods = 1;
         c->cm.method[0].ordering = kept == CTN_ORDER_NATURAL ? CHOLMOD_NATURAL : CHOLMOD_GIVEN;
         c->cm.postorder = kept != CTN_ORDER_NATURAL;
-        c->L = cholmod_l_analyze_p(c->A, kept == CTN_ORDER_NATURAL ? NULL : k[best].a[PERM], NULL, 0, &c->cm);
+        c->L = cholmod_l_analyze_p(c->A, kept == CTN_ORDER_NATURAL ? NULL : q.G ? perm : k[best].a[PERM], NULL, 0,
+                                   &c->cm);
         if (!c->L) rc = ctn_chol_error(c, "analysis");
         c->ordering = kept;
         c->fl = c->cm.fl;
         c->lnz = c->cm.lnz;
     }
     for (int i = 0; i < 2; i++) cand_free(&k[i]);
+    ctn_free(perm);
     ctn_chol_quotient_free(c, &q);
     return rc;
 }
