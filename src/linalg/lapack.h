@@ -17,6 +17,12 @@ void dtrsm_(const char *side, const char *uplo, const char *ta, const char *diag
             size_t lt, size_t ld);
 /* Cholesky A = R^T R (uplo "U") */
 void dpotrf_(const char *uplo, const int *n, double *a, const int *lda, int *info, size_t lu);
+/* y = alpha op(A) x + beta y */
+void dgemv_(const char *ta, const int *m, const int *n, const double *alpha, const double *a, const int *lda,
+            const double *x, const int *incx, const double *beta, double *y, const int *incy, size_t lt);
+/* The generalized symmetric-definite problem A x = lambda B x (itype 1) */
+void dsygv_(const int *itype, const char *jobz, const char *uplo, const int *n, double *a, const int *lda,
+            double *b, const int *ldb, double *w, double *work, const int *lwork, int *info, size_t lj, size_t lu);
 /* Eigenvalues (ascending) and eigenvectors of a symmetric matrix */
 void dsyev_(const char *jobz, const char *uplo, const int *n, double *a, const int *lda, double *w, double *work,
             const int *lwork, int *info, size_t lj, size_t lu);
