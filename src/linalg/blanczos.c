@@ -21,7 +21,7 @@
 #define BLZ_SPREAD 1e4      /* |theta| this much above the rest: solved apart ... */
 #define BLZ_SPLIT 1e-12     /* ... when that moves no other by more than this times
                                the largest of them */
-#define BLZ_GUARD 0.01      /* the guard pair of the second round is converged within
+#define BLZ_GUARD 0.1       /* the guard pair of the second round is converged within
                                this fraction of its gap below the wanted ones */
 #define BLZ_STALL 8         /* checks without halving the residual: the end */
 #define BLZ_MAXBLOCKS 300   /* most block expansions */
