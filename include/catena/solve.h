@@ -73,9 +73,9 @@ typedef enum ctn_mass_matrix {
 
 /* The eigen-solver of a modal analysis (docs/theory.md, "Modal analysis"). */
 typedef enum ctn_eigen_solver {
-    CTN_EIGEN_BLOCK = 0,     /* shift-invert block Lanczos: blocks of up to 16 vectors, each
-                                one multi-right-hand-side solve with the factor (the
-                                default: fewer passes over the factor) */
+    CTN_EIGEN_BLOCK = 0,     /* shift-invert block Lanczos: blocks of 4 vectors, each one
+                                multi-right-hand-side solve with the factor (fewer passes
+                                over the factor), full re-orthogonalization by BLAS-3 */
     CTN_EIGEN_ARPACK = 1     /* ARPACK's implicitly restarted Lanczos, one vector per solve */
 } ctn_eigen_solver;
 
@@ -266,8 +266,12 @@ int ctn_solution_stability(const ctn_solution *s, ctn_stability *out);
  * natural modes of K_T phi = omega^2 M phi nearest opt->shift (the lowest by default),
  * K_T the tangent there (geometric stiffness included; slack members add none), M the
  * mass (sections' mass per unstressed length, conserved under stretch; nodes' point
- * masses). Sparse shift-invert Lanczos (ARPACK's implicitly restarted Lanczos, mode 3)
- * whose solves are the problem's linear solver on K_T - sigma M, factored once.
+ * masses). Sparse shift-invert Lanczos whose solves are the problem's linear solver on
+ * K_T - sigma M, factored once (not at all when opt->shift is 0 and the stability check
+ * of the solve has just factored K_T at s: that factor serves, with sigma = 0):
+ * opt->solver CTN_EIGEN_BLOCK (the default; block Lanczos, 4 vectors per multi-right-
+ * hand-side solve; ARPACK takes over when it does not converge) or CTN_EIGEN_ARPACK
+ * (ARPACK's implicitly restarted Lanczos, mode 3). The summary says which ran.
  * The modes are stored in s (replacing earlier ones) and read back with
  * ctn_solution_mode; the writers add them to the results.
  * Modes of zero frequency (a mechanism: a node held only by slack members; a part that

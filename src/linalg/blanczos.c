@@ -288,11 +288,12 @@ static void restart(ctn_blz *z, int keep, int pending)
     z->info->restarts++;
 }
 
-/* A second round: the nev converged Ritz vectors kept (their residuals are below the
- * tolerance: dropping them leaves T exact to it) and a new random block; it ends when
- * one more pair than wanted has converged, so that an eigenvalue the first round missed
- * (one of a multiplicity above the block width, which a block Krylov space holds only
- * b copies of) has come in. */
+/* A second round, when the first found b equal eigenvalues (a block Krylov space holds
+ * at most b copies of a multiple eigenvalue: there may be more): the nev converged Ritz
+ * vectors kept (their residuals are below the tolerance: dropping them leaves T exact
+ * to it) and a new random block; it ends when one more pair than wanted has converged,
+ * so that a copy the first round missed has come in. Again until a round changes
+ * nothing. */
 static int verify(ctn_blz *z, const double *lambda, int *round)
 {
     memcpy(z->lam0, lambda, (size_t)z->nev * sizeof(double));
@@ -300,6 +301,17 @@ static int verify(ctn_blz *z, const double *lambda, int *round)
     z->need = z->nev + 1;
     ++*round;
     return start(z);
+}
+
+/* A run of b equal eigenvalues (relative 1e-8) among the nev: as many copies as a block
+ * Krylov space holds; there may be more, which it has missed. */
+static int crowded(const ctn_blz *z, const double *lambda)
+{
+    for (int k = 0, run = 1; k + 1 < z->nev; k++) {
+        run = fabs(lambda[k + 1] - lambda[k]) <= 1e-8 * fmax(fabs(lambda[k]), fabs(lambda[k + 1])) ? run + 1 : 1;
+        if (run >= z->b) return 1;
+    }
+    return 0;
 }
 
 /* The nev eigenvalues of this round are those of the last (relative 1e-9). */
@@ -327,7 +339,8 @@ static int iterate(ctn_blz *z, double *lambda)
         if ((rc = rayleigh_ritz(z, lambda))) return rc;
         double open = residuals(z, lambda);
         int done = open == 0 || z->j == z->ne;
-        if (done && (z->j == z->ne || z->nev + 1 >= z->n || (round && unchanged(z, lambda)))) return CTN_OK;
+        if (done && (z->j == z->ne || z->nev + 1 >= z->n || (round ? unchanged(z, lambda) : !crowded(z, lambda))))
+            return CTN_OK;
         if (done) {
             if ((rc = verify(z, lambda, &round))) return rc;
             stall = 0;

@@ -60,7 +60,8 @@ int ctn_eigen_shift_invert(ctn_ctx *ctx, int n, int nev, double sigma, const ctn
  * final Rayleigh-Ritz of (A, B) on the nev vectors, checked for all nev together, when
  * its true residual |A x - lambda B x| / |A x| <= 1e-10 or within 10 times the rounding
  * bound of that residual (ops->absmul; info->max_floor): double precision can show no
- * better. CTN_ERR_NOCONV when a residual stops halving for 8 checks (the Ritz pairs of
+ * better. When b of the nev eigenvalues are equal (a block Krylov space holds at most b
+ * copies) a second round from a random block checks that no copy was missed. CTN_ERR_NOCONV when a residual stops halving for 8 checks (the Ritz pairs of
  * T hold no more digits: a shift within about 1e-8 of an eigenvalue) or after 300
  * blocks. nev may equal n. */
 int ctn_eigen_block(ctn_ctx *ctx, int n, int nev, double sigma, const ctn_eigen_ops *ops, double *lambda,
