@@ -52,18 +52,19 @@ int ctn_eigen_shift_invert(ctn_ctx *ctx, int n, int nev, double sigma, const ctn
                            double *lambda, double **vecs, ctn_eigen_info *info);
 
 /* As ctn_eigen_shift_invert (same arguments, results and statuses; ops->solve_block,
- * ops->bmul and ops->amul are used): block Lanczos on (A - sigma B)^-1 B in the B inner
- * product, blocks of min(16, nev) columns (at least 2), a basis of at most
- * min(n, nev + 4 block) columns (memory: two n x that arrays, the basis and B times it),
- * thick restarts keeping nev + block / 2 Ritz vectors. A pair is converged when its Ritz
- * estimate is below 1e-14 max |theta| (theta = 1 / (lambda - sigma)) and then, after a
+ * ops->bmul, ops->amul and ops->absmul are used): block Lanczos on (A - sigma B)^-1 B in
+ * the B inner product, blocks of 4 columns (nev when fewer, at least 2), a basis of at
+ * most min(n, nev + max(nev, 64)) columns (memory: two n x that arrays, the basis and
+ * B times it), thick restarts keeping nev + 4 Ritz vectors. A pair is converged when its
+ * Ritz estimate is below 1e-12 |theta| (theta = 1 / (lambda - sigma)) and then, after a
  * final Rayleigh-Ritz of (A, B) on the nev vectors, checked for all nev together, when
  * its true residual |A x - lambda B x| / |A x| <= 1e-10 or within 10 times the rounding
  * bound of that residual (ops->absmul; info->max_floor): double precision can show no
  * better. When b of the nev eigenvalues are equal (a block Krylov space holds at most b
- * copies) a second round from a random block checks that no copy was missed. CTN_ERR_NOCONV when a residual stops halving for 8 checks (the Ritz pairs of
- * T hold no more digits: a shift within about 1e-8 of an eigenvalue) or after 300
- * blocks. nev may equal n. */
+ * copies) a second round from a random block checks that no copy was missed.
+ * CTN_ERR_NOCONV when a residual stops halving for 8 checks (the Ritz pairs of T hold
+ * no more digits: a shift within about 1e-8 of an eigenvalue) or after 300 blocks. nev
+ * may equal n. */
 int ctn_eigen_block(ctn_ctx *ctx, int n, int nev, double sigma, const ctn_eigen_ops *ops, double *lambda,
                     double **vecs, ctn_eigen_info *info);
 

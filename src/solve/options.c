@@ -25,6 +25,7 @@ void ctn_solve_options_default(ctn_solve_options *opt)
     opt->modal.mass = CTN_MASS_CONSISTENT;
     opt->modal.shift = 0;
     opt->modal.line = 0;
+    opt->modal.solver = CTN_EIGEN_BLOCK;
     opt->threads = 0;
     opt->reuse = 1;
 }
