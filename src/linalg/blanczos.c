@@ -65,9 +65,9 @@ static int blz_alloc(ctn_blz *z)
     z->Rb = ctn_calloc(c, b * b, sizeof(double));
     z->work = ctn_malloc(c, (size_t)z->lwork, sizeof(double));
     z->order = ctn_malloc(c, m, sizeof(int));
-    z->AX = ctn_malloc(c, n * (size_t)z->nev, sizeof(double));
-    z->BX = ctn_malloc(c, n * (size_t)z->nev, sizeof(double));
-    z->C = ctn_malloc(c, (size_t)z->nev * (size_t)z->nev, sizeof(double));
+    z->AX = ctn_malloc(c, n * nx, sizeof(double));
+    z->BX = ctn_malloc(c, n * nx, sizeof(double));
+    z->C = ctn_malloc(c, nx * nx, sizeof(double));
     z->lam0 = ctn_malloc(c, (size_t)z->nev, sizeof(double));
     return z->V && z->MV && z->W && z->MW && z->X && z->T && z->S && z->Y && z->theta && z->est && z->H && z->R &&
            z->Rb && z->work && z->order && z->AX && z->BX && z->C && z->lam0 ? CTN_OK : CTN_ERR_NOMEM;
@@ -87,7 +87,6 @@ static void append(ctn_blz *z, int q)
 static int start(ctn_blz *z)
 {
     int w = z->b, q = 0;
-    z->loc = 0;
     for (int c = 0; c < w; c++) {
         double *x = z->X + (size_t)z->n * (size_t)c;
         ctn_blz_random(z, z->W);
@@ -117,7 +116,6 @@ static int expand(ctn_blz *z)
     if (rc) return rc;
     z->w = w;
     z->q = q;
-    z->loc = z->ne;                                 /* the block just expanded */
     z->ne = z->j;
     append(z, q);
     return CTN_OK;
@@ -218,25 +216,31 @@ static void ritz_vectors(ctn_blz *z, const double *base, int k)
     dgemm_("N", "N", &n, &k, &ne, &one, base, &n, z->Y, &ld, &zero, z->X, &n, 1, 1);
 }
 
-/* The final Rayleigh-Ritz: Q = the nev best Ritz vectors (B Q = B V times theirs: no
- * product with B), the pencil (Q^T A Q, Q^T B Q) solved by LAPACK (dsygv: lambda
- * ascending, C B-orthonormal), so that the pairs come from A and B themselves, not from
- * T (whose entries carry the rounding of the solves). */
+/* The final Rayleigh-Ritz: X = the nev + b best Ritz vectors (B X = B V times theirs: no
+ * product with B), the pencil (X^T A X, X^T B X) solved by LAPACK (dsygv), the nev
+ * eigenvalues nearest sigma kept (lambda ascending, C B-orthonormal), so that the pairs
+ * come from A and B themselves, not from T (whose entries carry the rounding of the
+ * solves); the b more vectors complete a cluster of close eigenvalues that the nev-th
+ * would cut. */
 static int rayleigh_ritz(ctn_blz *z, double *lambda)
 {
-    const int n = z->n, k = z->nev, one_i = 1;
+    const int n = z->n, k = z->nev + z->b < z->ne ? z->nev + z->b : z->ne, one_i = 1;
     const double one = 1, zero = 0;
     double *G = z->Y, *F = z->Y + (size_t)k * (size_t)k;          /* k x k each */
     int info = 0;
+    z->p = k;
     ritz_vectors(z, z->MV, k);                                      /* B X */
     memcpy(z->BX, z->X, (size_t)n * (size_t)k * sizeof(double));
     ritz_vectors(z, z->V, k);
     for (int c = 0; c < k; c++) z->ops->amul(z->ops->ud, z->X + (size_t)n * (size_t)c, z->AX + (size_t)n * (size_t)c);
     dgemm_("T", "N", &k, &k, &n, &one, z->X, &n, z->AX, &n, &zero, G, &k, 1, 1);     /* X^T A X */
     dgemm_("T", "N", &k, &k, &n, &one, z->X, &n, z->BX, &n, &zero, F, &k, 1, 1);     /* X^T B X */
-    dsygv_(&one_i, "V", "U", &k, G, &k, F, &k, lambda, z->work, &z->lwork, &info, 1, 1);
+    dsygv_(&one_i, "V", "U", &k, G, &k, F, &k, z->est, z->work, &z->lwork, &info, 1, 1);
     if (info) return ctn_error(z->ctx, CTN_ERR_LINALG, "block eigen-solver: LAPACK dsygv failed (info %d)", info);
-    memcpy(z->C, G, (size_t)k * (size_t)k * sizeof(double));
+    int lo = 0;                                     /* the nev nearest sigma: a window */
+    while (lo + z->nev < k && fabs(z->est[lo] - z->sigma) > fabs(z->est[lo + z->nev] - z->sigma)) lo++;
+    memcpy(lambda, z->est + lo, (size_t)z->nev * sizeof(double));
+    memcpy(z->C, G + (size_t)k * (size_t)lo, (size_t)k * (size_t)z->nev * sizeof(double));
     return CTN_OK;
 }
 
@@ -245,7 +249,7 @@ static int rayleigh_ritz(ctn_blz *z, double *lambda)
  * the largest of all in info->max_residual. */
 static double residuals(ctn_blz *z, const double *lambda)
 {
-    const int n = z->n, k = z->nev, one_i = 1;
+    const int n = z->n, k = z->p, one_i = 1;
     const double one = 1, zero = 0;
     double open = 0, *Ax = z->W, *Bx = z->W + n, *x = z->W + 2 * (size_t)n;
     z->info->max_residual = 0;
@@ -284,7 +288,6 @@ static void restart(ctn_blz *z, int keep, int pending)
     for (size_t i = 0; i < k; i++) z->T[i + ld * i] = z->theta[z->order[i]];
     z->ne = (int)k;
     z->j = (int)(k + q);
-    z->loc = 0;                                     /* the kept vectors are coupled */
     z->info->restarts++;
 }
 
@@ -359,9 +362,9 @@ static int iterate(ctn_blz *z, double *lambda)
 /* The eigenvectors X C into V's first columns. */
 static void finish(ctn_blz *z)
 {
-    const int n = z->n, k = z->nev;
+    const int n = z->n, k = z->nev, p = z->p;
     const double one = 1, zero = 0;
-    dgemm_("N", "N", &n, &k, &k, &one, z->X, &n, z->C, &k, &zero, z->V, &n, 1, 1);
+    dgemm_("N", "N", &n, &k, &p, &one, z->X, &n, z->C, &p, &zero, z->V, &n, 1, 1);
 }
 
 int ctn_eigen_block(ctn_ctx *ctx, int n, int nev, double sigma, const ctn_eigen_ops *ops, double *lambda,

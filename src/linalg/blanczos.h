@@ -26,8 +26,9 @@ typedef struct ctn_blz {
     double *V, *MV;            /* n x mcap: the basis (B-orthonormal) and B V */
     double *W, *MW;            /* n x max(b, 3): a new block and B times it */
     double *X;                 /* n x max(nkeep, nev): restart and Ritz vectors */
-    double *AX, *BX;           /* n x nev: A and B times the Ritz vectors */
-    double *C;                 /* nev x nev: the final Rayleigh-Ritz's eigenvectors */
+    double *AX, *BX;           /* n x (nev + b): A and B times the Ritz vectors */
+    double *C;                 /* p x nev: the final Rayleigh-Ritz's eigenvectors */
+    int p;                     /* its Ritz vectors, min(nev + b, ne) */
     double *lam0;              /* nev: the eigenvalues of the round before */
     int need;                  /* Ritz pairs that must converge: nev, then nev + 1 */
     double *T;                 /* mcap x mcap: V^T B OP V (upper triangle) */
@@ -42,16 +43,13 @@ typedef struct ctn_blz {
     int lwork;
     int *order;                /* mcap: Ritz indices, |theta| descending */
     int j, ne;                 /* basis columns, expanded columns */
-    int loc;                   /* first column of the next expansion's first pass */
     int w;                     /* width of the last expanded block (columns of R) */
     int q;                     /* columns of the new block (rows of R) */
     unsigned long long seed;   /* random replacements of dependent columns */
 } ctn_blz;
 
-/* W (w columns) -= V (V^T B W), twice (classical Gram-Schmidt, BLAS-3): first against
- * the columns from loc (where, in exact arithmetic, all of OP V_last lies: the block
- * before, the block itself, and after a restart the Ritz vectors kept), then against
- * all; the sum of the coefficients into H (j x w). */
+/* W (w columns) -= V[:, 0:j] (V^T B W), twice (classical Gram-Schmidt, BLAS-3); the sum
+ * of the coefficients into H (j x w). */
 void ctn_blz_project(ctn_blz *z, int w);
 /* B-orthonormalize W (w columns, already projected; B W in MW): the new block's columns
  * into W[:, 0:q] (B W into MW), q <= room, and R (q x w) with W_in = V H + W_new R.
