@@ -37,8 +37,13 @@ void ctn_print_modes(FILE *out, const ctn_model *m, const ctn_solution *s)
             ms.mass == CTN_MASS_LUMPED ? "lumped" : "consistent", ms.count,
             ms.shift > 0 ? "nearest the shift" : "lowest", ms.factorizations, ms.solves, ms.lanczos_restarts,
             ms.max_residual);
-    fprintf(out, "modal time: %.3f s (tangent and mass %.3f s, factorization %.3f s, solves %.3f s)\n", ms.t_total,
-            ms.t_assemble, ms.t_factor, ms.t_solve);
+    if (ms.reused_factor) fprintf(out, "shift-invert: sigma = 0 on the stability check's factor of K_T (no factorization)\n");
+    if (ms.solver == CTN_EIGEN_ARPACK && ms.block_solves > 0)
+        fprintf(out, "eigen-solver: arpack, after the block solver did not converge in %d block solves\n", ms.block_solves);
+    else if (ms.solver == CTN_EIGEN_ARPACK) fprintf(out, "eigen-solver: arpack (one vector per solve)\n");
+    else fprintf(out, "eigen-solver: block Lanczos, blocks of %d, %d block solves\n", ms.block_size, ms.block_solves);
+    fprintf(out, "modal time: %.3f s (tangent and mass %.3f s, factorization %.3f s, solves %.3f s), CPU %.3f s "
+                 "(solves %.3f s)\n", ms.t_total, ms.t_assemble, ms.t_factor, ms.t_solve, ms.t_cpu, ms.t_solve_cpu);
     fprintf(out, "moving mass [%s]: x %.6g, y %.6g, z %.6g\n", *mu ? mu : "model units", ms.total_mass[0],
             ms.total_mass[1], ms.total_mass[2]);
     fprintf(out, "  mode %-9s %14s %12s %14s %12s %12s %12s %8s\n", "", "frequency [Hz]", "period [s]", "omega [rad/s]",

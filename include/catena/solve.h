@@ -71,6 +71,14 @@ typedef enum ctn_mass_matrix {
     CTN_MASS_LUMPED = 1      /* half of each element's mass at each of its nodes */
 } ctn_mass_matrix;
 
+/* The eigen-solver of a modal analysis (docs/theory.md, "Modal analysis"). */
+typedef enum ctn_eigen_solver {
+    CTN_EIGEN_BLOCK = 0,     /* shift-invert block Lanczos: blocks of 4 vectors, each one
+                                multi-right-hand-side solve with the factor (fewer passes
+                                over the factor), full re-orthogonalization by BLAS-3 */
+    CTN_EIGEN_ARPACK = 1     /* ARPACK's implicitly restarted Lanczos, one vector per solve */
+} ctn_eigen_solver;
+
 /* A modal analysis about a converged state: K_T phi = omega^2 M phi. */
 typedef struct ctn_modal_options {
     int count;            /* the number of modes N >= 1, at most the free DOFs that carry
@@ -79,6 +87,7 @@ typedef struct ctn_modal_options {
     double shift;         /* >= 0 [Hz]: the N modes whose frequencies are nearest it
                              (default 0: the N lowest) */
     int line;             /* the model file's `modes` line, named by its errors (0: none) */
+    ctn_eigen_solver solver; /* default CTN_EIGEN_BLOCK */
 } ctn_modal_options;
 
 /* Solver options; ctn_solve_options_default() fills the defaults. */
@@ -257,8 +266,12 @@ int ctn_solution_stability(const ctn_solution *s, ctn_stability *out);
  * natural modes of K_T phi = omega^2 M phi nearest opt->shift (the lowest by default),
  * K_T the tangent there (geometric stiffness included; slack members add none), M the
  * mass (sections' mass per unstressed length, conserved under stretch; nodes' point
- * masses). Sparse shift-invert Lanczos (ARPACK's implicitly restarted Lanczos, mode 3)
- * whose solves are the problem's linear solver on K_T - sigma M, factored once.
+ * masses). Sparse shift-invert Lanczos whose solves are the problem's linear solver on
+ * K_T - sigma M, factored once (not at all when opt->shift is 0 and the stability check
+ * of the solve has just factored K_T at s: that factor serves, with sigma = 0):
+ * opt->solver CTN_EIGEN_BLOCK (the default; block Lanczos, 4 vectors per multi-right-
+ * hand-side solve; ARPACK takes over when it does not converge) or CTN_EIGEN_ARPACK
+ * (ARPACK's implicitly restarted Lanczos, mode 3). The summary says which ran.
  * The modes are stored in s (replacing earlier ones) and read back with
  * ctn_solution_mode; the writers add them to the results.
  * Modes of zero frequency (a mechanism: a node held only by slack members; a part that
@@ -315,7 +328,8 @@ typedef struct ctn_modal_summary {
     double total_mass[3];     /* mass that moves with the free DOFs along x, y, z */
     int zero_modes;           /* modes of kind ZERO */
     int unstable_modes;       /* modes of kind UNSTABLE */
-    int lanczos_restarts;     /* ARPACK's implicit restarts */
+    int lanczos_restarts;     /* ARPACK's implicit restarts, or the block solver's thick
+                                 restarts */
     int factorizations;       /* numeric factorizations (1, 2 when LL' failed and LDL'
                                  took over) */
     int solves;               /* shift-invert solves (right-hand sides) */
@@ -324,6 +338,21 @@ typedef struct ctn_modal_summary {
     double t_factor;          /* wall seconds in the factorization(s) */
     double t_solve;           /* wall seconds in the shift-invert solves */
     double t_total;           /* wall seconds of the whole modal analysis */
+    ctn_eigen_solver solver;  /* the eigen-solver used */
+    int block_size;           /* BLOCK: columns of a block (0 for ARPACK) */
+    int block_solves;         /* BLOCK: multi-right-hand-side solves (solves counts their
+                                 columns). When the block solver did not converge (a shift
+                                 within about 1e-8 of an eigenvalue) ARPACK takes over:
+                                 solver is then ARPACK and block_solves what the block
+                                 solver spent */
+    double max_floor;         /* BLOCK: the largest rounding bound eps | |K||phi| +
+                                 omega^2 |M||phi| | / |K phi| of a mode whose residual is
+                                 above 1e-10 (0 if none): what double precision can show */
+    int reused_factor;        /* 1: no factorization: the static solve's stability check
+                                 had factored K_T at this state (LL', so K_T is positive
+                                 definite) and, without a shift, it served with sigma = 0 */
+    double t_solve_cpu;       /* CPU seconds of the process in the shift-invert solves */
+    double t_cpu;             /* CPU seconds of the process in the whole modal analysis */
 } ctn_modal_summary;
 
 /* Modes of a solution: the count (0 if no modal analysis was run) and mode k;

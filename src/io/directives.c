@@ -367,19 +367,21 @@ static int d_solve(ctn_line *l)
 
 static int d_modes(ctn_line *l)
 {
-    static const char *const masses[] = { "consistent", "lumped" };
+    static const char *const masses[] = { "consistent", "lumped" }, *const solvers[] = { "block", "arpack" };
     ctn_modal_options o = l->opt->modal;
-    int mass = (int)CTN_MASS_CONSISTENT;
+    int mass = (int)CTN_MASS_CONSISTENT, solver = (int)CTN_EIGEN_BLOCK;
     o.count = 0;
     o.shift = 0;
-    int rc = ctn_parse_positional(l, 0, "modes count=N [mass=lumped|consistent] [shift=HZ]");
+    int rc = ctn_parse_positional(l, 0, "modes count=N [mass=lumped|consistent] [shift=HZ] [solver=block|arpack]");
     if (!rc && !ctn_parse_key(l, 1, "count")) return ctn_parse_error(l, "modes: missing required key 'count='");
     if (!rc) rc = key_int(l, "count", 1, 0x7fffffff, &o.count);
     if (!rc) rc = key_word(l, "mass", masses, 2, &mass);
+    if (!rc) rc = key_word(l, "solver", solvers, 2, &solver);
     if (!rc) rc = ctn_parse_key_num(l, 1, "shift", 0, &o.shift);
     if (!rc) rc = ctn_parse_leftovers(l, 1, "modes");
     if (rc) return rc;
     o.mass = (ctn_mass_matrix)mass;
+    o.solver = (ctn_eigen_solver)solver;
     o.line = l->line;
     char msg[256];
     if (ctn_modal_options_fault(&o, msg, sizeof msg)) return ctn_parse_error(l, "%s", msg);

@@ -19,6 +19,7 @@ typedef struct chol {
     double lnz;                         /* non-zeros of L from the analysis */
     double fl;                          /* flops of one factorization, from the analysis */
     int indefinite;                     /* simplicial LDL' instead of LL' */
+    cholmod_dense *Xk, *Yk, *Ek;        /* solve2 workspace of the block solves */
 } chol;
 
 /* Record a CHOLMOD failure (status in c->cm) with its meaning in words: CTN_ERR_NOMEM

@@ -24,6 +24,9 @@ static void chol_destroy(void *impl)
     cholmod_l_free_dense(&c->X, &c->cm);
     cholmod_l_free_dense(&c->Y, &c->cm);
     cholmod_l_free_dense(&c->E, &c->cm);
+    cholmod_l_free_dense(&c->Xk, &c->cm);
+    cholmod_l_free_dense(&c->Yk, &c->cm);
+    cholmod_l_free_dense(&c->Ek, &c->cm);
     cholmod_l_finish(&c->cm);
     ctn_free(c);
 }
@@ -135,6 +138,23 @@ static int chol_solve(void *impl, const double *b, double *x)
     return CTN_OK;
 }
 
+/* X = K \ B for k columns at once: B lent to solve2 through a header of its shape; the
+ * block workspace is kept apart from the single solves' (solve2 reallocates a workspace
+ * of another shape) and is reused while k stays the same. */
+static int chol_solve_block(void *impl, const double *B, double *X, size_t k)
+{
+    chol *c = impl;
+    size_t n = c->A->nrow;
+    cholmod_dense b = *c->B;
+    b.ncol = k;
+    b.nzmax = n * k;
+    b.x = (void *)B;
+    int ok = cholmod_l_solve2(CHOLMOD_A, c->L, &b, NULL, &c->Xk, NULL, &c->Yk, &c->Ek, &c->cm);
+    if (!ok) return ctn_chol_error(c, "block solve");
+    memcpy(X, c->Xk->x, n * k * sizeof(double));
+    return CTN_OK;
+}
+
 /* Signs of D (the diagonal of a simplicial LDL' factor: each column's first entry). */
 static int ldl_inertia(void *impl, double tol, long *negative, long *zero, long *first)
 {
@@ -162,11 +182,11 @@ static double chol_flops(const void *impl) { return ((const chol *)impl)->fl; }
 const ctn_linsolve_ops ctn_cholmod_ll_ops = {
     .name = "cholmod", .indefinite = 0, .create = ll_create, .destroy = chol_destroy,
     .factor = chol_factor, .solve = chol_solve, .inertia = NULL, .ordering = chol_ordering,
-    .factor_nnz = chol_factor_nnz, .flops = chol_flops,
+    .factor_nnz = chol_factor_nnz, .flops = chol_flops, .solve_block = chol_solve_block,
 };
 
 const ctn_linsolve_ops ctn_cholmod_ldl_ops = {
     .name = "cholmod-ldl", .indefinite = 1, .create = ldl_create, .destroy = chol_destroy,
     .factor = chol_factor, .solve = chol_solve, .inertia = ldl_inertia, .ordering = chol_ordering,
-    .factor_nnz = chol_factor_nnz, .flops = chol_flops,
+    .factor_nnz = chol_factor_nnz, .flops = chol_flops, .solve_block = chol_solve_block,
 };

@@ -17,6 +17,7 @@ struct ctn_linsolve {
     const ctn_linsolve_ops *ops;
     void *impl;
     ctn_ctx *ctx;
+    size_t n;                  /* order */
     int threads;               /* asked for: n > 0, or 0 (auto) */
     int used;                  /* threads of the last factorization */
     double cpu;                /* CPU seconds of the last factorization */
@@ -48,6 +49,7 @@ int ctn_linsolve_create(ctn_ctx *ctx, const char *name, const ctn_pattern *p, ct
     if (!s) return CTN_ERR_NOMEM;
     s->ops = ops;
     s->ctx = ctx;
+    s->n = p->n;
     int rc = ops->create(ctx, p, ord, &s->impl);
     if (rc) {
         ctn_free(s);
@@ -88,6 +90,18 @@ int ctn_linsolve_solve(ctn_linsolve *s, const double *b, double *x)
     ctn_threads_saved old;
     ctn_threads_push(1, &old);
     int rc = s->ops->solve(s->impl, b, x);
+    ctn_threads_pop(&old);
+    return rc;
+}
+
+int ctn_linsolve_solve_block(ctn_linsolve *s, const double *B, double *X, size_t k)
+{
+    ctn_threads_saved old;
+    ctn_threads_push(1, &old);
+    size_t n = s->n;
+    int rc = CTN_OK;
+    if (s->ops->solve_block) rc = s->ops->solve_block(s->impl, B, X, k);
+    for (size_t j = 0; !s->ops->solve_block && !rc && j < k; j++) rc = s->ops->solve(s->impl, B + n * j, X + n * j);
     ctn_threads_pop(&old);
     return rc;
 }

@@ -42,6 +42,10 @@ typedef struct ctn_linsolve_ops {
     ctn_ordering (*ordering)(const void *impl);    /* the ordering chosen */
     size_t (*factor_nnz)(const void *impl);        /* non-zeros of the factor */
     double (*flops)(const void *impl);             /* of one numeric factorization */
+    /* Optional (NULL: column by column with solve): X = K \ B for an n x k block stored
+     * by columns (leading dimension n; X and B do not alias). One pass over the factor
+     * for all k columns: level-3 BLAS in a supernodal factor. */
+    int (*solve_block)(void *impl, const double *B, double *X, size_t k);
 } ctn_linsolve_ops;
 
 typedef struct ctn_linsolve ctn_linsolve;
@@ -58,6 +62,9 @@ const ctn_linsolve_ops *ctn_linsolve_type(const ctn_linsolve *s);
 int ctn_linsolve_factor(ctn_linsolve *s, const double *Kx, double shift, ctn_factor_info *info);
 /* x = K \ b with the last factorization (x and b may alias). */
 int ctn_linsolve_solve(ctn_linsolve *s, const double *b, double *x);
+/* X = K \ B for the n x k block B (columns, leading dimension n; X and B do not alias):
+ * the backend's block solve, else k single solves. One thread, as ctn_linsolve_solve. */
+int ctn_linsolve_solve_block(ctn_linsolve *s, const double *B, double *X, size_t k);
 /* Inertia of the last factorization (pivots within +-tol count as zero; first: the
  * column of the first non-positive one, -1 if none): CTN_ERR_INVALID if the solver
  * cannot tell. */

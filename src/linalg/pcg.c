@@ -71,3 +71,13 @@ void ctn_sym_matvec(const ctn_pattern *p, const double *Ax, const double *x, dou
         y[j] += yj;
     }
 }
+
+void ctn_sym_matvec_abs(const ctn_pattern *p, const double *Ax, const double *x, double *y)
+{
+    for (size_t j = 0; j < p->n; j++)
+        for (int k = p->colptr[j]; k < p->colptr[j + 1]; k++) {
+            size_t i = (size_t)p->rowind[k];
+            y[i] += fabs(Ax[k] * x[j]);
+            if (i != j) y[j] += fabs(Ax[k] * x[i]);
+        }
+}

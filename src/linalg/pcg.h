@@ -26,5 +26,7 @@ int ctn_pcg_solve(ctn_pcg *g, const double *b, double *x, double target, int max
                   int *iters, int *posdef);
 /* y = A x, A symmetric given by the upper triangle on pattern p with values Ax. */
 void ctn_sym_matvec(const ctn_pattern *p, const double *Ax, const double *x, double *y);
+/* y += |A| |x| (entrywise absolute values; the rounding bound of A x). */
+void ctn_sym_matvec_abs(const ctn_pattern *p, const double *Ax, const double *x, double *y);
 
 #endif

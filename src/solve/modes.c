@@ -3,6 +3,7 @@
  * problem's linear solver on the problem's pattern (LDL' on the same pattern when LL'
  * fails: an interior shift, or an unstable state). docs/theory.md, "Modal analysis". */
 #include "linalg/eigen.h"
+#include "linalg/pcg.h"
 #include "solve/modes.h"
 
 #include <math.h>
@@ -48,12 +49,21 @@ static double lambda_scale(const ctn_problem *p, const double *diag)
     return s;
 }
 
-/* Factor K - sigma M (values into md->Ax): the problem's solver, else LDL'. */
-static int factor_shifted(ctn_modal *md)
+/* Factor K - sigma M (values into md->Ax): the problem's solver, else LDL'. Without a
+ * shift, when the problem holds LL' of K_T at this state (the stability check factored
+ * it: K_T is positive definite), that factor serves with sigma = 0 instead. */
+static int factor_shifted(ctn_modal *md, const ctn_solution *s)
 {
     ctn_problem *p = md->p;
     ctn_factor_info info = { 0, -1 };
     double t0 = ctn_clock();
+    if (md->opt->shift == 0 && p->factored_at == s && p->ls && !ctn_linsolve_type(p->ls)->indefinite) {
+        md->sigma = 0;
+        md->ls = p->ls;
+        md->sum.reused_factor = 1;
+        return CTN_OK;
+    }
+    p->factored_at = NULL;
     for (size_t k = 0; k < p->a->nnz; k++) md->Ax[k] = p->Kx[k] - md->sigma * md->Mx[k];
     int rc = ctn_linsolve_factor(p->ls, md->Ax, 0.0, &info);
     md->sum.factorizations++;
@@ -75,11 +85,41 @@ static int factor_shifted(ctn_modal *md)
 static int op_solve(void *ud, const double *b, double *y)
 {
     ctn_modal *md = ud;
-    double t0 = ctn_clock();
+    double t0 = ctn_clock(), c0 = ctn_cpu_clock();
     int rc = ctn_linsolve_solve(md->ls, b, y);
     md->sum.t_solve += ctn_clock() - t0;
+    md->sum.t_solve_cpu += ctn_cpu_clock() - c0;
     md->sum.solves++;
     return rc;
+}
+
+/* Y = (K - sigma M)^-1 X for k columns: one pass over the factor. */
+static int op_solve_block(void *ud, const double *X, double *Y, int k)
+{
+    ctn_modal *md = ud;
+    double t0 = ctn_clock(), c0 = ctn_cpu_clock();
+    int rc = ctn_linsolve_solve_block(md->ls, X, Y, (size_t)k);
+    md->sum.t_solve += ctn_clock() - t0;
+    md->sum.t_solve_cpu += ctn_cpu_clock() - c0;
+    md->sum.solves += k;
+    md->sum.block_solves++;
+    return rc;
+}
+
+static void op_stiffness(void *ud, const double *x, double *y)
+{
+    ctn_modal *md = ud;
+    ctn_problem_symv(md->p, md->p->Kx, x, y);
+}
+
+/* y += |K| |x| + |lambda| |M| |x|: the rounding bound of a residual. */
+static void op_abs(void *ud, const double *x, double lambda, double *y)
+{
+    ctn_modal *md = ud;
+    ctn_pattern pat = { md->p->ndof, md->p->a->colptr, md->p->a->rowind };
+    ctn_sym_matvec_abs(&pat, md->p->Kx, x, y);
+    for (size_t q = 0; q < pat.n; q++) md->w1[q] = fabs(lambda) * x[q];
+    ctn_sym_matvec_abs(&pat, md->Mx, md->w1, y);
 }
 
 static void op_mass(void *ud, const double *x, double *y)
@@ -109,19 +149,34 @@ static void complement(ctn_modal *md, double *V, int have, double *lambda)
     lambda[have] = ctn_vec_dot(x, Mx, n);
 }
 
-/* The eigenpairs: V (n x ncv, the first count columns the modes), lambda ascending. */
+/* The eigenpairs: V (n x ncv, the first count columns the modes), lambda ascending.
+ * ARPACK finds at most n - 1 (the last one is then the complement); block Lanczos all. */
 static int eigenpairs(ctn_modal *md, double *lambda, double **V)
 {
     ctn_problem *p = md->p;
-    int n = (int)p->ndof, count = md->opt->count, nev = count < n ? count : n - 1;
-    ctn_eigen_ops ops = { md, op_solve, op_mass, md->w0 };
-    ctn_eigen_info info = { 0, 0, 0 };
+    int block = md->opt->solver == CTN_EIGEN_BLOCK;
+    int n = (int)p->ndof, count = md->opt->count, nev = count < n || block ? count : n - 1;
+    ctn_eigen_ops ops = { .ud = md, .solve = op_solve, .bmul = op_mass, .work = md->w0,
+                          .solve_block = op_solve_block, .amul = op_stiffness, .absmul = op_abs };
+    ctn_eigen_info info;
+    memset(&info, 0, sizeof info);
     int rc = CTN_OK;
-    if (nev > 0) rc = ctn_eigen_shift_invert(p->ctx, n, nev, md->sigma, &ops, lambda, V, &info);
-    else *V = ctn_malloc(p->ctx, (size_t)n, sizeof(double));
+    md->sum.solver = md->opt->solver;
+    if (nev > 0 && block) rc = ctn_eigen_block(p->ctx, n, nev, md->sigma, &ops, lambda, V, &info);
+    md->sum.block_solves = info.block_solves;
+    if (rc == CTN_ERR_NOCONV && block) {                /* ARPACK takes over (reported) */
+        ctn_ctx_clear(p->ctx);
+        md->sum.solver = CTN_EIGEN_ARPACK;
+        block = 0;
+        nev = count < n ? count : n - 1;
+    }
+    if (nev > 0 && !block) rc = ctn_eigen_shift_invert(p->ctx, n, nev, md->sigma, &ops, lambda, V, &info);
+    if (nev == 0) *V = ctn_malloc(p->ctx, (size_t)n, sizeof(double));      /* n = 1 */
     md->sum.lanczos_restarts = info.restarts;
+    md->sum.block_size = block ? info.block : 0;
     if (!rc && !*V) rc = CTN_ERR_NOMEM;
     if (!rc && nev < count) complement(md, *V, nev, lambda);
+    if (!rc && block) md->sum.max_floor = info.max_floor;
     return rc;
 }
 
@@ -171,7 +226,7 @@ int ctn_problem_modes(ctn_problem *p, ctn_solution *s, const ctn_modal_options *
         return ctn_error(p->ctx, CTN_ERR_INVALID, "ctn_problem_modes: %s", opt->count < 1 ? "count must be >= 1" : msg);
     if (s->sum.reason != CTN_CONVERGED || !s->nsteps)
         return ctn_error(p->ctx, CTN_ERR_INVALID, "ctn_problem_modes: the solution did not converge");
-    double t0 = ctn_clock(), *V = NULL;
+    double t0 = ctn_clock(), c0 = ctn_cpu_clock(), *V = NULL;
     ctn_modal md;
     memset(&md, 0, sizeof md);
     md.p = p;
@@ -181,7 +236,7 @@ int ctn_problem_modes(ctn_problem *p, ctn_solution *s, const ctn_modal_options *
     ctn_modes *res = NULL;
     int rc = modal_alloc(&md);
     if (!rc) rc = prepare(&md, s);
-    if (!rc) rc = factor_shifted(&md);
+    if (!rc) rc = factor_shifted(&md, s);
     if (!rc) rc = eigenpairs(&md, md.lambda, &V);
     if (!rc && !(res = ctn_modes_create(p->ctx, (size_t)opt->count, p->m->nodes.n))) rc = CTN_ERR_NOMEM;
     if (!rc) {
@@ -189,6 +244,7 @@ int ctn_problem_modes(ctn_problem *p, ctn_solution *s, const ctn_modal_options *
         md.sum.count = opt->count;
         ctn_modes_fill(&md, V, res);
         md.sum.t_total = ctn_clock() - t0;
+        md.sum.t_cpu = ctn_cpu_clock() - c0;
         res->sum = md.sum;
         ctn_modes_destroy(&s->modes);
         s->modes = res;

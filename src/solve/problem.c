@@ -250,6 +250,7 @@ int ctn_problem_factor(ctn_problem *p, double shift, int *posdef, long *fail_col
     p->shift = shift;
     p->last_definite = info.ok && shift == 0 && (!p->ls || !ctn_linsolve_type(p->ls)->indefinite);
     p->spd_factor = p->last_definite;
+    p->factored_at = NULL;
     return rc;
 }
 

@@ -68,6 +68,10 @@ struct ctn_problem {
     int spd_factor;            /* the factorization held is LL' of a tangent (no shift) */
     double *cg;                /* 4 ndof: conjugate-gradient workspace (reuse of the last
                                   factorization), NULL when the strategy does not reuse */
+    const ctn_solution *factored_at; /* the factor held is LL' of the tangent at this
+                                  solution's converged state (the stability check's),
+                                  which a modal analysis without a shift reuses; NULL
+                                  when it is of anything else */
 };
 
 /* ctn_problem_create without the check that every cable target is resolved (for the
@@ -154,5 +158,7 @@ double ctn_vec_norm(const double *v, size_t n);
 double ctn_vec_dot(const double *a, const double *b, size_t n);
 /* Monotonic wall clock in seconds. */
 double ctn_clock(void);
+/* CPU seconds of the process (every thread). */
+double ctn_cpu_clock(void);
 
 #endif

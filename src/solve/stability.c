@@ -91,7 +91,10 @@ int ctn_problem_stability(ctn_problem *p, const ctn_solution *s, ctn_stability *
     long col = -1;
     if (!rc) rc = ctn_problem_factor(p, 0.0, &ok, &col);
     int definite_only = !ctn_linsolve_type(p->ls)->indefinite;   /* LL': ok = definite */
-    if (!rc && ok && definite_only) out->stable = 1;
+    if (!rc && ok && definite_only) {
+        out->stable = 1;
+        p->factored_at = s;                        /* K_T at s itself: modes may reuse it */
+    }
     else if (!rc) {
         locate(p, col, out);
         rc = inertia(p, out);

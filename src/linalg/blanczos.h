@@ -1,0 +1,63 @@
+/* Internal to the block Lanczos solver: its state, shared by blanczos.c (the Lanczos
+ * process, Rayleigh-Ritz, restarts, convergence) and blanczos_orth.c (the B-orthogonal
+ * bases). Columns are of length n, column-major; the basis V holds j columns, the first
+ * ne of them expanded (the operator applied, their column of T known), the rest the
+ * pending block. */
+#ifndef CTN_LINALG_BLANCZOS_H
+#define CTN_LINALG_BLANCZOS_H
+
+#include "linalg/eigen.h"
+
+#define CTN_BLZ_BMAX 16            /* widest block */
+#define CTN_BLZ_DEFLATE 1e-10      /* a column of a projected block this much smaller
+                                      after the block's earlier columns are taken out
+                                      of it is linearly dependent on them */
+#define CTN_BLZ_CHOLQR 1e-6        /* Cholesky QR only for blocks better conditioned
+                                      than 1 / this (it squares the condition: W^T B W
+                                      holds a block of condition 1e8 to no digit) */
+
+typedef struct ctn_blz {
+    ctn_ctx *ctx;
+    const ctn_eigen_ops *ops;
+    ctn_eigen_info *info;
+    int n, nev, b, mcap;       /* order, wanted pairs, block width, most basis columns */
+    int nkeep;                 /* Ritz vectors kept by a restart */
+    double sigma;
+    double *V, *MV;            /* n x mcap: the basis (B-orthonormal) and B V */
+    double *W, *MW;            /* n x max(b, 3): a new block and B times it */
+    double *X;                 /* n x max(nkeep, nev): restart and Ritz vectors */
+    double *AX, *BX;           /* n x (nev + b): A and B times the Ritz vectors */
+    double *C;                 /* p x nev: the final Rayleigh-Ritz's eigenvectors */
+    int p;                     /* its Ritz vectors, min(nev + b, ne) */
+    double *lam0;              /* nev: the eigenvalues of the round before */
+    int need;                  /* Ritz pairs that must converge: nev, then nev + 1 */
+    double *T;                 /* mcap x mcap: V^T B OP V (upper triangle) */
+    double *S, *theta;         /* mcap x mcap, mcap: Ritz vectors and values of T */
+    double *H;                 /* mcap x 2b: coefficients of a block against V (two passes) */
+    double *Y;                 /* 2 mcap x mcap: selected Ritz vectors of T; the final
+                                  Rayleigh-Ritz's two nev x nev matrices */
+    double *R;                 /* b x b: OP V_last = V H + W_new R (rows: new columns) */
+    double *Rb;                /* b x b: scratch */
+    double *est;               /* mcap: Ritz estimates */
+    double *work;              /* lwork: LAPACK */
+    int lwork;
+    int *order;                /* mcap: Ritz indices, |theta| descending */
+    int j, ne;                 /* basis columns, expanded columns */
+    int w;                     /* width of the last expanded block (columns of R) */
+    int q;                     /* columns of the new block (rows of R) */
+    unsigned long long seed;   /* random replacements of dependent columns */
+} ctn_blz;
+
+/* W (w columns) -= V[:, 0:j] (V^T B W), twice (classical Gram-Schmidt, BLAS-3); the sum
+ * of the coefficients into H (j x w). */
+void ctn_blz_project(ctn_blz *z, int w);
+/* B-orthonormalize W (w columns, already projected; B W in MW): the new block's columns
+ * into W[:, 0:q] (B W into MW), q <= room, and R (q x w) with W_in = V H + W_new R.
+ * Cholesky QR twice; a column that is linearly dependent on the rest (or w > room) goes
+ * through Gram-Schmidt column by column, a dependent column replaced by a random vector
+ * in OP's range orthogonal to the basis while there is room. */
+int ctn_blz_orthonormalize(ctn_blz *z, int w, int room, int *q);
+/* A fixed pseudo-random vector (runs repeat exactly). */
+void ctn_blz_random(ctn_blz *z, double *x);
+
+#endif
