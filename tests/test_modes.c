@@ -454,22 +454,35 @@ static void both_solvers(const char *text, int lumped, int count)
     run_free(&r);
 }
 
+/* The default (auto) takes ARPACK below CTN_EIGEN_BLOCK_DOFS free DOFs. */
+static void test_auto_solver(void)
+{
+    static char buf[32768];
+    run r;
+    if (solve_text(&r, net_text(buf, sizeof buf, "modes count=6")) == CTN_OK) {
+        ctn_modal_summary ms;
+        CHECK(r.p->ndof < CTN_EIGEN_BLOCK_DOFS);
+        CHECK(ctn_solution_modal_summary(r.s, &ms) == CTN_OK && ms.solver == CTN_EIGEN_ARPACK && ms.block_solves == 0);
+    }
+    run_free(&r);
+}
+
 static void test_block_solver(void)
 {
     static char buf[32768];
     char line[96];
     for (int lumped = 0; lumped < 2; lumped++) {
         const char *mass = lumped ? "lumped" : "consistent";
-        snprintf(line, sizeof line, "modes count=20 mass=%s", mass);
+        snprintf(line, sizeof line, "modes count=20 mass=%s solver=block", mass);
         both_solvers(flat_net_text(buf, sizeof buf, 6, line), lumped, 20);      /* double eigenvalues */
-        snprintf(line, sizeof line, "modes count=12 mass=%s", mass);
+        snprintf(line, sizeof line, "modes count=12 mass=%s solver=block", mass);
         both_solvers(net_text(buf, sizeof buf, line), lumped, 12);              /* the hypar net */
-        snprintf(line, sizeof line, "modes count=70 mass=%s", mass);
+        snprintf(line, sizeof line, "modes count=70 mass=%s solver=block", mass);
         both_solvers(net_text(buf, sizeof buf, line), lumped, 70);              /* 70 of 75 */
         snprintf(buf, sizeof buf,
                  "units N m\nmaterial steel E=2e11 strain=engineering\nsection s material=steel A=1e-6 mass=0.01\n"
                  "node 1 0 0 0 fix=xyz\nnode 2 1 0 0 fix=xyz\ncable 1 2 section=s n=5 length=1 shape=straight "
-                 "N0=100\nmodes count=12 mass=%s\n", mass);
+                 "N0=100\nmodes count=12 mass=%s solver=block\n", mass);
         both_solvers(buf, lumped, 12);                                           /* every DOF: 12 of 12 */
     }
 }
@@ -572,6 +585,7 @@ int main(void)
     test_irvine();
     test_net_pairs();
     test_block_solver();
+    test_auto_solver();
     test_mechanism();
     test_errors();
     test_alloc_failures();

@@ -367,16 +367,16 @@ static int d_solve(ctn_line *l)
 
 static int d_modes(ctn_line *l)
 {
-    static const char *const masses[] = { "consistent", "lumped" }, *const solvers[] = { "block", "arpack" };
+    static const char *const masses[] = { "consistent", "lumped" }, *const solvers[] = { "block", "arpack", "auto" };
     ctn_modal_options o = l->opt->modal;
-    int mass = (int)CTN_MASS_CONSISTENT, solver = (int)CTN_EIGEN_BLOCK;
+    int mass = (int)CTN_MASS_CONSISTENT, solver = (int)CTN_EIGEN_AUTO;
     o.count = 0;
     o.shift = 0;
-    int rc = ctn_parse_positional(l, 0, "modes count=N [mass=lumped|consistent] [shift=HZ] [solver=block|arpack]");
+    int rc = ctn_parse_positional(l, 0, "modes count=N [mass=lumped|consistent] [shift=HZ] [solver=auto|block|arpack]");
     if (!rc && !ctn_parse_key(l, 1, "count")) return ctn_parse_error(l, "modes: missing required key 'count='");
     if (!rc) rc = key_int(l, "count", 1, 0x7fffffff, &o.count);
     if (!rc) rc = key_word(l, "mass", masses, 2, &mass);
-    if (!rc) rc = key_word(l, "solver", solvers, 2, &solver);
+    if (!rc) rc = key_word(l, "solver", solvers, 3, &solver);
     if (!rc) rc = ctn_parse_key_num(l, 1, "shift", 0, &o.shift);
     if (!rc) rc = ctn_parse_leftovers(l, 1, "modes");
     if (rc) return rc;

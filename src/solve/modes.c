@@ -154,14 +154,16 @@ static void complement(ctn_modal *md, double *V, int have, double *lambda)
 static int eigenpairs(ctn_modal *md, double *lambda, double **V)
 {
     ctn_problem *p = md->p;
-    int block = md->opt->solver == CTN_EIGEN_BLOCK;
+    ctn_eigen_solver asked = md->opt->solver;
+    if (asked == CTN_EIGEN_AUTO) asked = p->ndof >= CTN_EIGEN_BLOCK_DOFS ? CTN_EIGEN_BLOCK : CTN_EIGEN_ARPACK;
+    int block = asked == CTN_EIGEN_BLOCK;
     int n = (int)p->ndof, count = md->opt->count, nev = count < n || block ? count : n - 1;
     ctn_eigen_ops ops = { .ud = md, .solve = op_solve, .bmul = op_mass, .work = md->w0,
                           .solve_block = op_solve_block, .amul = op_stiffness, .absmul = op_abs };
     ctn_eigen_info info;
     memset(&info, 0, sizeof info);
     int rc = CTN_OK;
-    md->sum.solver = md->opt->solver;
+    md->sum.solver = asked;
     if (nev > 0 && block) rc = ctn_eigen_block(p->ctx, n, nev, md->sigma, &ops, lambda, V, &info);
     md->sum.block_solves = info.block_solves;
     if (rc == CTN_ERR_NOCONV && block) {                /* ARPACK takes over (reported) */

@@ -25,7 +25,7 @@ void ctn_solve_options_default(ctn_solve_options *opt)
     opt->modal.mass = CTN_MASS_CONSISTENT;
     opt->modal.shift = 0;
     opt->modal.line = 0;
-    opt->modal.solver = CTN_EIGEN_BLOCK;
+    opt->modal.solver = CTN_EIGEN_AUTO;
     opt->threads = 0;
     opt->reuse = 1;
 }
@@ -36,7 +36,7 @@ int ctn_modal_options_fault(const ctn_modal_options *o, char *msg, size_t size)
         return snprintf(msg, size, "modes: count must be >= 1 (got %d)", o->count), 1;
     if (o->mass != CTN_MASS_CONSISTENT && o->mass != CTN_MASS_LUMPED)
         return snprintf(msg, size, "modes: unknown mass matrix"), 1;
-    if (o->solver != CTN_EIGEN_BLOCK && o->solver != CTN_EIGEN_ARPACK)
+    if (o->solver != CTN_EIGEN_BLOCK && o->solver != CTN_EIGEN_ARPACK && o->solver != CTN_EIGEN_AUTO)
         return snprintf(msg, size, "modes: unknown eigen-solver"), 1;
     if (!(isfinite(o->shift) && o->shift >= 0))
         return snprintf(msg, size, "modes: shift must be >= 0 and finite (got %g)", o->shift), 1;
