@@ -1,10 +1,11 @@
 /* A Newton step without a new factorization: once Newton converges quadratically the
  * tangent changes little from one iterate to the next, so the Cholesky factor of the
  * last one is an excellent preconditioner for the current one: conjugate gradients on
- * K(d) dd = r, preconditioned by it, reach the exact Newton step in a few triangular
- * solves (each a fraction of a factorization's cost). The step is Newton's on the
- * current tangent, not a chord step: convergence stays quadratic to the tolerance
- * asked, and the residual is never modified. The stability of a state reached this way
+ * K(d) dd = r, preconditioned by it, reach the Newton step in a few triangular solves
+ * (each a fraction of a factorization's cost), to the accuracy the caller's forcing
+ * term asks (correct.c). The step is Newton's on the current tangent, not a chord step:
+ * convergence stays quadratic to the tolerance asked, and the residual is never
+ * modified. The stability of a state reached this way
  * is checked by a factorization of its own tangent (drive.c): the factor held is of an
  * earlier one, which may be definite where the solution is not. */
 #include "solve/problem.h"
