@@ -20,22 +20,6 @@
 
 #define MAX_REPEAT 99
 
-static double cpu_now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
-static double load_average(void)
-{
-    double l = 0;
-    FILE *f = fopen("/proc/loadavg", "r");
-    if (f && fscanf(f, "%lf", &l) != 1) l = 0;
-    if (f) fclose(f);
-    return l;
-}
-
 /* Factor K + shift I, the shift doubled until the factorization succeeds. */
 static int factor(ctn_linsolve *ls, const ctn_asm *a, const double *Kx, double *t, double *cpu)
 {

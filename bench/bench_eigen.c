@@ -29,13 +29,6 @@ typedef struct bench {
     double t_solve;
 } bench;
 
-static double cpu_now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
 static int op_solve(void *ud, const double *b, double *y)
 {
     bench *B = ud;

@@ -26,14 +26,6 @@
 enum { READ, VALIDATE, ASSEMBLER, ANALYSIS, NPHASES };
 static const char *const phase_names[NPHASES] = { "read", "validate", "asm", "analysis" };
 
-static double cpu_seconds(void)
-{
-    struct rusage ru;
-    if (getrusage(RUSAGE_SELF, &ru)) return NAN;
-    return (double)(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) +
-           1e-6 * (double)(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
-}
-
 static long long count_lines(const char *path, long long *bytes)
 {
     FILE *f = fopen(path, "rb");
@@ -61,18 +53,18 @@ static int run_once(const char *path, int no_setup, double *wall, double *cpu, s
     ctn_solve_options opt;
     if (ctn_ctx_create(&ctx)) return 2;
     double t[NPHASES + 1], c[NPHASES + 1];
-    t[0] = now(), c[0] = cpu_seconds();
+    t[0] = now(), c[0] = cpu_now();
     int rc = ctn_read_file(ctx, path, &m, &opt);
-    t[1] = now(), c[1] = cpu_seconds();
+    t[1] = now(), c[1] = cpu_now();
     if (!rc && !no_setup) rc = ctn_model_validate(m);
-    t[2] = now(), c[2] = cpu_seconds();
+    t[2] = now(), c[2] = cpu_now();
     if (!rc && !no_setup) rc = ctn_asm_create(ctx, m, &a);
-    t[3] = now(), c[3] = cpu_seconds();
+    t[3] = now(), c[3] = cpu_now();
     if (!rc && !no_setup && a->ndof) {
         ctn_pattern pat = { a->ndof, a->colptr, a->rowind };
         rc = ctn_linsolve_create(ctx, opt.linear_solver ? opt.linear_solver : "cholmod", &pat, opt.ordering, &ls);
     }
-    t[4] = now(), c[4] = cpu_seconds();
+    t[4] = now(), c[4] = cpu_now();
     for (int k = 0; k < NPHASES; k++) wall[k] = t[k + 1] - t[k], cpu[k] = c[k + 1] - c[k];
     if (rc) fprintf(stderr, "bench_read: %s\n", ctn_ctx_message(ctx));
     else {

@@ -49,14 +49,6 @@ typedef struct result {
     double rss_end;           /* peak RSS at the end [MiB] */
 } result;
 
-static double cpu_seconds(void)
-{
-    struct rusage ru;
-    if (getrusage(RUSAGE_SELF, &ru)) return NAN;
-    return (double)(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) +
-           1e-6 * (double)(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
-}
-
 static int usage(void)
 {
     fprintf(stderr, "usage: bench_write N [--dir DIR] [--repeat R] [--no-write] [--keep]\n");
@@ -108,10 +100,10 @@ static int time_writes(ctn_ctx *ctx, const bench_opts *o, const ctn_model *m,
 {
     double t[MAX_REPEAT], c[MAX_REPEAT];
     for (int k = 0; k < o->repeat; k++) {
-        double c0 = cpu_seconds(), t0 = now();
+        double c0 = cpu_now(), t0 = now();
         int rc = ctn_write_results(ctx, o->dir, m, s);
         t[k] = now() - t0;
-        c[k] = cpu_seconds() - c0;
+        c[k] = cpu_now() - c0;
         if (rc) return rc;
     }
     r->cpu_write = median(c, o->repeat);
