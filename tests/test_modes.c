@@ -50,7 +50,7 @@ static void test_element_mass(void)
     ctn_cable_props p = { .EA = 1000, .l0 = 2.5, .A = 1.0, .strain = CTN_STRAIN_GREEN_LAGRANGE, .l0_ref = 2.5, .mass = 7.5 };
     for (int lumped = 0; lumped < 2; lumped++) {
         double P[21], M[6][6];
-        ctn_cable2_ops.mass(&p, lumped, P);
+        ctn_cable2_ops.mass(&p, NULL, lumped, P);
         unpack6(P, M);
         for (int d = 0; d < 3; d++) {                  /* rigid translation along d */
             double f[6] = { 0 }, total = 0;

@@ -22,9 +22,11 @@ static void mass_visit(void *data, const ctn_asm *a, const ctn_asm_elem *el)
 {
     mass_pass *mp = data;
     const ctn_asm_block *b = el->b;
-    double *Me = a->work;                            /* nslots scratch (no eval runs) */
+    double *Me = a->work, *X = a->work + b->nslots;   /* scratch (no eval runs) */
     if (!b->ops->mass) return;                       /* a massless family */
-    b->ops->mass(el->props, mp->lumped, Me);
+    for (int i = 0; i < b->nedof / b->ops->ndof_node; i++)
+        memcpy(X + 3 * i, a->m->nodes.v[el->nodes[i]].X, 3 * sizeof(double));
+    b->ops->mass(el->props, X, mp->lumped, Me);
     for (int t = 0; t < b->nslots; t++) {
         int s = el->slot[t];
         if (!isfinite(Me[t]) && mp->bad == (size_t)-1) mp->bad = el->e;

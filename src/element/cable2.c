@@ -98,8 +98,9 @@ static double cable_stiffness(const void *props)
     return p->EA / p->l0;
 }
 
-static void cable_mass(const void *props, int lumped, double *M)
+static void cable_mass(const void *props, const double *X, int lumped, double *M)
 {
+    (void)X;
     ctn_axial_mass(((const ctn_cable_props *)props)->mass, lumped, M);
 }
 

@@ -57,6 +57,7 @@ typedef struct ctn_catenary_props {
     double up[3];       /* unit vector opposite gravity (zero without weight) */
     double l0_ref;      /* unstressed length at the reference temperature */
     double alpha;       /* thermal expansion coefficient [1/K] */
+    double mass;        /* m' l0_ref [force s^2/length]; NAN when the model cannot tell */
 } ctn_catenary_props;
 
 /* The solved catenary (or bar, W = 0) of element props at X + u, in c, with the unit

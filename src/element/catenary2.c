@@ -125,6 +125,7 @@ static void catenary_setup(const ctn_model *m, size_t e, void *props)
     p->A = s->A;
     p->W = s->w * el->l0 * g;
     p->alpha = m->materials.v[s->material].alpha;
+    p->mass = ctn_model_section_mass(m, el->section) * el->l0;
     for (int i = 0; i < 3; i++) p->up[i] = p->W > 0 ? -m->gravity[i] / g : 0;
 }
 
@@ -146,10 +147,21 @@ static void catenary_temperature(void *props, double dT)
     p->l0 = p->l0_ref * (1 + p->alpha * dT);
 }
 
+/* The mass of a cable element of the same unstressed length: the two nodes carry the
+ * span's mass (half each, lumped) or its linear interpolation along the chord
+ * (consistent). The span's own vibration between its nodes is not represented: modes of
+ * a span come from meshing it with cable elements. */
+static void catenary_mass(const void *props, const double *X, int lumped, double *M)
+{
+    (void)X;
+    ctn_axial_mass(((const ctn_catenary_props *)props)->mass, lumped, M);
+}
+
 const ctn_element_ops ctn_catenary2_ops = {
     .name = "catenary", .nnodes = 2, .ndof_node = 3, .props_size = sizeof(ctn_catenary_props),
     .flags = CTN_ELEM_SECTION | CTN_ELEM_TENSION_ONLY,
     .check = catenary_check, .setup = catenary_setup, .eval = catenary_eval, .load = catenary_load,
     .stiffness = catenary_stiffness,
     .temperature = catenary_temperature, .prestress_l0 = ctn_catenary_prestress_l0,
+    .mass = catenary_mass,
 };

@@ -79,8 +79,10 @@ typedef struct ctn_element_ops {
     /* Optional: the element's mass matrix, packed upper triangle like the tangent
      * (ctn_packed_index, ndof_node per node), lumped (1) or consistent (0). Mass is per
      * unstressed length and conserved under stretch, so the matrix does not depend on
-     * the state. NULL: the family is massless (springs). */
-    void (*mass)(const void *props, int lumped, double *M);
+     * the state; X holds the element's nodes' input coordinates (3 per node), for a
+     * family that shares its mass by reference lengths (pulley). NULL: the family is
+     * massless (springs). */
+    void (*mass)(const void *props, const double *X, int lumped, double *M);
 } ctn_element_ops;
 
 /* Entries of the packed upper triangle of an n x n matrix. */

@@ -86,6 +86,11 @@ static void pulley_setup(const ctn_model *m, size_t e, void *props)
     p->alpha = m->materials.v[m->sections.v[el->section].material].alpha;
 }
 
+static double seg_len(const double *a, const double *b)
+{
+    return hypot(hypot(b[0] - a[0], b[1] - a[1]), b[2] - a[2]);
+}
+
 /* Self-weight w l0 g, shared by the segments in proportion to their reference lengths,
  * half of each segment's share to each of its ends (the segments stay straight). */
 static void pulley_load(const ctn_model *m, size_t e, double *f)
@@ -95,12 +100,10 @@ static void pulley_load(const ctn_model *m, size_t e, double *f)
     double S = 0, w = m->sections.v[el->section].w * el->l0;
     if (w == 0) return;
     for (int j = 0; j + 1 < el->nnodes; j++) {
-        const double *a = m->nodes.v[nd[j]].X, *b = m->nodes.v[nd[j + 1]].X;
-        S += hypot(hypot(b[0] - a[0], b[1] - a[1]), b[2] - a[2]);
+        S += seg_len(m->nodes.v[nd[j]].X, m->nodes.v[nd[j + 1]].X);
     }
     for (int j = 0; j + 1 < el->nnodes; j++) {
-        const double *a = m->nodes.v[nd[j]].X, *b = m->nodes.v[nd[j + 1]].X;
-        double W = 0.5 * w * hypot(hypot(b[0] - a[0], b[1] - a[1]), b[2] - a[2]) / S;
+        double W = 0.5 * w * seg_len(m->nodes.v[nd[j]].X, m->nodes.v[nd[j + 1]].X) / S;
         for (int k = 0; k < 3; k++) {
             f[3 * (size_t)nd[j] + (size_t)k] += W * m->gravity[k];
             f[3 * (size_t)nd[j + 1] + (size_t)k] += W * m->gravity[k];
@@ -125,9 +128,27 @@ static void pulley_temperature(void *props, double dT)
     p->cable.l0 = p->l0_ref * (1 + p->alpha * dT);
 }
 
+/* The rope's mass m' l0 shared by the segments as its weight is (in proportion to their
+ * input lengths), each segment's share a two-node member's mass matrix on its ends. */
+static void pulley_mass(const void *props, const double *X, int lumped, double *M)
+{
+    const ctn_pulley_props *p = props;
+    const int n = 3 * p->nnodes;
+    double S = 0, seg[21];
+    for (int t = 0; t < ctn_packed_size(n); t++) M[t] = 0;
+    for (int j = 0; j + 1 < p->nnodes; j++) S += seg_len(X + 3 * j, X + 3 * j + 3);
+    for (int j = 0; j + 1 < p->nnodes; j++) {
+        double share = S > 0 ? seg_len(X + 3 * j, X + 3 * j + 3) / S : 1.0 / (p->nnodes - 1);
+        ctn_axial_mass(p->cable.mass * share, lumped, seg);
+        for (int a = 0; a < 6; a++)
+            for (int b = a; b < 6; b++) M[ctn_packed_index(n, 3 * j + a, 3 * j + b)] += seg[ctn_packed_index(6, a, b)];
+    }
+}
+
 const ctn_element_ops ctn_pulley_ops = {
     .name = "pulley", .nnodes = 0, .ndof_node = 3, .props_size = sizeof(ctn_pulley_props),
     .flags = CTN_ELEM_SECTION | CTN_ELEM_TENSION_ONLY,
     .check = pulley_check, .setup = pulley_setup, .eval = pulley_eval, .load = pulley_load,
     .stiffness = pulley_stiffness, .prestress_l0 = pulley_prestress_l0, .temperature = pulley_temperature,
+    .mass = pulley_mass,
 };
