@@ -7,7 +7,10 @@
  *   2 (EA / L) / m_mid, m_mid = m' L (lumped) or 2 m' L / 3 (consistent);
  * - the same line as one pulley over the middle node: the transverse pair at
  *   2 (N / l) / m_mid, m_mid = m' L / 2 or m' L / 3 (L the whole rope), and a zero mode
- *   along the rope (the node slides). */
+ *   along the rope (the node slides);
+ * - with every mode asked for, the effective masses sum to the moving mass r^T M r, which
+ *   is m_mid for either matrix (the consistent one couples part of the mass to the
+ *   supports, where it does not move). */
 #include "element/catenary.h"
 #include "element/element.h"
 #include "catena.h"
@@ -97,6 +100,17 @@ static void test_line(int pulley, int lumped)
         CHECK(ctn_solution_mode_count(r.s) == 3);
         double mmid = lumped ? mp * L / 2 : mp * L / 3;
         double wt = 2 * (N / 10) / mmid;
+        ctn_modal_summary ms;                   /* all modes: effective masses sum to it */
+        CHECK(ctn_solution_modal_summary(r.s, &ms) == CTN_OK);
+        for (int d = 0; d < 3; d++) {
+            double sum = 0;
+            for (size_t k = 0; k < 3; k++) {
+                ctn_mode md;
+                if (ctn_solution_mode(r.s, k, &md) == CTN_OK) sum += md.effective_mass[d];
+            }
+            CHECK_CLOSE(ms.total_mass[d], mmid, 1e-14, 0);
+            CHECK_CLOSE(sum, mmid, 1e-12, 0);
+        }
         if (pulley) {
             CHECK(fabs(omega2(&r, 0)) <= 1e-9 * wt);           /* sliding along the rope */
             ctn_mode md;

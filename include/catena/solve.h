@@ -330,7 +330,8 @@ typedef struct ctn_modal_summary {
     ctn_mass_matrix mass;
     double shift;             /* [Hz] as asked */
     double sigma;             /* the shift of K_T - sigma M that was factored [1/s^2] */
-    double total_mass[3];     /* mass that moves with the free DOFs along x, y, z */
+    double total_mass[3];     /* mass that moves with the free DOFs along x, y, z: r^T M r,
+                                 r their unit translation, M the analysis' mass matrix */
     int zero_modes;           /* modes of kind ZERO */
     int unstable_modes;       /* modes of kind UNSTABLE */
     int lanczos_restarts;     /* ARPACK's implicit restarts, or the block solver's thick

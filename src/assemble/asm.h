@@ -78,6 +78,12 @@ void ctn_asm_mass(const ctn_asm *a, int lumped, double *Mx);
  * with the free DOFs in x, y, z; 1 with the index of an element whose mass the model
  * cannot tell (NAN) in *bad. */
 int ctn_asm_mass_diag(const ctn_asm *a, double *diag, double tot[3], size_t *bad);
+/* r_d^T M r_d for the unit translations r_d of the free DOFs along x, y, z (Mx on the
+ * tangent's pattern, upper triangle): the mass that moves with them, which the effective
+ * masses of all modes of M sum to. With a consistent M it is less than the lumped
+ * total: the part of an element's mass coupled to a fixed node does not move with the
+ * free ones. */
+void ctn_asm_mass_moving(const ctn_asm *a, const double *Mx, double tot[3]);
 
 /* Flexible members (CTN_ELEM_FLEXIBLE) whose own material takes compression and that are
  * compressed at d (0 if an element collapsed); only those with mask[e] != 0 unless mask is

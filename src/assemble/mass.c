@@ -68,3 +68,14 @@ int ctn_asm_mass_diag(const ctn_asm *a, double *diag, double tot[3], size_t *bad
     *bad = mp.bad;
     return mp.bad != (size_t)-1;
 }
+
+void ctn_asm_mass_moving(const ctn_asm *a, const double *Mx, double tot[3])
+{
+    const int *dir = a->map.dof_dir;
+    tot[0] = tot[1] = tot[2] = 0;
+    for (size_t j = 0; j < a->ndof; j++)
+        for (size_t t = (size_t)a->colptr[j]; t < (size_t)a->colptr[j + 1]; t++) {
+            size_t i = (size_t)a->rowind[t];
+            if (dir[i] == dir[j] && dir[j] < 3) tot[dir[j]] += i == j ? Mx[t] : 2 * Mx[t];
+        }
+}
