@@ -1,14 +1,10 @@
 /* Context: error recording and checked, fault-injectable allocation. */
-#define _DEFAULT_SOURCE                  /* madvise */
 #include "core/ctx.h"
 
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 int ctn_ctx_create(ctn_ctx **out)
 {
@@ -101,31 +97,12 @@ static int alloc_refused(ctn_ctx *ctx, size_t n, size_t size)
     return 0;
 }
 
-/* A large block is backed by transparent huge pages where the system grants them on
- * request (THP "madvise" mode): the first touch of fresh memory costs a page fault per
- * page, and on a virtual machine each fault is dear (bench/RESULTS.md measures 5-8 s
- * per GiB with 4 KiB pages, about half with 2 MiB ones). Only whole 2 MiB pages inside
- * the block are advised; nothing changes where the call is refused. */
-static void *advise_large(void *p, size_t bytes)
-{
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    const uintptr_t huge = (uintptr_t)2 << 20;
-    if (p && bytes >= 8 * huge) {
-        uintptr_t lo = ((uintptr_t)p + huge - 1) & ~(huge - 1), hi = ((uintptr_t)p + bytes) & ~(huge - 1);
-        if (hi > lo) (void)madvise((void *)lo, hi - lo, MADV_HUGEPAGE);
-    }
-#else
-    (void)bytes;
-#endif
-    return p;
-}
-
 void *ctn_malloc(ctn_ctx *ctx, size_t n, size_t size)
 {
     if (alloc_refused(ctx, n, size)) return NULL;
     void *p = malloc(n * size > 0 ? n * size : 1);
     if (!p) ctn_error(ctx, CTN_ERR_NOMEM, "out of memory (%zu bytes)", n * size);
-    return advise_large(p, n * size);
+    return p;
 }
 
 void *ctn_calloc(ctn_ctx *ctx, size_t n, size_t size)
@@ -133,7 +110,7 @@ void *ctn_calloc(ctn_ctx *ctx, size_t n, size_t size)
     if (alloc_refused(ctx, n, size)) return NULL;
     void *p = calloc(n ? n : 1, size ? size : 1);
     if (!p) ctn_error(ctx, CTN_ERR_NOMEM, "out of memory (%zu bytes)", n * size);
-    return advise_large(p, n * size);
+    return p;
 }
 
 void *ctn_realloc(ctn_ctx *ctx, void *p, size_t n, size_t size)
