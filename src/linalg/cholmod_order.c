@@ -35,7 +35,8 @@ int ctn_chol_error(chol *c, const char *what)
     int s = c->cm.status;
     if (s == CHOLMOD_OUT_OF_MEMORY && c->lnz > 0)
         return ctn_error(c->ctx, CTN_ERR_NOMEM, "CHOLMOD %s failed: out of memory (status %d): the factor "
-                         "needs %.2f GB (%.0f non-zeros)", what, s, 8e-9 * c->lnz * 1.2, c->lnz);
+                         "alone needs %.2f GB (%.0f non-zeros), beyond the model and its matrix", what, s,
+                         8e-9 * c->lnz * 1.2, c->lnz);
     return ctn_error(c->ctx, s == CHOLMOD_OUT_OF_MEMORY ? CTN_ERR_NOMEM : CTN_ERR_LINALG,
                      "CHOLMOD %s failed: %s (status %d)", what, ctn_chol_status(s), s);
 }
@@ -214,6 +215,7 @@ int ctn_chol_analyze(chol *c, ctn_ordering ord)
         c->cm.nmethods = 1;
         c->cm.method[0].ordering = kept == CTN_ORDER_NATURAL ? CHOLMOD_NATURAL : CHOLMOD_GIVEN;
         c->cm.postorder = kept != CTN_ORDER_NATURAL;
+        c->lnz = k[best].lnz;              /* counted: what a failure below says it needs */
         c->L = cholmod_l_analyze_p(c->A, kept == CTN_ORDER_NATURAL ? NULL : q.G ? perm : k[best].a[PERM], NULL, 0,
                                    &c->cm);
         if (!c->L) rc = ctn_chol_error(c, "analysis");
