@@ -119,8 +119,11 @@ int ctn_model_add_element_spec(ctn_model *m, const ctn_element_spec *spec)
     int type = ctn_element_family_find(s.type ? s.type : "cable"), idx[CTN_ELEM_MAX_NODES], rc;
     if (type < 0) return ctn_model_error(m, CTN_ERR_MODEL, "unknown element type '%s'", s.type);
     if (s.id <= 0) return ctn_model_error(m, CTN_ERR_MODEL, "element id must be a positive integer (got %d)", s.id);
-    if (ctn_idmap_get(&m->element_ids, s.id) >= 0)
-        return ctn_model_error(m, CTN_ERR_MODEL, "duplicate element id %d", s.id);
+    int old = ctn_idmap_get(&m->element_ids, s.id);
+    if (old >= 0 && m->elements.v[old].line > 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "duplicate element id %d (defined on line %d)", s.id,
+                               m->elements.v[old].line);
+    if (old >= 0) return ctn_model_error(m, CTN_ERR_MODEL, "duplicate element id %d", s.id);
     ctn_element e;
     if ((rc = make_record(m, &s, type, &e, idx)) || (rc = check_room(m))) return rc;
     if (s.group && (rc = ctn_model_group_get(m, s.group, &e.group))) return rc;

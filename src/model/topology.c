@@ -10,8 +10,10 @@ int ctn_model_add_node(ctn_model *m, int id, const double X[3], unsigned fix)
 {
     if (!m || !X) return CTN_ERR_INVALID;
     if (id <= 0) return ctn_model_error(m, CTN_ERR_MODEL, "node id must be a positive integer (got %d)", id);
-    if (ctn_idmap_get(&m->node_ids, id) >= 0)
-        return ctn_model_error(m, CTN_ERR_MODEL, "duplicate node id %d", id);
+    int old = ctn_idmap_get(&m->node_ids, id);
+    if (old >= 0 && m->nodes.v[old].line > 0)       /* a cable's interior node: its line */
+        return ctn_model_error(m, CTN_ERR_MODEL, "duplicate node id %d (defined on line %d)", id, m->nodes.v[old].line);
+    if (old >= 0) return ctn_model_error(m, CTN_ERR_MODEL, "duplicate node id %d", id);
     if (!finite3(X)) return ctn_model_error(m, CTN_ERR_MODEL, "node %d: coordinates must be finite", id);
     if (fix & ~(unsigned)CTN_FIX_ALL) return ctn_model_error(m, CTN_ERR_MODEL, "node %d: bad fix flags", id);
     if (m->nodes.n >= (size_t)0x7fffffff / 3)
