@@ -204,12 +204,49 @@ static void expect_error(const char *text, int resolve, int code, const char *wh
     ctn_ctx_destroy(&ctx);
 }
 
+/* The least end tension of the level span (EA = 62 800 kN, w = 0.1 kN/m, l = 200 m) over
+ * its unstressed length, on the closed form: golden-section search. */
+static double closed_min_tension(double *Lmin)
+{
+    const double r = 0.5 * (sqrt(5.0) - 1);
+    double a = 210, b = 320, x[2] = { b - r * (b - a), a + r * (b - a) }, f[2];
+    for (int i = 0; i < 2; i++) {
+        ctn_ecatenary_in in = { 200, 0, 0.1, 2e8 * 3.14e-4, x[i] };
+        ctn_ecatenary c;
+        f[i] = ctn_ecatenary_solve(NULL, &in, &c) ? NAN : closed_quantity(&c, KIND_TENSION);
+    }
+    while (b - a > 1e-10 * b) {
+        int k = f[0] < f[1] ? 0 : 1;
+        if (k == 0) { b = x[1]; x[1] = x[0]; f[1] = f[0]; x[0] = b - r * (b - a); }
+        else        { a = x[0]; x[0] = x[1]; f[0] = f[1]; x[1] = a + r * (b - a); }
+        ctn_ecatenary_in in = { 200, 0, 0.1, 2e8 * 3.14e-4, x[k] };
+        ctn_ecatenary c;
+        f[k] = ctn_ecatenary_solve(NULL, &in, &c) ? NAN : closed_quantity(&c, KIND_TENSION);
+    }
+    *Lmin = 0.5 * (x[0] + x[1]);
+    return fmin(f[0], f[1]);
+}
+
 static void test_errors(void)
 {
     char text[1024];
     span_case level = { "gravity 0 0 -1", 0.1, 1, { 200, 0, 0 }, 200, 0 };
     expect_error(span_text(text, sizeof text, &level, "tension=5"), 1, CTN_ERR_MODEL,
                  "bad.cable:7: catenary 7: no unstressed length gives tension=5: over unstressed lengths");
+    {                                  /* the least tension it names, on the closed form */
+        ctn_ctx *cx = NULL;
+        ctn_model *mm = NULL;
+        ctn_solution *ss = NULL;
+        double Lc, Tc = closed_min_tension(&Lc), T = NAN, L = NAN;
+        ctn_ctx_create(&cx);
+        CHECK(read_resolve(cx, "bad.cable", text, 0, 0, &mm, &ss) == CTN_ERR_MODEL);
+        const char *at = strstr(ctn_ctx_message(cx), "ranges from ");
+        CHECK_MSG(at && sscanf(at, "ranges from %lf (length %lf)", &T, &L) == 2, "%s", ctn_ctx_message(cx));
+        CHECK_CLOSE(T, Tc, 1e-5, 0);                   /* printed to 6 digits */
+        CHECK_CLOSE(L, Lc, 1e-4, 0);                   /* a flat minimum */
+        ctn_model_destroy(&mm);
+        ctn_ctx_destroy(&cx);
+    }
     expect_error(span_text(text, sizeof text, &level, "sag=0.01"), 1, CTN_ERR_MODEL,
                  "bad.cable:7: catenary 7: no unstressed length gives sag=0.01 within the elastic range");
     expect_error(span_text(text, sizeof text, &level, "sag=10"), 0, CTN_ERR_INVALID,

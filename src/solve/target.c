@@ -200,29 +200,68 @@ static int not_met(targets *tg, const char *why)
                         name_of(tg, worst, name, sizeof name), target_key[c->target], c->target_value, why);
 }
 
+/* The extremum of the target between lengths a < b that bracket it (sign 1: the
+ * minimum, -1: the maximum), by golden-section search to 1e-9 of the length; *L and *q
+ * improved when it finds a better one. */
+static int refine(targets *tg, double a, double b, double sign, double *L, double *q)
+{
+    const double r = 0.5 * (sqrt(5.0) - 1);
+    double x[2] = { b - r * (b - a), a + r * (b - a) }, f[2];
+    for (int i = 0; i < 2; i++) {
+        int ok = 0, rc;
+        set_length(tg, 0, x[i]);
+        if ((rc = solve_at(tg, &ok))) return rc;
+        if (!ok) return CTN_OK;                          /* keep the sampled value */
+        f[i] = sign * quantity(tg, tg->u3, 0);
+    }
+    for (int it = 0; it < 80 && b - a > 1e-9 * b; it++) {
+        int lo = f[0] < f[1], k = lo ? 0 : 1, ok = 0, rc;   /* keep the better half */
+        if (lo) { b = x[1]; x[1] = x[0]; f[1] = f[0]; x[0] = b - r * (b - a); }
+        else    { a = x[0]; x[0] = x[1]; f[0] = f[1]; x[1] = a + r * (b - a); }
+        set_length(tg, 0, x[k]);
+        if ((rc = solve_at(tg, &ok))) return rc;
+        if (!ok) break;
+        f[k] = sign * quantity(tg, tg->u3, 0);
+    }
+    int k = f[0] < f[1] ? 0 : 1;
+    if (f[k] < sign * *q) {                             /* f = sign q: minimized */
+        *q = sign * f[k];
+        *L = x[k];
+    }
+    return CTN_OK;
+}
+
 /* For one target not met: the range of the target over unstressed lengths from just
- * below the chord to four chords (solved in order, each from the last), into msg. */
+ * below the chord to four chords (solved in order, each from the last), into msg; an
+ * extremum inside the range is then found to 1e-9 of its length (refine). */
 static int reachable(targets *tg, char *msg, size_t size)
 {
     static const double s[] = { -2e-3, -1e-3, -3e-4, 0, 1e-4, 3e-4, 1e-3, 3e-3, 0.01, 0.02, 0.05, 0.1,
                                 0.2, 0.35, 0.5, 0.75, 1, 1.5, 2, 3 };
+    enum { NS = sizeof s / sizeof *s };
     const ctn_cable *c = tg->rec[0];
     const double *A = tg->m->nodes.v[c->node[0]].X, *B = tg->m->nodes.v[c->node[1]].X;
     double chord = sqrt((B[0] - A[0]) * (B[0] - A[0]) + (B[1] - A[1]) * (B[1] - A[1]) + (B[2] - A[2]) * (B[2] - A[2]));
     double lo = INFINITY, hi = -INFINITY, Llo = 0, Lhi = 0, L0 = INFINITY, L1 = 0;
-    for (size_t k = 0; k < sizeof s / sizeof *s; k++) {
+    int conv[NS], klo = -1, khi = -1, rc;
+    for (int k = 0; k < NS; k++) {
         double L = chord * (1 + s[k]);
-        int ok = 0;
+        conv[k] = 0;
         set_length(tg, 0, L);
-        int rc = solve_at(tg, &ok);
-        if (rc) return rc;
-        if (!ok) continue;
+        if ((rc = solve_at(tg, &conv[k]))) return rc;
+        if (!conv[k]) continue;
         double q = quantity(tg, tg->u3, 0);
         L0 = fmin(L0, L);
         L1 = fmax(L1, L);
-        if (q < lo) { lo = q; Llo = L; }
-        if (q > hi) { hi = q; Lhi = L; }
+        if (q < lo) { lo = q; Llo = L; klo = k; }
+        if (q > hi) { hi = q; Lhi = L; khi = k; }
     }
+    if (klo > 0 && klo + 1 < NS && conv[klo - 1] && conv[klo + 1] &&
+        (rc = refine(tg, chord * (1 + s[klo - 1]), chord * (1 + s[klo + 1]), 1, &Llo, &lo)))
+        return rc;
+    if (khi > 0 && khi + 1 < NS && conv[khi - 1] && conv[khi + 1] &&
+        (rc = refine(tg, chord * (1 + s[khi - 1]), chord * (1 + s[khi + 1]), -1, &Lhi, &hi)))
+        return rc;
     tg->L[0] = Llo;
     set_length(tg, 0, tg->L[0]);
     if (!(L1 > 0)) snprintf(msg, size, "the model converges with none of the lengths tried");
