@@ -147,6 +147,10 @@ void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s)
     if (sum.reason == CTN_DIVERGED_INDEFINITE)
         fprintf(out, "the tangent has a non-positive pivot at node %d, direction %c: a compressed "
                      "or unrestrained degree of freedom\n", sum.fail_node, "xyz"[sum.fail_dir]);
+    if (sum.reason == CTN_DIVERGED_MECHANISM)
+        fprintf(out, "the loads move node %d without bound along %c: nothing restrains that motion, so the model "
+                     "has no equilibrium (check the supports' fix= and the members at that node)\n",
+                sum.fail_node, "xyz"[sum.fail_dir]);
     print_notes(out, m, &sum);
     print_steps(out, m, s);
     size_t imax, imin;

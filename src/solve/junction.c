@@ -32,6 +32,7 @@
 #define CTN_JUNCTION_NEAR 1e-6          /* ... good enough for a start where Newton stalls */
 #define CTN_JUNCTION_ARMIJO 1e-4
 #define CTN_JUNCTION_HALVINGS 40
+#define CTN_JUNCTION_FAR 1e3            /* model sizes: a motion without bound */
 
 typedef struct member {
     const ctn_element_ops *ops;
@@ -320,7 +321,69 @@ static int solve_reduced(junction *j, double *d)
     return ctn_vec_norm(j->r, (size_t)nu) <= CTN_JUNCTION_NEAR * fscale;
 }
 
-/* Lay the interior nodes of each catenary chain on its curve. */
+/* The discrete chain in equilibrium with end forces H (horizontal, along ex) and Va
+ * (upward at end a): element k carries T_k = H ex - V_k up, V_k = Va - (W / L) s_k at its
+ * mid-point s_k (the lumped weights of its nodes are then balanced exactly), stretched
+ * to l0 (1 + |T_k| / EA). Marched from xa: its end in *end, its interior nodes written
+ * into d when d != NULL. 0 if a member has no tension. */
+static int march(const junction *j, const member *mb, double H, double Va, const double ex[3], const double xa[3],
+                 double end[3], double *d)
+{
+    const ctn_problem *e = j->e;
+    const ctn_catenary_props *cp = &mb->cat;
+    double s = 0;
+    for (int q = 0; q < 3; q++) end[q] = xa[q];
+    for (size_t k = 0; k < mb->count; k++) {
+        size_t el = (size_t)j->chain_e[mb->first + k];
+        double l0 = ctn_asm_block_of(e->a, el)->ops->rest_length(ctn_asm_props(e->a, el));
+        double V = Va - cp->W / cp->l0 * (s + 0.5 * l0), T[3], tn = 0;
+        for (int q = 0; q < 3; q++) {
+            T[q] = H * ex[q] - V * cp->up[q];
+            tn += T[q] * T[q];
+        }
+        tn = sqrt(tn);
+        if (!(tn > 0)) return 0;
+        for (int q = 0; q < 3; q++) end[q] += l0 * (1 + tn / cp->EA) * T[q] / tn;
+        s += l0;
+        if (d && k + 1 < mb->count) {
+            int node = j->chain_n[mb->first + k];
+            double *dn = d + ctn_dofmap_node(&e->a->map, (size_t)node);
+            for (int q = 0; q < 3; q++) dn[q] = end[q] - e->m->nodes.v[node].X[q];
+        }
+    }
+    return 1;
+}
+
+/* The chain's nodes as the discrete chain (march) whose end forces make it end at xb:
+ * from the catenary's, corrected by Newton steps with the catenary's flexibility (the
+ * discrete chain differs from it by the mesh's discretization error). The members are
+ * then stretched by their tension, where nodes on the curve itself would give chords
+ * shorter than the arcs between them: compressed members on coarse or low-tension
+ * chains. 0 if it does not close (a vertical or folded chain): the caller takes the
+ * curve's points. */
+static int shoot(const junction *j, const member *mb, const ctn_ecat *cat, const double ex[3], const double xa[3],
+                 const double xb[3], double *d)
+{
+    double H = cat->H, Vb = cat->Vb, end[3];
+    double det = cat->Fhh * cat->Fvv - cat->Fhv * cat->Fhv;
+    if (!(cat->l > 0) || !isfinite(det) || !(det > 0)) return 0;
+    for (int it = 0; it < 30; it++) {
+        if (!march(j, mb, H, cat->W - Vb, ex, xa, end, NULL)) return 0;
+        double dl = 0, dh = 0, miss = 0;
+        for (int q = 0; q < 3; q++) {
+            dl += (xb[q] - end[q]) * ex[q];
+            dh += (xb[q] - end[q]) * mb->cat.up[q];
+            miss += (xb[q] - end[q]) * (xb[q] - end[q]);
+        }
+        if (sqrt(miss) <= 1e-12 * mb->cat.l0) return march(j, mb, H, cat->W - Vb, ex, xa, end, d);
+        H += (cat->Fvv * dl - cat->Fhv * dh) / det;
+        Vb += (cat->Fhh * dh - cat->Fhv * dl) / det;
+        if (!(H > 0)) return 0;
+    }
+    return 0;
+}
+
+/* Lay the interior nodes of each catenary chain by its catenary (shoot above). */
 static void lay(junction *j, double *d)
 {
     const ctn_problem *e = j->e;
@@ -337,7 +400,8 @@ static void lay(junction *j, double *d)
             X[3 + k] = xb[k];
             u[k] = u[3 + k] = 0;
         }
-        if (ctn_catenary_state(&mb->cat, X, u, &cat, ex, &bar)) continue;
+        if (ctn_catenary_state(&mb->cat, X, u, &cat, ex, &bar) || (!bar && shoot(j, mb, &cat, ex, xa, xb, d)))
+            continue;
         for (size_t k = 0; k + 1 < mb->count; k++) {
             size_t el = (size_t)j->chain_e[mb->first + k];
             int node = j->chain_n[mb->first + k];
@@ -391,6 +455,26 @@ static int number(junction *j)
     return j->nu > 0 && j->nu <= CTN_JUNCTION_MAX_UNKNOWNS;
 }
 
+/* The reduced model did not converge. If an anchor went further than CTN_JUNCTION_FAR
+ * model sizes from its start, the potential fell without bound along a motion nothing
+ * restrains (a load on a mechanism): no equilibrium exists, which the problem records
+ * (e->mech_node, mech_dir) for the driver to report if the solve then fails. */
+static void unbounded(const junction *j, const double *d, const double *dstart)
+{
+    ctn_problem *e = j->e;
+    double far = 0;
+    for (size_t n = 0; n < e->a->nn; n++)
+        for (int k = 0; k < 3; k++) {
+            size_t at = ctn_dofmap_node(&e->a->map, n) + (size_t)k;
+            double moved = fabs(d[at] - dstart[at]);
+            if (j->unk[3 * n + (size_t)k] < 0 || !(moved > far)) continue;
+            far = moved;
+            e->mech_node = (int)n;
+            e->mech_dir = k;
+        }
+    if (!(far > CTN_JUNCTION_FAR * e->lref)) e->mech_node = e->mech_dir = -1;
+}
+
 static void release(junction *j)
 {
     void *v[] = { j->deg, j->start, j->adj, j->other, j->anchor, j->unk, j->F, j->chain_e, j->chain_n, j->mem,
@@ -438,6 +522,7 @@ int ctn_junction_place(ctn_problem *e, const double *loads, double *d, unsigned 
                         for (size_t k = 0; k < j.mem[c].count; k++) seen[j.chain_e[j.mem[c].first + k]] = 1;
                     *placed = 1;
                 } else {
+                    unbounded(&j, d, dstart);
                     memcpy(d, dstart, e->ns * sizeof(double));
                 }
             }

@@ -72,6 +72,8 @@ struct ctn_problem {
                                   solution's converged state (the stability check's),
                                   which a modal analysis without a shift reuses; NULL
                                   when it is of anything else */
+    int mech_node, mech_dir;   /* the junction start found no equilibrium: the loads move
+                                  this node (index) in this direction without bound; -1 */
 };
 
 /* ctn_problem_create without the check that every cable target is resolved (for the
