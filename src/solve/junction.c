@@ -54,6 +54,7 @@ typedef struct junction {
     size_t nmem, nchain;
     int nu;                     /* unknowns */
     double *K, *r, *dx, *dsave; /* nu x nu, nu, nu, ns */
+    double *fmag;               /* nu: |member forces| summed per unknown, or NULL */
 } junction;
 
 static int is_cable(const ctn_problem *e, size_t el)
@@ -246,6 +247,7 @@ static int evaluate(junction *j, const double *d, double *pi, double *K)
             int qp = j->unk[3 * (size_t)nd[p / 3] + (size_t)(p % 3)];
             if (qp < 0) continue;
             j->r[qp] -= fe[p];
+            if (j->fmag) j->fmag[qp] += fabs(fe[p]);
             if (!K) continue;
             for (int s = 0; s < 6; s++) {
                 int qs = j->unk[3 * (size_t)nd[s / 3] + (size_t)(s % 3)];
@@ -294,8 +296,14 @@ static int solve_reduced(junction *j, double *d)
     for (size_t n = 0; n < j->e->a->nn; n++)
         for (int k = 0; k < 3; k++)
             if (j->unk[3 * n + (size_t)k] >= 0) fscale += j->F[3 * n + (size_t)k] * j->F[3 * n + (size_t)k];
-    fscale = sqrt(fscale);
-    if (!(fscale > 0) || evaluate(j, d, &pi, j->K)) return 0;
+    if (!(fscale > 0)) return 0;
+    j->fmag = j->dx;                                 /* the scale also counts the forces */
+    memset(j->fmag, 0, (size_t)nu * sizeof(double)); /* that meet at the anchors */
+    int bad = evaluate(j, d, &pi, j->K);
+    j->fmag = NULL;
+    fscale = sqrt(fscale) + ctn_vec_norm(j->dx, (size_t)nu);
+    if (bad) return 0;
+    int stalls = 0;
     for (int it = 0; it < CTN_JUNCTION_MAXIT; it++) {
         double slope = 0;
         if (ctn_vec_norm(j->r, (size_t)nu) <= CTN_JUNCTION_TOL * fscale) return 1;
@@ -312,7 +320,11 @@ static int solve_reduced(junction *j, double *d)
         }
         if (h == CTN_JUNCTION_HALVINGS) {                 /* no descent: back, more shift */
             memcpy(d, j->dsave, j->e->ns * sizeof(double));
+            if (ctn_vec_norm(j->r, (size_t)nu) <= CTN_JUNCTION_NEAR * fscale || mu > 1e12 * maxdiag)
+                break;                                    /* at round-off, or stuck */
             mu = mu > 0 ? 4 * mu : 1e-8 * maxdiag;
+        } else if (!(pnew < pi) && ++stalls >= 3) {
+            break;                                        /* steps at round-off */
         } else if (h == 0) {
             mu = mu < 1e-14 * maxdiag ? 0 : mu / 4;
         }
@@ -475,46 +487,43 @@ static void unbounded(const junction *j, const double *d, const double *dstart)
     if (!(far > CTN_JUNCTION_FAR * e->lref)) e->mech_node = e->mech_dir = -1;
 }
 
-static void release(junction *j)
-{
-    void *v[] = { j->deg, j->start, j->adj, j->other, j->anchor, j->unk, j->F, j->chain_e, j->chain_n, j->mem,
-                  j->K, j->r, j->dx, j->dsave };
-    for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
-}
-
 int ctn_junction_place(ctn_problem *e, const double *loads, double *d, unsigned char *seen, int *placed)
 {
     ctn_ctx *ctx = e->ctx;
     size_t nn = e->a->nn, ne = e->a->ne;
+    size_t nd = 3 * nn + 3 * nn + 1 + e->ns + ne + 1, nm = ne + 1;
+    size_t ni = nn + nn + 1 + 2 * ne + 1 + 3 * nn + 2 * (ne + 1);
     junction j = { .e = e };
     *placed = 0;
-    j.deg = ctn_calloc(ctx, nn, sizeof(int));
-    j.start = ctn_calloc(ctx, nn + 1, sizeof(int));
-    j.adj = ctn_calloc(ctx, 2 * ne + 1, sizeof(int));
-    j.other = ctn_calloc(ctx, nn, 1);
-    j.anchor = ctn_calloc(ctx, nn, 1);
-    j.unk = ctn_malloc(ctx, 3 * nn, sizeof(int));
-    j.F = ctn_calloc(ctx, 3 * nn, sizeof(double));
-    j.chain_e = ctn_malloc(ctx, ne + 1, sizeof(int));
-    j.chain_n = ctn_malloc(ctx, ne + 1, sizeof(int));
-    j.mem = ctn_malloc(ctx, ne + 1, sizeof(member));
-    j.r = ctn_calloc(ctx, 3 * nn + 1, sizeof(double));
-    j.dsave = ctn_malloc(ctx, e->ns + ne + 1, sizeof(double));
-    if (!j.deg || !j.start || !j.adj || !j.other || !j.anchor || !j.unk || !j.F || !j.chain_e || !j.chain_n ||
-        !j.mem || !j.r || !j.dsave) {
-        release(&j);
-        return CTN_ERR_NOMEM;
-    }
+    /* one block (the solver runs this before every solve, target searches included) */
+    unsigned char *block = ctn_calloc(ctx, nd * sizeof(double) + nm * sizeof(member) + ni * sizeof(int) + 2 * nn, 1);
+    if (!block) return CTN_ERR_NOMEM;
+    double *dp = (double *)(void *)block;
+    j.F = dp, dp += 3 * nn;
+    j.r = dp, dp += 3 * nn + 1;
+    j.dsave = dp, dp += e->ns + ne + 1;
+    j.mem = (member *)(void *)dp;
+    int *ip = (int *)(void *)(j.mem + nm);
+    j.deg = ip, ip += nn;
+    j.start = ip, ip += nn + 1;
+    j.adj = ip, ip += 2 * ne + 1;
+    j.unk = ip, ip += 3 * nn;
+    j.chain_e = ip, ip += ne + 1;
+    j.chain_n = ip, ip += ne + 1;
+    j.other = (unsigned char *)ip;
+    j.anchor = j.other + nn;
     int rc = CTN_OK;
     if (incidence(&j)) {
         anchors(&j, loads);
         memset(j.deg, 0, nn * sizeof(int));               /* reused: members per node */
         if (members(&j) && has_junction(&j, j.deg) && number(&j)) {
-            j.K = ctn_malloc(ctx, 2 * (size_t)j.nu * (size_t)j.nu, sizeof(double));
-            j.dx = ctn_malloc(ctx, (size_t)j.nu, sizeof(double));
-            double *dstart = ctn_malloc(ctx, e->ns, sizeof(double));
-            if (!j.K || !j.dx || !dstart) rc = CTN_ERR_NOMEM;
+            size_t nu = (size_t)j.nu;
+            double *work = ctn_malloc(ctx, 2 * nu * nu + nu + e->ns, sizeof(double));
+            if (!work) rc = CTN_ERR_NOMEM;
             else {
+                double *dstart = work + 2 * nu * nu + nu;
+                j.K = work;
+                j.dx = work + 2 * nu * nu;
                 memcpy(dstart, d, e->ns * sizeof(double));
                 if (solve_reduced(&j, d)) {
                     lay(&j, d);
@@ -526,9 +535,9 @@ int ctn_junction_place(ctn_problem *e, const double *loads, double *d, unsigned 
                     memcpy(d, dstart, e->ns * sizeof(double));
                 }
             }
-            ctn_free(dstart);
+            ctn_free(work);
         }
     }
-    release(&j);
+    ctn_free(block);
     return rc;
 }
