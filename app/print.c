@@ -109,7 +109,7 @@ static void print_steps(FILE *out, const ctn_model *m, const ctn_solution *s)
 static void print_notes(FILE *out, const ctn_model *m, const ctn_solve_summary *sum)
 {
     if (sum->preshaped)
-        fprintf(out, "start: %d slack chain(s) pre-shaped (on the arc of their unstressed length, or hanging along their loads)\n", sum->preshaped);
+        fprintf(out, "start: %d slack chain(s) or junction(s) pre-shaped (on the arc of their unstressed length, hanging along their loads, or on the catenaries of a junction's cables)\n", sum->preshaped);
     if (sum->relaxed)
         fprintf(out, "start: %d increment(s) began with compression cut off (relaxation)\n", sum->relaxed);
     if (sum->cuts) fprintf(out, "load increments cut back %d time(s)\n", sum->cuts);

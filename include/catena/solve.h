@@ -192,7 +192,8 @@ typedef struct ctn_solve_summary {
                              definite, 0 if not (ctn_solution_stability says why); -1 when
                              not checked (not converged) */
     int preshaped;        /* slack chains placed on the arc of their unstressed length
-                             before the first step (CTN_METHOD_AUTO) */
+                             before the first step (CTN_METHOD_AUTO), plus 1 when the
+                             junction start placed meshed cables meeting at free nodes */
     int relaxed;          /* increments that began with a compression-free relaxation
                              (CTN_METHOD_AUTO from a start with compressed members) */
     size_t ndof;          /* free DOFs */
