@@ -109,7 +109,7 @@ static void print_steps(FILE *out, const ctn_model *m, const ctn_solution *s)
 static void print_notes(FILE *out, const ctn_model *m, const ctn_solve_summary *sum)
 {
     if (sum->preshaped)
-        fprintf(out, "start: %d slack chain(s) pre-shaped (on the arc of their unstressed length, or hanging along their loads)\n", sum->preshaped);
+        fprintf(out, "start: %d slack chain(s) or junction(s) pre-shaped (on the arc of their unstressed length, hanging along their loads, or on the catenaries of a junction's cables)\n", sum->preshaped);
     if (sum->relaxed)
         fprintf(out, "start: %d increment(s) began with compression cut off (relaxation)\n", sum->relaxed);
     if (sum->cuts) fprintf(out, "load increments cut back %d time(s)\n", sum->cuts);
@@ -147,6 +147,10 @@ void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s)
     if (sum.reason == CTN_DIVERGED_INDEFINITE)
         fprintf(out, "the tangent has a non-positive pivot at node %d, direction %c: a compressed "
                      "or unrestrained degree of freedom\n", sum.fail_node, "xyz"[sum.fail_dir]);
+    if (sum.reason == CTN_DIVERGED_MECHANISM)
+        fprintf(out, "the loads move node %d without bound along %c: nothing restrains that motion, so the model "
+                     "has no equilibrium (check the supports' fix= and the members at that node)\n",
+                sum.fail_node, "xyz"[sum.fail_dir]);
     print_notes(out, m, &sum);
     print_steps(out, m, s);
     size_t imax, imin;

@@ -246,7 +246,7 @@ static void ref_summary(cJSON *root, const ctn_model *m, const ctn_solution *s, 
     cJSON *u = cJSON_AddObjectToObject(root, "units");
     cJSON_AddStringToObject(u, "force", ctn_model_force_unit(m));
     cJSON_AddStringToObject(u, "length", ctn_model_length_unit(m));
-    if (sum.reason == CTN_DIVERGED_INDEFINITE) {
+    if (sum.reason == CTN_DIVERGED_INDEFINITE || sum.reason == CTN_DIVERGED_MECHANISM) {
         ref_num(root, "fail_node", sum.fail_node, finite);
         cJSON_AddStringToObject(root, "fail_direction", (const char *[]){ "x", "y", "z" }[sum.fail_dir]);
     }

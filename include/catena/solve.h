@@ -147,12 +147,15 @@ typedef enum ctn_reason {
     CTN_DIVERGED_LINESEARCH = -4,   /* no step lowered the potential or the residual */
     CTN_DIVERGED_ARCLENGTH = -5,    /* arc-length: no real root for the load factor after
                                        cutting the arc */
-    CTN_DIVERGED_ROUNDOFF = -6      /* the Newton correction reached the resolution of the
+    CTN_DIVERGED_ROUNDOFF = -6,     /* the Newton correction reached the resolution of the
                                        coordinates with the residual above its round-off
                                        floor, or that floor is above 1e-4 of the forces
                                        meeting at the nodes: the stiffness is too large for
                                        the loads to be resolved in double precision (see
                                        residual_floor, force_scale) */
+    CTN_DIVERGED_MECHANISM = -7     /* no equilibrium: the loads move a free node without
+                                       bound along a direction nothing restrains (a
+                                       mechanism); see fail_node, fail_dir */
 } ctn_reason;
 
 /* Name of a reason, e.g. "converged", "tangent not positive definite". */
@@ -189,7 +192,8 @@ typedef struct ctn_solve_summary {
                              definite, 0 if not (ctn_solution_stability says why); -1 when
                              not checked (not converged) */
     int preshaped;        /* slack chains placed on the arc of their unstressed length
-                             before the first step (CTN_METHOD_AUTO) */
+                             before the first step (CTN_METHOD_AUTO), plus 1 when the
+                             junction start placed meshed cables meeting at free nodes */
     int relaxed;          /* increments that began with a compression-free relaxation
                              (CTN_METHOD_AUTO from a start with compressed members) */
     size_t ndof;          /* free DOFs */

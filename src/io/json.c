@@ -68,7 +68,8 @@ static void put_summary(json_writer *jw, const ctn_solution *s)
     ctn_jw_string(j, "force", ctn_model_force_unit(jw->w.m));
     ctn_jw_string(j, "length", ctn_model_length_unit(jw->w.m));
     ctn_jw_end(j);
-    if (sum.reason == CTN_DIVERGED_INDEFINITE && sum.fail_dir >= 0 && sum.fail_dir < 3) {
+    if ((sum.reason == CTN_DIVERGED_INDEFINITE || sum.reason == CTN_DIVERGED_MECHANISM) && sum.fail_dir >= 0 &&
+        sum.fail_dir < 3) {
         ctn_jw_number(j, "fail_node", sum.fail_node);
         ctn_jw_string(j, "fail_direction", xyz[sum.fail_dir]);
     }

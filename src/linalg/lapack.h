@@ -26,5 +26,8 @@ void dsygv_(const int *itype, const char *jobz, const char *uplo, const int *n, 
 /* Eigenvalues (ascending) and eigenvectors of a symmetric matrix */
 void dsyev_(const char *jobz, const char *uplo, const int *n, double *a, const int *lda, double *w, double *work,
             const int *lwork, int *info, size_t lj, size_t lu);
+/* Solve A X = B with the Cholesky factor of dpotrf */
+void dpotrs_(const char *uplo, const int *n, const int *nrhs, const double *a, const int *lda, double *b,
+             const int *ldb, int *info, size_t lu);
 
 #endif

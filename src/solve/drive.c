@@ -159,12 +159,19 @@ int ctn_problem_solve(ctn_problem *p, ctn_solution **out)
     p->sum = &s->sum;
     s->sum.t_setup = p->t_setup;
     p->mode = 0;
+    p->mech_node = p->mech_dir = -1;
     if (!(d = ctn_calloc(p->ctx, p->ns, sizeof(double)))) rc = CTN_ERR_NOMEM;
     if (!rc) {
         start_state(p, d);
         if (p->strategy->preshape) rc = ctn_preshape(p, d, &s->sum.preshaped);
         if (!rc) rc = check_start(p, d);
         if (!rc) rc = p->strategy->run(p, s, d);
+        if (!rc && s->sum.reason != CTN_CONVERGED && p->mech_node >= 0) {   /* junction.c's finding */
+            s->sum.reason = CTN_DIVERGED_MECHANISM;
+            s->sum.fail_node = p->m->nodes.v[p->mech_node].id;
+            s->sum.fail_dir = p->mech_dir;
+            if (s->nsteps) s->steps[s->nsteps - 1].reason = CTN_DIVERGED_MECHANISM;
+        }
         if (!rc && s->sum.reason == CTN_CONVERGED) rc = check_stability(p, s);
         if (s->sum.reason == CTN_CONVERGED) s->sum.fail_element = 0;
         if (!rc && s->sum.reason == CTN_CONVERGED && p->opt.modal.count > 0) rc = ctn_problem_modes(p, s, &p->opt.modal);

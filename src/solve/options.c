@@ -95,6 +95,7 @@ const char *ctn_reason_name(ctn_reason r)
     case CTN_DIVERGED_LINESEARCH: return "line search failed";
     case CTN_DIVERGED_ARCLENGTH: return "arc-length step failed";
     case CTN_DIVERGED_ROUNDOFF: return "residual above its round-off floor";
+    case CTN_DIVERGED_MECHANISM: return "no equilibrium (a mechanism)";
     default: return "not solved";
     }
 }

@@ -192,7 +192,7 @@ static int weight_only(const ctn_problem *e, const ctn_cable *cb, const double *
 static int place_catenary(const ctn_problem *e, const ctn_cable *cb, chains *c, const double *loads, double *d)
 {
     const ctn_model *m = e->m;
-    if (cb->start != CTN_START_AUTO || cb->shape != CTN_SHAPE_ARC || cb->count < 2) return 0;
+    if (cb->start != CTN_START_AUTO || cb->shape != CTN_SHAPE_ARC || cb->count < 2 || c->seen[cb->first]) return 0;
     if (cb->target != CTN_TARGET_NONE && cb->resolved) return 0;   /* its start is the state found */
     if (!weight_only(e, cb, loads)) return 0;          /* the catenary of its weight is not its shape */
     const ctn_element *el = &m->elements.v[cb->first];
@@ -218,7 +218,10 @@ int ctn_preshape(ctn_problem *e, double *d, int *count)
     int rc = incidence(e, &c);
     double *loads = e->v3;                         /* the first step's dead loads */
     *count = 0;
+    int junction = 0;
     if (!rc) ctn_model_step_loads_ex(e->m, 0, 1, loads, NULL);
+    if (!rc) rc = ctn_junction_place(e, loads, d, c.seen, &junction);
+    *count += junction;
     for (size_t i = 0; !rc && i < e->m->cables.n; i++) *count += place_catenary(e, &e->m->cables.v[i], &c, loads, d);
     for (size_t i = 0; !rc && i < e->a->ne; i++) {
         if (c.seen[i]) continue;

@@ -72,6 +72,8 @@ struct ctn_problem {
                                   solution's converged state (the stability check's),
                                   which a modal analysis without a shift reuses; NULL
                                   when it is of anything else */
+    int mech_node, mech_dir;   /* the junction start found no equilibrium: the loads move
+                                  this node (index) in this direction without bound; -1 */
 };
 
 /* ctn_problem_create without the check that every cable target is resolved (for the
@@ -125,6 +127,11 @@ int ctn_arclength_run(ctn_problem *p, ctn_solution *s, double *d);
 /* Place slack chains on the arc of their unstressed length (see preshape.c); *count
  * gets the number of chains placed. */
 int ctn_preshape(ctn_problem *p, double *d, int *count);
+/* Place the free anchors of meshed cables meeting at a free node on the equilibrium of
+ * the model with each chain as one elastic catenary, and the chains on their catenaries
+ * (junction.c); loads: the first step's dead loads (3 per node); the elements placed are
+ * marked in seen; *placed = 1 if it did. */
+int ctn_junction_place(ctn_problem *p, const double *loads, double *d, unsigned char *seen, int *placed);
 
 /* 1 with a message if an option is out of range, else 0 (options.c). */
 int ctn_solve_options_fault(const ctn_solve_options *opt, char *msg, size_t size);
