@@ -1,0 +1,300 @@
+/* The node-by-node assembly of axial members (asm.h, ctn_asm_gather): instead of adding
+ * every element's 6 x 6 into the tangent through a scatter map, each node evaluates its
+ * own axial elements and writes its columns of the tangent and its internal force once,
+ * in the pattern's order. An axial member's tangent is [[k, -k], [-k, k]], so node q's
+ * diagonal block is the sum of its elements' k and its block with a lower neighbour p is
+ * minus the sum over the elements joining them: the values the scatter gives, summed in
+ * the same (model) order. Each element is evaluated at both its ends (twice the
+ * arithmetic, half the memory traffic: no zeroing, no read-modify-write, no slots), and
+ * nodes are independent, so two threads take half the nodes each. */
+#include "assemble/asm.h"
+
+#include <pthread.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#define GATHER_PARALLEL_NODES 50000   /* two threads from this many nodes (bench_floor) */
+
+/* k's upper triangle (ctn_axial_k) at (i, j) of the symmetric 3 x 3. */
+static const int sym3[3][3] = { { 0, 1, 2 }, { 1, 3, 4 }, { 2, 4, 5 } };
+
+static int is_axial(const ctn_asm_block *b)
+{
+    return b->ops->eval_axial && b->nnodes == 2 && b->ops->ndof_node == 3;
+}
+
+void ctn_asm_gather_free(ctn_asm_gather **g)
+{
+    if (!g || !*g) return;
+    ctn_free((*g)->inc_ptr);
+    ctn_free((*g)->inc);
+    ctn_free((*g)->order);
+    ctn_free((*g)->adj_ptr);
+    ctn_free((*g)->adj);
+    ctn_free((*g)->work);
+    ctn_free((*g)->kbuf);
+    ctn_free((*g)->X);
+    ctn_free(*g);
+    *g = NULL;
+}
+
+/* Count (inc == NULL: into inc_ptr[q + 1]) or list every axial element at its two ends,
+ * in model order (fill: each node's next free place). 1 if an element joins a node to
+ * itself (the path does not take it: the generic loop's collapse check does). */
+static int each_end(const ctn_asm *a, int *inc_ptr, int *fill, ctn_asm_inc *inc)
+{
+    for (size_t k = 0; k < a->nblocks; k++) {
+        const ctn_asm_block *b = &a->blocks[k];
+        if (!is_axial(b)) continue;
+        const int *conn = ctn_elem_nodes(a->m, b->e0);
+        for (size_t i = 0; i < b->count; i++) {
+            int n1 = conn[2 * i], n2 = conn[2 * i + 1], e = (int)(b->e0 + i);
+            if (n1 == n2) return 1;
+            if (!inc) {
+                inc_ptr[n1 + 1]++;
+                inc_ptr[n2 + 1]++;
+                continue;
+            }
+            inc[fill[n1]++] = (ctn_asm_inc){ e, 2 * n2, (int)k };
+            inc[fill[n2]++] = (ctn_asm_inc){ e, 2 * n1 + 1, (int)k };
+        }
+    }
+    return 0;
+}
+
+/* order: each node's elements by (other node, element), as positions in its own list. */
+static void sort_by_neighbour(ctn_asm_gather *g, size_t nn)
+{
+    for (size_t q = 0; q < nn; q++) {
+        int t0 = g->inc_ptr[q], n = g->inc_ptr[q + 1] - t0;
+        int *o = g->order + t0;
+        for (int t = 0; t < n; t++) {                  /* insertion: lists are short */
+            int v = t, s = t;
+            for (; s > 0 && g->inc[t0 + o[s - 1]].nb >> 1 > g->inc[t0 + v].nb >> 1; s--) o[s] = o[s - 1];
+            o[s] = v;
+        }
+    }
+}
+
+static int build_lists(ctn_ctx *ctx, const ctn_asm *a, ctn_asm_gather *g, size_t ends)
+{
+    int *fill = ctn_malloc(ctx, a->nn, sizeof(int));
+    g->inc = ctn_malloc(ctx, ends, sizeof(ctn_asm_inc));
+    g->order = ctn_malloc(ctx, ends, sizeof(int));
+    if (!fill || !g->inc || !g->order) {
+        ctn_free(fill);
+        return CTN_ERR_NOMEM;
+    }
+    for (size_t q = 0; q < a->nn; q++) {
+        g->inc_ptr[q + 1] += g->inc_ptr[q];
+        fill[q] = g->inc_ptr[q];
+        int deg = g->inc_ptr[q + 1] - g->inc_ptr[q];
+        if (deg > g->maxdeg) g->maxdeg = deg;
+    }
+    each_end(a, NULL, fill, g->inc);
+    ctn_free(fill);
+    sort_by_neighbour(g, a->nn);
+    return CTN_OK;
+}
+
+/* Doubles of one thread's scratch: maxdeg blocks of 6, on cache lines of its own (the
+ * threads write theirs for every element). */
+static size_t work_stride(const ctn_asm_gather *g)
+{
+    return ((size_t)g->maxdeg * 6 + 7) / 8 * 8 + 8;
+}
+
+static int gather_threads(const ctn_asm *a)
+{
+    if ((a->flags & CTN_ASM_ONE_THREAD) || a->nn < GATHER_PARALLEL_NODES) return 1;
+    return sysconf(_SC_NPROCESSORS_ONLN) >= 2 ? 2 : 1;
+}
+
+int ctn_asm_gather_build(ctn_ctx *ctx, ctn_asm *a, int **ptr, int **adj)
+{
+    size_t ends = 0;
+    int mixed = 0;
+    if ((a->flags & CTN_ASM_GENERIC) || a->map.uniform != 3 || !a->nn) return CTN_OK;
+    for (size_t k = 0; k < a->nblocks; k++) {
+        if (is_axial(&a->blocks[k])) ends += 2 * a->blocks[k].count;
+        else mixed = 1;
+    }
+    if (!ends) return CTN_OK;
+    ctn_asm_gather *g = ctn_calloc(ctx, 1, sizeof(ctn_asm_gather));
+    if (!g) return CTN_ERR_NOMEM;
+    g->mixed = mixed;
+    g->inc_ptr = ctn_calloc(ctx, a->nn + 1, sizeof(int));
+    int rc = g->inc_ptr ? CTN_OK : CTN_ERR_NOMEM;
+    if (!rc && each_end(a, g->inc_ptr, NULL, NULL)) {      /* a self-joined element */
+        ctn_asm_gather_free(&g);
+        return CTN_OK;
+    }
+    if (!rc) rc = build_lists(ctx, a, g, ends);
+    g->threads = gather_threads(a);
+    g->work = rc ? NULL : ctn_malloc(ctx, (size_t)g->threads * work_stride(g), sizeof(double));
+    g->kbuf = rc ? NULL : ctn_malloc(ctx, a->ne * 9, sizeof(double));
+    g->X = rc ? NULL : ctn_malloc(ctx, a->nn * 3, sizeof(double));
+    if (!rc && (!g->work || !g->kbuf || !g->X)) rc = CTN_ERR_NOMEM;
+    for (size_t q = 0; !rc && q < a->nn; q++) memcpy(g->X + 3 * q, a->m->nodes.v[q].X, sizeof(double[3]));
+    if (rc) {
+        ctn_asm_gather_free(&g);
+        return rc;
+    }
+    g->adj_ptr = *ptr;                                 /* taken over */
+    g->adj = *adj;
+    *ptr = *adj = NULL;
+    a->gather = g;
+    return CTN_OK;
+}
+
+/* One thread's share: nodes q0 .. q1 - 1, their columns from Kx[k0]. */
+typedef struct part {
+    const ctn_asm *a;
+    const double *d;
+    unsigned mode;
+    double *f, *Kx;
+    size_t q0, q1, k0;
+    double *w;                 /* maxdeg * 6 */
+    double U;                  /* energy of the elements whose first node is here */
+    size_t bad;                /* first collapsed element, SIZE_MAX if none */
+} part;
+
+/* Evaluate the element of incidence in at node q: the force on q into fq, on its other
+ * node into fo, its k into kk (when the tangent is asked for); 1 if it collapsed (all
+ * zero then). */
+static int eval_one(const part *pt, const ctn_asm_inc *in, size_t q, double *kk, double fq[3], double fo[3],
+                    double *energy)
+{
+    const ctn_asm *a = pt->a;
+    const ctn_asm_block *b = &a->blocks[in->blk];
+    int side = in->nb & 1;
+    size_t o = (size_t)(in->nb >> 1), n1 = side ? o : q, n2 = side ? q : o;
+    double X[6], u[6], fe[6];
+    ctn_elem_state st;
+    memcpy(X, a->gather->X + 3 * n1, sizeof(double[3]));
+    memcpy(X + 3, a->gather->X + 3 * n2, sizeof(double[3]));
+    memcpy(u, pt->d + 3 * n1, sizeof(double[3]));
+    memcpy(u + 3, pt->d + 3 * n2, sizeof(double[3]));
+    const void *props = a->props + b->props0 + ((size_t)in->e - b->e0) * b->ops->props_size;
+    int collapsed = b->ops->eval_axial(props, pt->mode, X, u, fe, pt->Kx ? kk : NULL, &st);
+    if (collapsed) {
+        memset(fe, 0, sizeof fe);
+        if (pt->Kx) memset(kk, 0, sizeof(double[6]));
+        st.energy = 0;
+    }
+    memcpy(fq, fe + 3 * side, sizeof(double[3]));
+    memcpy(fo, fe + 3 * (1 - side), sizeof(double[3]));
+    *energy = st.energy;
+    return collapsed;
+}
+
+/* Node q's elements, in model order: each evaluated at its lower node, which keeps its k
+ * and its other node's force (kbuf) for the higher one; an element whose lower node is
+ * another thread's is evaluated again here. Their k into w (list order), the force on q
+ * into f, the sum of their k into D. */
+static void node_elements(const part *pt, size_t q, double D[6], double *U, size_t *bad)
+{
+    const ctn_asm_gather *g = pt->a->gather;
+    double fq[3] = { 0, 0, 0 };
+    for (int t = g->inc_ptr[q]; t < g->inc_ptr[q + 1]; t++) {
+        const ctn_asm_inc *in = &g->inc[t];
+        size_t o = (size_t)(in->nb >> 1);
+        double *kk = pt->w + 6 * (t - g->inc_ptr[q]), *keep = g->kbuf + 9 * (size_t)in->e, fe[3];
+        if (o < q && o >= pt->q0) {                     /* kept by its lower node */
+            if (pt->Kx) memcpy(kk, keep, sizeof(double[6]));
+            memcpy(fe, keep + 6, sizeof fe);
+        } else {
+            double energy, fo[3];
+            if (eval_one(pt, in, q, kk, fe, fo, &energy) && (size_t)in->e < *bad) *bad = (size_t)in->e;
+            if (o > q) {                                /* q is its lower node */
+                if (pt->Kx) memcpy(keep, kk, sizeof(double[6]));
+                memcpy(keep + 6, fo, sizeof fo);
+                *U += energy;
+            }
+        }
+        for (int j = 0; j < 3; j++) fq[j] += fe[j];
+        if (pt->Kx)
+            for (int j = 0; j < 6; j++) D[j] += kk[j];
+    }
+    memcpy(pt->f + 3 * q, fq, sizeof fq);
+}
+
+/* Node q's columns of the tangent from Kx[k]: for each free direction j, the blocks of
+ * its lower neighbours (minus the sum of the k joining them), then its diagonal block's
+ * rows i <= j. Returns the next position. */
+static size_t node_columns(const part *pt, size_t q, const double D[6], size_t k)
+{
+    const ctn_asm *a = pt->a;
+    const ctn_asm_gather *g = a->gather;
+    const int *eq = a->map.eq, *order = g->order + g->inc_ptr[q];
+    int n = g->inc_ptr[q + 1] - g->inc_ptr[q];
+    const ctn_asm_inc *inc = g->inc + g->inc_ptr[q];
+    double *Kx = pt->Kx;
+    for (int j = 0; j < 3; j++) {
+        if (eq[3 * q + (size_t)j] < 0) continue;
+        int r = 0;
+        for (int s = g->adj_ptr[q]; g->adj[s] < (int)q; s++) {
+            int p = g->adj[s];
+            double c[3] = { 0, 0, 0 };                  /* column j of the sum of k */
+            while (r < n && inc[order[r]].nb >> 1 < p) r++;
+            for (; r < n && inc[order[r]].nb >> 1 == p; r++) {
+                const double *kk = pt->w + 6 * order[r];
+                for (int i = 0; i < 3; i++) c[i] += kk[sym3[i][j]];
+            }
+            for (int i = 0; i < 3; i++)
+                if (eq[3 * (size_t)p + (size_t)i] >= 0) Kx[k++] = -c[i];
+        }
+        for (int i = 0; i <= j; i++)
+            if (eq[3 * q + (size_t)i] >= 0) Kx[k++] = D[sym3[i][j]];
+    }
+    return k;
+}
+
+static void *run_part(void *arg)
+{
+    part *pt = arg;
+    size_t k = pt->k0, bad = SIZE_MAX;
+    double U = 0;
+    for (size_t q = pt->q0; q < pt->q1; q++) {
+        double D[6] = { 0, 0, 0, 0, 0, 0 };
+        node_elements(pt, q, D, &U, &bad);
+        if (pt->Kx) k = node_columns(pt, q, D, k);
+    }
+    pt->U = U;                                          /* once: the parts share a line */
+    pt->bad = bad;
+    return NULL;
+}
+
+/* Position in Kx of the first column of node q or a later one. */
+static size_t first_value(const ctn_asm *a, size_t q)
+{
+    for (; q < a->nn; q++)
+        for (int j = 0; j < 3; j++) {
+            int c = a->map.eq[3 * q + (size_t)j];
+            if (c >= 0) return (size_t)a->colptr[c];
+        }
+    return a->nnz;
+}
+
+int ctn_asm_gather_eval(const ctn_asm *a, const double *d, unsigned mode, double *f, double *Kx,
+                        double *U, size_t *bad)
+{
+    const ctn_asm_gather *g = a->gather;
+    part pt[2];
+    int np = g->threads;
+    for (int i = 0; i < np; i++) {
+        size_t q0 = a->nn * (size_t)i / (size_t)np;
+        pt[i] = (part){ a, d, mode, f, Kx, q0, a->nn * (size_t)(i + 1) / (size_t)np, Kx ? first_value(a, q0) : 0,
+                        g->work + (size_t)i * work_stride(g), 0.0, SIZE_MAX };
+    }
+    pthread_t t;
+    int threaded = np == 2 && !pthread_create(&t, NULL, run_part, &pt[1]);
+    run_part(&pt[0]);
+    if (threaded) pthread_join(t, NULL);
+    else if (np == 2) run_part(&pt[1]);
+    *U = pt[0].U + (np == 2 ? pt[1].U : 0.0);
+    *bad = np == 2 && pt[1].bad < pt[0].bad ? pt[1].bad : pt[0].bad;
+    return *bad != SIZE_MAX;
+}
