@@ -28,12 +28,18 @@ typedef struct ctn_asm_inc {
     int e, nb, blk;
 } ctn_asm_inc;
 
+/* An axial element's evaluation, kept for its two nodes (gather.c). */
+typedef struct ctn_asm_kept {
+    int e;                             /* the element, -1: none */
+    double k[6], f[6];                 /* k's upper triangle; the forces on its nodes */
+} ctn_asm_kept;
+
 /* The node-by-node assembly of the axial families (those with eval_axial) when every
- * node has 3 DOFs: each node evaluates its axial elements (each element twice, once per
- * end), sums its diagonal block and its internal force, and writes its columns of the
- * tangent in the pattern's order: every stored value and every force written once, no
- * zeroing and no scatter map read. The other families add theirs afterwards through the
- * generic loop (their slots then all add). */
+ * node has 3 DOFs (gather.c): each node sums its axial elements' k into its diagonal
+ * block and their forces into its internal force, and writes its columns of the tangent
+ * in the pattern's order: every stored value and every force written once, no zeroing
+ * and no scatter map read. The other families add theirs afterwards through the generic
+ * loop (their slots then all add). */
 typedef struct ctn_asm_gather {
     int *inc_ptr;                      /* nn + 1: node q's axial elements, in model order */
     ctn_asm_inc *inc;
@@ -44,8 +50,8 @@ typedef struct ctn_asm_gather {
     double *work;                      /* threads * maxdeg * 6: each node's element blocks */
     double *X;                         /* nn * 3: the nodes' reference coordinates, copied
                                           at creation as the properties are */
-    double *kbuf;                      /* ne * 9: an element's k (6) and the force on its
-                                          higher node (3), kept by its lower node */
+    ctn_asm_kept *keep;                /* threads * KEEP (gather.c): elements evaluated
+                                          for the nodes of a chunk */
     int mixed;                         /* other families too: the generic loop adds them */
 } ctn_asm_gather;
 

@@ -1,12 +1,15 @@
 /* The node-by-node assembly of axial members (asm.h, ctn_asm_gather): instead of adding
- * every element's 6 x 6 into the tangent through a scatter map, each node evaluates its
- * own axial elements and writes its columns of the tangent and its internal force once,
- * in the pattern's order. An axial member's tangent is [[k, -k], [-k, k]], so node q's
- * diagonal block is the sum of its elements' k and its block with a lower neighbour p is
- * minus the sum over the elements joining them: the values the scatter gives, summed in
- * the same (model) order. Each element is evaluated at both its ends (twice the
- * arithmetic, half the memory traffic: no zeroing, no read-modify-write, no slots), and
- * nodes are independent, so two threads take half the nodes each. */
+ * every element's 6 x 6 into the tangent through a scatter map, each node writes its
+ * columns of the tangent and its internal force once, in the pattern's order. An axial
+ * member's tangent is [[k, -k], [-k, k]], so node q's diagonal block is the sum of its
+ * elements' k and its block with a lower neighbour p is minus the sum over the elements
+ * joining them: the values the scatter gives, summed in the same (model) order, so the
+ * same bits. Nodes are taken in chunks: first the chunk's elements are evaluated (each at
+ * its lower node) into a small per-thread table, apart from the walk, so that the
+ * evaluations of consecutive elements overlap; then each node of the chunk sums and
+ * writes. No zeroing, no read-modify-write, no scatter map. Nodes are independent, so
+ * two threads take half the nodes each (an element across the halves is evaluated by
+ * both; its energy counted by its lower node's). */
 #include "assemble/asm.h"
 
 #include <pthread.h>
@@ -16,6 +19,8 @@
 #include <unistd.h>
 
 #define GATHER_PARALLEL_NODES 50000   /* two threads from this many nodes (bench_floor) */
+#define KEEP 4096                     /* elements kept per thread (448 KB: within L2) */
+#define CHUNK 64                      /* nodes evaluated, then walked */
 
 /* k's upper triangle (ctn_axial_k) at (i, j) of the symmetric 3 x 3. */
 static const int sym3[3][3] = { { 0, 1, 2 }, { 1, 3, 4 }, { 2, 4, 5 } };
@@ -34,7 +39,7 @@ void ctn_asm_gather_free(ctn_asm_gather **g)
     ctn_free((*g)->adj_ptr);
     ctn_free((*g)->adj);
     ctn_free((*g)->work);
-    ctn_free((*g)->kbuf);
+    ctn_free((*g)->keep);
     ctn_free((*g)->X);
     ctn_free(*g);
     *g = NULL;
@@ -134,9 +139,9 @@ int ctn_asm_gather_build(ctn_ctx *ctx, ctn_asm *a, int **ptr, int **adj)
     if (!rc) rc = build_lists(ctx, a, g, ends);
     g->threads = gather_threads(a);
     g->work = rc ? NULL : ctn_malloc(ctx, (size_t)g->threads * work_stride(g), sizeof(double));
-    g->kbuf = rc ? NULL : ctn_malloc(ctx, a->ne * 9, sizeof(double));
+    g->keep = rc ? NULL : ctn_malloc(ctx, (size_t)g->threads * KEEP, sizeof(ctn_asm_kept));
     g->X = rc ? NULL : ctn_malloc(ctx, a->nn * 3, sizeof(double));
-    if (!rc && (!g->work || !g->kbuf || !g->X)) rc = CTN_ERR_NOMEM;
+    if (!rc && (!g->work || !g->keep || !g->X)) rc = CTN_ERR_NOMEM;
     for (size_t q = 0; !rc && q < a->nn; q++) memcpy(g->X + 3 * q, a->m->nodes.v[q].X, sizeof(double[3]));
     if (rc) {
         ctn_asm_gather_free(&g);
@@ -157,66 +162,76 @@ typedef struct part {
     double *f, *Kx;
     size_t q0, q1, k0;
     double *w;                 /* maxdeg * 6 */
+    ctn_asm_kept *keep;        /* KEEP */
     double U;                  /* energy of the elements whose first node is here */
     size_t bad;                /* first collapsed element, SIZE_MAX if none */
 } part;
 
-/* Evaluate the element of incidence in at node q: the force on q into fq, on its other
- * node into fo, its k into kk (when the tangent is asked for); 1 if it collapsed (all
- * zero then). */
-static int eval_one(const part *pt, const ctn_asm_inc *in, size_t q, double *kk, double fq[3], double fo[3],
-                    double *energy)
+/* Evaluate the element of incidence in at node q into kept (its forces, and its k when
+ * the tangent is asked for; all zero if it collapsed, and 1 returned). */
+static int eval_one(const part *pt, const ctn_asm_inc *in, size_t q, ctn_asm_kept *kept, double *energy)
 {
     const ctn_asm *a = pt->a;
     const ctn_asm_block *b = &a->blocks[in->blk];
-    int side = in->nb & 1;
-    size_t o = (size_t)(in->nb >> 1), n1 = side ? o : q, n2 = side ? q : o;
-    double X[6], u[6], fe[6];
+    size_t o = (size_t)(in->nb >> 1), n1 = in->nb & 1 ? o : q, n2 = in->nb & 1 ? q : o;
+    double X[6], u[6];
     ctn_elem_state st;
     memcpy(X, a->gather->X + 3 * n1, sizeof(double[3]));
     memcpy(X + 3, a->gather->X + 3 * n2, sizeof(double[3]));
     memcpy(u, pt->d + 3 * n1, sizeof(double[3]));
     memcpy(u + 3, pt->d + 3 * n2, sizeof(double[3]));
     const void *props = a->props + b->props0 + ((size_t)in->e - b->e0) * b->ops->props_size;
-    int collapsed = b->ops->eval_axial(props, pt->mode, X, u, fe, pt->Kx ? kk : NULL, &st);
-    if (collapsed) {
-        memset(fe, 0, sizeof fe);
-        if (pt->Kx) memset(kk, 0, sizeof(double[6]));
-        st.energy = 0;
+    kept->e = in->e;
+    if (!b->ops->eval_axial(props, pt->mode, X, u, kept->f, pt->Kx ? kept->k : NULL, &st)) {
+        *energy = st.energy;
+        return 0;
     }
-    memcpy(fq, fe + 3 * side, sizeof(double[3]));
-    memcpy(fo, fe + 3 * (1 - side), sizeof(double[3]));
-    *energy = st.energy;
-    return collapsed;
+    memset(kept->f, 0, sizeof kept->f);
+    memset(kept->k, 0, sizeof kept->k);
+    *energy = 0;
+    return 1;
 }
 
-/* Node q's elements, in model order: each evaluated at its lower node, which keeps its k
- * and its other node's force (kbuf) for the higher one; an element whose lower node is
- * another thread's is evaluated again here. Their k into w (list order), the force on q
- * into f, the sum of their k into D. */
-static void node_elements(const part *pt, size_t q, double D[6], double *U, size_t *bad)
+/* Evaluate the elements of nodes qa .. qb - 1 that are evaluated there: at their lower
+ * node, or at the higher one when the lower is another thread's; into this thread's
+ * table (slot e mod KEEP). The energy of those evaluated at their lower node into U.
+ * Apart from the walk over the nodes, so that the evaluations (chains of divisions and a
+ * square root) of consecutive elements overlap. */
+static void eval_nodes(const part *pt, size_t qa, size_t qb, double *U, size_t *bad)
+{
+    const ctn_asm_gather *g = pt->a->gather;
+    for (size_t q = qa; q < qb; q++)
+        for (int t = g->inc_ptr[q]; t < g->inc_ptr[q + 1]; t++) {
+            const ctn_asm_inc *in = &g->inc[t];
+            size_t o = (size_t)(in->nb >> 1);
+            if (o < q && o >= pt->q0) continue;          /* evaluated at its lower node */
+            double energy;
+            if (eval_one(pt, in, q, pt->keep + (size_t)in->e % KEEP, &energy) && (size_t)in->e < *bad)
+                *bad = (size_t)in->e;
+            if (o > q) *U += energy;
+        }
+}
+
+/* Node q's elements, in model order, from the table (evaluated again if pushed out):
+ * their k into w (list order), the force on q into f, the sum of their k into D. */
+static void node_elements(const part *pt, size_t q, double D[6], size_t *bad)
 {
     const ctn_asm_gather *g = pt->a->gather;
     double fq[3] = { 0, 0, 0 };
     for (int t = g->inc_ptr[q]; t < g->inc_ptr[q + 1]; t++) {
         const ctn_asm_inc *in = &g->inc[t];
-        size_t o = (size_t)(in->nb >> 1);
-        double *kk = pt->w + 6 * (t - g->inc_ptr[q]), *keep = g->kbuf + 9 * (size_t)in->e, fe[3];
-        if (o < q && o >= pt->q0) {                     /* kept by its lower node */
-            if (pt->Kx) memcpy(kk, keep, sizeof(double[6]));
-            memcpy(fe, keep + 6, sizeof fe);
-        } else {
-            double energy, fo[3];
-            if (eval_one(pt, in, q, kk, fe, fo, &energy) && (size_t)in->e < *bad) *bad = (size_t)in->e;
-            if (o > q) {                                /* q is its lower node */
-                if (pt->Kx) memcpy(keep, kk, sizeof(double[6]));
-                memcpy(keep + 6, fo, sizeof fo);
-                *U += energy;
-            }
+        const ctn_asm_kept *kept = pt->keep + (size_t)in->e % KEEP;
+        ctn_asm_kept again;
+        double energy;
+        if (kept->e != in->e) {
+            if (eval_one(pt, in, q, &again, &energy) && (size_t)in->e < *bad) *bad = (size_t)in->e;
+            kept = &again;
         }
+        const double *fe = kept->f + 3 * (in->nb & 1);
         for (int j = 0; j < 3; j++) fq[j] += fe[j];
-        if (pt->Kx)
-            for (int j = 0; j < 6; j++) D[j] += kk[j];
+        if (!pt->Kx) continue;
+        memcpy(pt->w + 6 * (t - g->inc_ptr[q]), kept->k, sizeof kept->k);
+        for (int j = 0; j < 6; j++) D[j] += kept->k[j];
     }
     memcpy(pt->f + 3 * q, fq, sizeof fq);
 }
@@ -257,10 +272,15 @@ static void *run_part(void *arg)
     part *pt = arg;
     size_t k = pt->k0, bad = SIZE_MAX;
     double U = 0;
-    for (size_t q = pt->q0; q < pt->q1; q++) {
-        double D[6] = { 0, 0, 0, 0, 0, 0 };
-        node_elements(pt, q, D, &U, &bad);
-        if (pt->Kx) k = node_columns(pt, q, D, k);
+    for (size_t i = 0; i < KEEP; i++) pt->keep[i].e = -1;   /* nothing kept yet */
+    for (size_t qa = pt->q0; qa < pt->q1; qa += CHUNK) {
+        size_t qb = qa + CHUNK < pt->q1 ? qa + CHUNK : pt->q1;
+        eval_nodes(pt, qa, qb, &U, &bad);
+        for (size_t q = qa; q < qb; q++) {
+            double D[6] = { 0, 0, 0, 0, 0, 0 };
+            node_elements(pt, q, D, &bad);
+            if (pt->Kx) k = node_columns(pt, q, D, k);
+        }
     }
     pt->U = U;                                          /* once: the parts share a line */
     pt->bad = bad;
@@ -287,7 +307,7 @@ int ctn_asm_gather_eval(const ctn_asm *a, const double *d, unsigned mode, double
     for (int i = 0; i < np; i++) {
         size_t q0 = a->nn * (size_t)i / (size_t)np;
         pt[i] = (part){ a, d, mode, f, Kx, q0, a->nn * (size_t)(i + 1) / (size_t)np, Kx ? first_value(a, q0) : 0,
-                        g->work + (size_t)i * work_stride(g), 0.0, SIZE_MAX };
+                        g->work + (size_t)i * work_stride(g), g->keep + (size_t)i * KEEP, 0.0, SIZE_MAX };
     }
     pthread_t t;
     int threaded = np == 2 && !pthread_create(&t, NULL, run_part, &pt[1]);
