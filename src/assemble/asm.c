@@ -110,7 +110,7 @@ static inline __attribute__((always_inline)) int loop(const ctn_asm *a, const do
 {
     for (size_t k = 0; k < a->nblocks; k++) {
         const ctn_asm_block *b = &a->blocks[k];
-        if (skip_axial && b->ops->eval_axial && b->nnodes == 2) continue;
+        if (skip_axial && ctn_asm_block_axial(b)) continue;
         if (any_block(a, b, d, mode, with_K, visit, data, bad)) return 1;
     }
     return 0;

@@ -22,6 +22,12 @@ typedef struct ctn_asm_block {
     size_t slot0;              /* index of its first element's first slot */
 } ctn_asm_block;
 
+/* A block the node-by-node path takes: a family with eval_axial (two nodes of 3 DOFs). */
+static inline int ctn_asm_block_axial(const ctn_asm_block *b)
+{
+    return b->ops->eval_axial && b->nnodes == 2 && b->ops->ndof_node == 3;
+}
+
 /* An axial element at a node (gather.c): element e of block blk, whose other node is
  * nb >> 1, the node being its first (nb & 1 == 0) or second. */
 typedef struct ctn_asm_inc {
@@ -47,7 +53,8 @@ typedef struct ctn_asm_gather {
     int *adj_ptr, *adj;                /* node adjacency (self included, sorted): CSR */
     int maxdeg;                        /* most axial elements at one node */
     int threads;                       /* 1, or 2: the nodes in two halves */
-    double *work;                      /* threads * maxdeg * 6: each node's element blocks */
+    double *work;                      /* per thread maxdeg * 6 (own cache lines): a node's
+                                          elements' k */
     double *X;                         /* nn * 3: the nodes' reference coordinates, copied
                                           at creation as the properties are */
     ctn_asm_kept *keep;                /* threads * KEEP (gather.c): elements evaluated

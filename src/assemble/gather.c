@@ -25,11 +25,6 @@
 /* k's upper triangle (ctn_axial_k) at (i, j) of the symmetric 3 x 3. */
 static const int sym3[3][3] = { { 0, 1, 2 }, { 1, 3, 4 }, { 2, 4, 5 } };
 
-static int is_axial(const ctn_asm_block *b)
-{
-    return b->ops->eval_axial && b->nnodes == 2 && b->ops->ndof_node == 3;
-}
-
 void ctn_asm_gather_free(ctn_asm_gather **g)
 {
     if (!g || !*g) return;
@@ -52,7 +47,7 @@ static int each_end(const ctn_asm *a, int *inc_ptr, int *fill, ctn_asm_inc *inc)
 {
     for (size_t k = 0; k < a->nblocks; k++) {
         const ctn_asm_block *b = &a->blocks[k];
-        if (!is_axial(b)) continue;
+        if (!ctn_asm_block_axial(b)) continue;
         const int *conn = ctn_elem_nodes(a->m, b->e0);
         for (size_t i = 0; i < b->count; i++) {
             int n1 = conn[2 * i], n2 = conn[2 * i + 1], e = (int)(b->e0 + i);
@@ -123,7 +118,7 @@ int ctn_asm_gather_build(ctn_ctx *ctx, ctn_asm *a, int **ptr, int **adj)
     int mixed = 0;
     if ((a->flags & CTN_ASM_GENERIC) || a->map.uniform != 3 || !a->nn) return CTN_OK;
     for (size_t k = 0; k < a->nblocks; k++) {
-        if (is_axial(&a->blocks[k])) ends += 2 * a->blocks[k].count;
+        if (ctn_asm_block_axial(&a->blocks[k])) ends += 2 * a->blocks[k].count;
         else mixed = 1;
     }
     if (!ends) return CTN_OK;
