@@ -52,11 +52,13 @@ typedef struct ctn_asm_gather {
     int *order;                        /* per node, its list by (other node, element) */
     int *adj_ptr, *adj;                /* node adjacency (self included, sorted): CSR */
     int maxdeg;                        /* most axial elements at one node */
+    int maxadj;                        /* most neighbours of one node (self included) */
     int threads;                       /* 1, or 2: the nodes in two halves */
-    double *work;                      /* per thread maxdeg * 6 (own cache lines): a node's
-                                          elements' k */
+    double *work;                      /* per thread (maxdeg + maxadj) * 6 on its own cache
+                                          lines: a node's elements' k, its neighbours' blocks */
     double *X;                         /* nn * 3: the nodes' reference coordinates, copied
                                           at creation as the properties are */
+    unsigned char *free;               /* nn: node q's free directions, bit j for j */
     ctn_asm_kept *keep;                /* threads * KEEP (gather.c): elements evaluated
                                           for the nodes of a chunk */
     int mixed;                         /* other families too: the generic loop adds them */

@@ -36,6 +36,7 @@ void ctn_asm_gather_free(ctn_asm_gather **g)
     ctn_free((*g)->work);
     ctn_free((*g)->keep);
     ctn_free((*g)->X);
+    ctn_free((*g)->free);
     ctn_free(*g);
     *g = NULL;
 }
@@ -103,7 +104,7 @@ static int build_lists(ctn_ctx *ctx, const ctn_asm *a, ctn_asm_gather *g, size_t
  * threads write theirs for every element). */
 static size_t work_stride(const ctn_asm_gather *g)
 {
-    return ((size_t)g->maxdeg * 6 + 7) / 8 * 8 + 8;
+    return ((size_t)(g->maxdeg + g->maxadj) * 6 + 7) / 8 * 8 + 8;
 }
 
 static int gather_threads(const ctn_asm *a)
@@ -133,11 +134,19 @@ int ctn_asm_gather_build(ctn_ctx *ctx, ctn_asm *a, int **ptr, int **adj)
     }
     if (!rc) rc = build_lists(ctx, a, g, ends);
     g->threads = gather_threads(a);
+    for (size_t q = 0; q < a->nn; q++)                 /* most neighbours of a node */
+        if ((*ptr)[q + 1] - (*ptr)[q] > g->maxadj) g->maxadj = (*ptr)[q + 1] - (*ptr)[q];
     g->work = rc ? NULL : ctn_malloc(ctx, (size_t)g->threads * work_stride(g), sizeof(double));
     g->keep = rc ? NULL : ctn_malloc(ctx, (size_t)g->threads * KEEP, sizeof(ctn_asm_kept));
     g->X = rc ? NULL : ctn_malloc(ctx, a->nn * 3, sizeof(double));
     if (!rc && (!g->work || !g->keep || !g->X)) rc = CTN_ERR_NOMEM;
-    for (size_t q = 0; !rc && q < a->nn; q++) memcpy(g->X + 3 * q, a->m->nodes.v[q].X, sizeof(double[3]));
+    g->free = rc ? NULL : ctn_malloc(ctx, a->nn, 1);
+    if (!rc && !g->free) rc = CTN_ERR_NOMEM;
+    for (size_t q = 0; !rc && q < a->nn; q++) {
+        memcpy(g->X + 3 * q, a->m->nodes.v[q].X, sizeof(double[3]));
+        g->free[q] = 0;
+        for (int j = 0; j < 3; j++) g->free[q] |= (unsigned char)((a->map.eq[3 * q + (size_t)j] >= 0) << j);
+    }
     if (rc) {
         ctn_asm_gather_free(&g);
         return rc;
@@ -157,6 +166,7 @@ typedef struct part {
     double *f, *Kx;
     size_t q0, q1, k0;
     double *w;                 /* maxdeg * 6 */
+    double *S;                 /* maxadj * 6 */
     ctn_asm_kept *keep;        /* KEEP */
     double U;                  /* energy of the elements whose first node is here */
     size_t bad;                /* first collapsed element, SIZE_MAX if none */
@@ -231,34 +241,58 @@ static void node_elements(const part *pt, size_t q, double D[6], size_t *bad)
     memcpy(pt->f + 3 * q, fq, sizeof fq);
 }
 
-/* Node q's columns of the tangent from Kx[k]: for each free direction j, the blocks of
- * its lower neighbours (minus the sum of the k joining them), then its diagonal block's
- * rows i <= j. Returns the next position. */
+/* The blocks of node q's lower neighbours, in the pattern's order: the sum of the k
+ * joining each to q (in model order) into S, 6 a neighbour; returns their count. */
+static int lower_blocks(const part *pt, size_t q, double *S)
+{
+    const ctn_asm_gather *g = pt->a->gather;
+    const int *order = g->order + g->inc_ptr[q];
+    const ctn_asm_inc *inc = g->inc + g->inc_ptr[q];
+    int n = g->inc_ptr[q + 1] - g->inc_ptr[q], r = 0, nl = 0;
+    for (int s = g->adj_ptr[q]; g->adj[s] < (int)q; s++, nl++) {
+        int p = g->adj[s];
+        double *Sp = S + 6 * nl;
+        for (int i = 0; i < 6; i++) Sp[i] = 0;
+        while (r < n && inc[order[r]].nb >> 1 < p) r++;
+        for (; r < n && inc[order[r]].nb >> 1 == p; r++)
+            for (int i = 0; i < 6; i++) Sp[i] += pt->w[6 * order[r] + i];
+    }
+    return nl;
+}
+
+/* Column j of node q (a free direction) from Kx[k]: minus the blocks S of its nl lower
+ * neighbours, then its diagonal block's rows i <= j. Inline with j constant, so that the
+ * symmetric indexing folds. Returns the next position. */
+static inline __attribute__((always_inline)) size_t column(const part *pt, size_t q, int j, const double *S,
+                                                           int nl, const double D[6], size_t k)
+{
+    const ctn_asm_gather *g = pt->a->gather;
+    const int *nb = g->adj + g->adj_ptr[q];
+    double *Kx = pt->Kx;
+    for (int l = 0; l < nl; l++) {
+        unsigned fp = g->free[nb[l]];
+        const double *Sp = S + 6 * l;
+        if (fp == 7) {                                  /* the common case: all free */
+            for (int i = 0; i < 3; i++) Kx[k + (size_t)i] = -Sp[sym3[i][j]];
+            k += 3;
+            continue;
+        }
+        for (int i = 0; i < 3; i++)
+            if (fp >> i & 1) Kx[k++] = -Sp[sym3[i][j]];
+    }
+    for (int i = 0; i <= j; i++)
+        if (g->free[q] >> i & 1) Kx[k++] = D[sym3[i][j]];
+    return k;
+}
+
+/* Node q's columns of the tangent from Kx[k], its free directions in order. */
 static size_t node_columns(const part *pt, size_t q, const double D[6], size_t k)
 {
-    const ctn_asm *a = pt->a;
-    const ctn_asm_gather *g = a->gather;
-    const int *eq = a->map.eq, *order = g->order + g->inc_ptr[q];
-    int n = g->inc_ptr[q + 1] - g->inc_ptr[q];
-    const ctn_asm_inc *inc = g->inc + g->inc_ptr[q];
-    double *Kx = pt->Kx;
-    for (int j = 0; j < 3; j++) {
-        if (eq[3 * q + (size_t)j] < 0) continue;
-        int r = 0;
-        for (int s = g->adj_ptr[q]; g->adj[s] < (int)q; s++) {
-            int p = g->adj[s];
-            double c[3] = { 0, 0, 0 };                  /* column j of the sum of k */
-            while (r < n && inc[order[r]].nb >> 1 < p) r++;
-            for (; r < n && inc[order[r]].nb >> 1 == p; r++) {
-                const double *kk = pt->w + 6 * order[r];
-                for (int i = 0; i < 3; i++) c[i] += kk[sym3[i][j]];
-            }
-            for (int i = 0; i < 3; i++)
-                if (eq[3 * (size_t)p + (size_t)i] >= 0) Kx[k++] = -c[i];
-        }
-        for (int i = 0; i <= j; i++)
-            if (eq[3 * q + (size_t)i] >= 0) Kx[k++] = D[sym3[i][j]];
-    }
+    unsigned fq = pt->a->gather->free[q];
+    int nl = lower_blocks(pt, q, pt->S);
+    if (fq & 1) k = column(pt, q, 0, pt->S, nl, D, k);
+    if (fq & 2) k = column(pt, q, 1, pt->S, nl, D, k);
+    if (fq & 4) k = column(pt, q, 2, pt->S, nl, D, k);
     return k;
 }
 
@@ -302,7 +336,8 @@ int ctn_asm_gather_eval(const ctn_asm *a, const double *d, unsigned mode, double
     for (int i = 0; i < np; i++) {
         size_t q0 = a->nn * (size_t)i / (size_t)np;
         pt[i] = (part){ a, d, mode, f, Kx, q0, a->nn * (size_t)(i + 1) / (size_t)np, Kx ? first_value(a, q0) : 0,
-                        g->work + (size_t)i * work_stride(g), g->keep + (size_t)i * KEEP, 0.0, SIZE_MAX };
+                        g->work + (size_t)i * work_stride(g), g->work + (size_t)i * work_stride(g) + (size_t)g->maxdeg * 6,
+                        g->keep + (size_t)i * KEEP, 0.0, SIZE_MAX };
     }
     pthread_t t;
     int threaded = np == 2 && !pthread_create(&t, NULL, run_part, &pt[1]);
