@@ -6,8 +6,10 @@
  * in one setting each: the long or the int interface, LDL' kept (CHOLMOD's default) or
  * turned into LL' (final_ll, catena's "cholmod"), the factorization with the shift
  * argument (cholmod_factorize_p, beta = 0) or without, the solve into a caller's
- * workspace (cholmod_solve2) or allocating (cholmod_solve). Medians of R repetitions
- * after one warm-up; wall and CPU milliseconds.
+ * workspace (cholmod_solve2) or allocating (cholmod_solve). catena's whole iteration is
+ * timed with its node-by-node assembly (two threads from 50 000 nodes), the same on one
+ * thread, and the generic element loop (the scatter the node-by-node path replaced).
+ * Medians of R repetitions after one warm-up; wall and CPU milliseconds.
  *
  *   bench_floor [N] [--repeat R]
  */
@@ -31,6 +33,7 @@ typedef struct variant {
 
 typedef struct timing {
     double fac, sol, cpu;     /* medians [s] */
+    double as;                /* catena's iteration: the assembly alone (in fac) */
 } timing;
 
 /* The matrix as CHOLMOD wants it (upper triangle, values), int or long indices. */
@@ -111,7 +114,7 @@ static int time_catena(ctn_ctx *ctx, ctn_asm *a, const double *Kx0, const double
     ctn_pattern pat = { a->ndof, a->colptr, a->rowind };
     ctn_linsolve *ls = NULL;
     ctn_factor_info info;
-    double tf[MAX_REPEAT], ts[MAX_REPEAT], tc[MAX_REPEAT];
+    double tf[MAX_REPEAT], ts[MAX_REPEAT], tc[MAX_REPEAT], ta[MAX_REPEAT];
     double *f = malloc(a->map.nstate * sizeof *f), *Kx = malloc(a->nnz * sizeof *Kx);
     int rc = f && Kx ? ctn_linsolve_create(ctx, "cholmod", &pat, CTN_ORDER_NATURAL, &ls) : CTN_ERR_NOMEM;
     if (!rc) memcpy(Kx, Kx0, a->nnz * sizeof *Kx);
@@ -119,11 +122,12 @@ static int time_catena(ctn_ctx *ctx, ctn_asm *a, const double *Kx0, const double
         for (size_t i = 0; !d && i < a->ndof; i++) f[i] = 1.0;
         double c0 = cpu_now(), t0 = now();
         if (d && ctn_asm_eval(a, d, 0, f, Kx, NULL, NULL)) rc = CTN_ERR_LINALG;
+        double ts0 = now();
         if (!rc) rc = ctn_linsolve_factor(ls, Kx, 0.0, &info);
         double t1 = now();
         if (!rc) rc = info.ok ? ctn_linsolve_solve(ls, f, f) : CTN_ERR_LINALG;
         double t2 = now(), c2 = cpu_now();
-        if (k >= 0) { tf[k] = t1 - t0; ts[k] = t2 - t1; tc[k] = c2 - c0; }
+        if (k >= 0) { tf[k] = t1 - t0; ts[k] = t2 - t1; tc[k] = c2 - c0; ta[k] = ts0 - t0; }
     }
     ctn_linsolve_destroy(&ls);
     free(f);
@@ -132,7 +136,14 @@ static int time_catena(ctn_ctx *ctx, ctn_asm *a, const double *Kx0, const double
     t->fac = median(tf, reps);
     t->sol = median(ts, reps);
     t->cpu = median(tc, reps);
+    t->as = median(ta, reps);
     return 0;
+}
+
+static void print_iteration(const char *name, const timing *t)
+{
+    printf("%-48s %10.2f %10.2f %10.2f %10.2f  (assembly %.2f)\n", name, 1e3 * t->fac, 1e3 * t->sol,
+           1e3 * (t->fac + t->sol), 1e3 * t->cpu, 1e3 * t->as);
 }
 
 int main(int argc, char **argv)
@@ -161,7 +172,10 @@ int main(int argc, char **argv)
     int rc = ctn_ctx_create(&ctx);
     if (!rc) rc = build_paper_cable(ctx, n, CTN_START_CATENARY, &m);
     if (!rc) rc = ctn_solve(ctx, m, NULL, &s);
+    ctn_asm *a1 = NULL, *ag = NULL;                  /* one thread; the generic loop */
     if (!rc) rc = ctn_asm_create(ctx, m, &a);
+    if (!rc) rc = ctn_asm_create_ex(ctx, m, CTN_ASM_ONE_THREAD, &a1);
+    if (!rc) rc = ctn_asm_create_ex(ctx, m, CTN_ASM_GENERIC, &ag);
     double *f = a ? malloc(a->map.nstate * sizeof *f) : NULL, *Kx = a ? malloc(a->nnz * sizeof *Kx) : NULL;
     if (!rc && (!f || !Kx)) rc = CTN_ERR_NOMEM;
     double *d = a ? malloc(a->map.nstate * sizeof *d) : NULL;
@@ -181,9 +195,9 @@ int main(int argc, char **argv)
     if (!time_catena(ctx, a, Kx, NULL, reps, &t))
         printf("%-48s %10.2f %10.2f %10.2f %10.2f\n", "catena backend (\"cholmod\")", 1e3 * t.fac, 1e3 * t.sol,
                1e3 * (t.fac + t.sol), 1e3 * t.cpu);
-    if (!time_catena(ctx, a, Kx, d, reps, &t))
-        printf("%-48s %10.2f %10.2f %10.2f %10.2f\n", "catena iteration (assembly + factor, solve)", 1e3 * t.fac,
-               1e3 * t.sol, 1e3 * (t.fac + t.sol), 1e3 * t.cpu);
+    if (!time_catena(ctx, a, Kx, d, reps, &t)) print_iteration("catena iteration (assembly + factor, solve)", &t);
+    if (!time_catena(ctx, a1, Kx, d, reps, &t)) print_iteration("  the same, assembly on one thread", &t);
+    if (!time_catena(ctx, ag, Kx, d, reps, &t)) print_iteration("  the same, generic assembly (scatter)", &t);
     for (size_t i = 0; i < sizeof vs / sizeof *vs; i++)
         if (!time_bare(&vs[i], a, Kx, reps, &t))
             printf("%-48s %10.2f %10.2f %10.2f %10.2f\n", vs[i].name, 1e3 * t.fac, 1e3 * t.sol, 1e3 * (t.fac + t.sol),
@@ -193,6 +207,8 @@ int main(int argc, char **argv)
     free(Kx);
     free(d);
     ctn_asm_destroy(&a);
+    ctn_asm_destroy(&a1);
+    ctn_asm_destroy(&ag);
     ctn_solution_destroy(&s);
     ctn_model_destroy(&m);
     ctn_ctx_destroy(&ctx);

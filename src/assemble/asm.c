@@ -1,14 +1,21 @@
 /* Assembler lifetime and the one element loop. */
 #include "assemble/asm.h"
 
+#include <stdint.h>
 #include <string.h>
 
 int ctn_asm_create(ctn_ctx *ctx, const ctn_model *m, ctn_asm **out)
+{
+    return ctn_asm_create_ex(ctx, m, 0, out);
+}
+
+int ctn_asm_create_ex(ctn_ctx *ctx, const ctn_model *m, unsigned flags, ctn_asm **out)
 {
     *out = NULL;
     ctn_asm *a = ctn_calloc(ctx, 1, sizeof(ctn_asm));
     if (!a) return CTN_ERR_NOMEM;
     a->m = m;
+    a->flags = flags;
     a->nn = m->nodes.n;
     a->ne = m->elements.n;
     int rc = ctn_asm_blocks(ctx, a);
@@ -33,6 +40,7 @@ void ctn_asm_destroy(ctn_asm **a)
     ctn_free(p->blocks);
     ctn_free(p->props);
     ctn_free(p->work);
+    ctn_asm_gather_free(&p->gather);
     ctn_free(p);
     *a = NULL;
 }
@@ -96,18 +104,22 @@ static inline __attribute__((always_inline)) int any_block(const ctn_asm *a, con
     return block_loop(a, b, d, mode, with_K, visit, data, bad, u, fe, Ke, X);
 }
 
+/* Every block, or (skip_axial) those the node-by-node path leaves to it. */
 static inline __attribute__((always_inline)) int loop(const ctn_asm *a, const double *d, unsigned mode, int with_K,
-                       ctn_asm_visit_fn visit, void *data, size_t *bad)
+                       ctn_asm_visit_fn visit, void *data, size_t *bad, int skip_axial)
 {
-    for (size_t k = 0; k < a->nblocks; k++)
-        if (any_block(a, &a->blocks[k], d, mode, with_K, visit, data, bad)) return 1;
+    for (size_t k = 0; k < a->nblocks; k++) {
+        const ctn_asm_block *b = &a->blocks[k];
+        if (skip_axial && ctn_asm_block_axial(b)) continue;
+        if (any_block(a, b, d, mode, with_K, visit, data, bad)) return 1;
+    }
     return 0;
 }
 
 int ctn_asm_loop(const ctn_asm *a, const double *d, unsigned mode, int with_K,
                  ctn_asm_visit_fn visit, void *data, size_t *bad)
 {
-    return loop(a, d, mode, with_K, visit, data, bad);
+    return loop(a, d, mode, with_K, visit, data, bad, 0);
 }
 
 typedef struct assembly {
@@ -150,8 +162,16 @@ int ctn_asm_eval(const ctn_asm *a, const double *d, unsigned mode, double *f, do
                  double *U, size_t *bad)
 {
     assembly as = { f, Kx, 0.0 };
+    if (a->gather) {                                /* axial members node by node */
+        size_t first = SIZE_MAX, later = SIZE_MAX;
+        int collapsed = ctn_asm_gather_eval(a, d, mode, f, Kx, &as.U, &first);
+        if (a->gather->mixed) collapsed |= loop(a, d, mode, Kx != NULL, assemble_visit, &as, &later, 1);
+        if (U) *U = as.U;
+        if (bad && collapsed) *bad = first < later ? first : later;
+        return collapsed;
+    }
     memset(f, 0, a->map.nstate * sizeof(double));
-    int collapsed = loop(a, d, mode, Kx != NULL, assemble_visit, &as, bad);
+    int collapsed = loop(a, d, mode, Kx != NULL, assemble_visit, &as, bad, 0);
     if (U) *U = as.U;
     return collapsed;
 }

@@ -22,6 +22,48 @@ typedef struct ctn_asm_block {
     size_t slot0;              /* index of its first element's first slot */
 } ctn_asm_block;
 
+/* A block the node-by-node path takes: a family with eval_axial (two nodes of 3 DOFs). */
+static inline int ctn_asm_block_axial(const ctn_asm_block *b)
+{
+    return b->ops->eval_axial && b->nnodes == 2 && b->ops->ndof_node == 3;
+}
+
+/* An axial element at a node (gather.c): element e of block blk, whose other node is
+ * nb >> 1, the node being its first (nb & 1 == 0) or second. */
+typedef struct ctn_asm_inc {
+    int e, nb, blk;
+} ctn_asm_inc;
+
+/* An axial element's evaluation, kept for its two nodes (gather.c). */
+typedef struct ctn_asm_kept {
+    int e;                             /* the element, -1: none */
+    double k[6], f[6];                 /* k's upper triangle; the forces on its nodes */
+} ctn_asm_kept;
+
+/* The node-by-node assembly of the axial families (those with eval_axial) when every
+ * node has 3 DOFs (gather.c): each node sums its axial elements' k into its diagonal
+ * block and their forces into its internal force, and writes its columns of the tangent
+ * in the pattern's order: every stored value and every force written once, no zeroing
+ * and no scatter map read. The other families add theirs afterwards through the generic
+ * loop (their slots then all add). */
+typedef struct ctn_asm_gather {
+    int *inc_ptr;                      /* nn + 1: node q's axial elements, in model order */
+    ctn_asm_inc *inc;
+    int *order;                        /* per node, its list by (other node, element) */
+    int *adj_ptr, *adj;                /* node adjacency (self included, sorted): CSR */
+    int maxdeg;                        /* most axial elements at one node */
+    int maxadj;                        /* most neighbours of one node (self included) */
+    int threads;                       /* 1, or 2: the nodes in two halves */
+    double *work;                      /* per thread (maxdeg + maxadj) * 6 on its own cache
+                                          lines: a node's elements' k, its neighbours' blocks */
+    double *X;                         /* nn * 3: the nodes' reference coordinates, copied
+                                          at creation as the properties are */
+    unsigned char *free;               /* nn: node q's free directions, bit j for j */
+    ctn_asm_kept *keep;                /* threads * KEEP (gather.c): elements evaluated
+                                          for the nodes of a chunk */
+    int mixed;                         /* other families too: the generic loop adds them */
+} ctn_asm_gather;
+
 typedef struct ctn_asm {
     const ctn_model *m;
     size_t nn, ne;                     /* nodes, elements */
@@ -39,9 +81,15 @@ typedef struct ctn_asm {
     int maxdof;                        /* largest nedof over the blocks */
     double *work;                      /* 2 maxdof + 3 nnodes_max + maxslots: eval scratch */
     double kscale;                     /* largest element stiffness scale */
+    ctn_asm_gather *gather;            /* the node-by-node path (gather.c), NULL if off */
+    unsigned flags;                    /* CTN_ASM_* it was created with */
 } ctn_asm;
 
 int ctn_asm_create(ctn_ctx *ctx, const ctn_model *m, ctn_asm **out);
+/* As ctn_asm_create; CTN_ASM_GENERIC: every family through the generic element loop
+ * (the reference the node-by-node path is tested against); CTN_ASM_ONE_THREAD. */
+enum { CTN_ASM_GENERIC = 1, CTN_ASM_ONE_THREAD = 2 };
+int ctn_asm_create_ex(ctn_ctx *ctx, const ctn_model *m, unsigned flags, ctn_asm **out);
 void ctn_asm_destroy(ctn_asm **a);
 
 /* What the element loop hands each visitor: element e (model order) of block b, its
@@ -102,5 +150,12 @@ void ctn_asm_setup_element(ctn_asm *a, size_t e);
 int ctn_asm_blocks(ctn_ctx *ctx, ctn_asm *a);
 int ctn_asm_pattern(ctn_ctx *ctx, ctn_asm *a);
 int ctn_asm_scatter_map(ctn_ctx *ctx, ctn_asm *a);
+/* The node-by-node path (gather.c): built from the node adjacency (CSR ptr/adj, taken
+ * over when it is used, else left to the caller) if every node has 3 DOFs and some block
+ * is axial; evaluated like ctn_asm_eval's axial part (f and Kx entirely written). */
+int ctn_asm_gather_build(ctn_ctx *ctx, ctn_asm *a, int **ptr, int **adj);
+void ctn_asm_gather_free(ctn_asm_gather **g);
+int ctn_asm_gather_eval(const ctn_asm *a, const double *d, unsigned mode, double *f, double *Kx,
+                        double *U, size_t *bad);
 
 #endif

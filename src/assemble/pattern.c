@@ -130,6 +130,7 @@ int ctn_asm_pattern(ctn_ctx *ctx, ctn_asm *a)
     a->rowind = ctn_malloc(ctx, nz ? nz : 1, sizeof(int));
     if (!a->colptr || !a->rowind) { rc = CTN_ERR_NOMEM; goto done; }
     a->nnz = walk_columns(a, ptr, adj, a->rowind);
+    rc = ctn_asm_gather_build(ctx, a, &ptr, &adj);
 done:
     ctn_free(ptr);
     ctn_free(adj);
@@ -168,7 +169,7 @@ static void block_slots(const ctn_asm *a, const ctn_asm_block *b, unsigned char 
             for (int j = i; j < n; j++) {
                 int r = g[i] < g[j] ? g[i] : g[j], c = g[i] < g[j] ? g[j] : g[i];
                 int k = r < 0 ? -1 : find_slot(a, r, c);
-                if (k >= 0 && !seen[k]) {                 /* first to reach it: assign */
+                if (k >= 0 && !seen[k] && !a->gather) {   /* first to reach it: assign */
                     seen[k] = 1;
                     k = -(k + 2);
                 }

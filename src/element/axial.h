@@ -30,19 +30,34 @@ static inline void ctn_axial_forces(const double e[3], double N, double *f)
     }
 }
 
+/* k = dN/dl e e^T + N/l (I - e e^T), its upper triangle kk (xx, xy, xz, yy, yz, zz:
+ * ctn_packed_index(3, i, j)): the block of an axial member's tangent [[k, -k], [-k, k]]. */
+static inline void ctn_axial_k(const double e[3], double l, double N, double dNdl, double kk[6])
+{
+    double s = N / l;
+    int t = 0;
+    for (int i = 0; i < 3; i++)
+        for (int j = i; j < 3; j++) kk[t++] = (dNdl - s) * e[i] * e[j] + (i == j ? s : 0.0);
+}
+
+/* Packed upper triangle of K = [[k, -k], [-k, k]] from k's upper triangle kk. */
+static inline void ctn_axial_expand(const double kk[6], double *K)
+{
+    int t = 0;
+    for (int i = 0; i < 3; i++) {
+        for (int j = i; j < 3; j++) K[t++] = kk[ctn_packed_index(3, i, j)];          /* node 1 - node 1 */
+        for (int j = 0; j < 3; j++) K[t++] = -kk[i <= j ? ctn_packed_index(3, i, j) : ctn_packed_index(3, j, i)];
+    }                                                                                 /* node 1 - node 2 */
+    for (int i = 0; i < 3; i++)
+        for (int j = i; j < 3; j++) K[t++] = kk[ctn_packed_index(3, i, j)];          /* node 2 - node 2 */
+}
+
 /* Packed upper triangle of K = [[k, -k], [-k, k]], k = dN/dl e e^T + N/l (I - e e^T). */
 static inline void ctn_axial_tangent(const double e[3], double l, double N, double dNdl, double *K)
 {
-    double s = N / l, k[3][3];
-    for (int i = 0; i < 3; i++)
-        for (int j = i; j < 3; j++) k[i][j] = k[j][i] = (dNdl - s) * e[i] * e[j] + (i == j ? s : 0.0);
-    int t = 0;
-    for (int i = 0; i < 3; i++) {
-        for (int j = i; j < 3; j++) K[t++] = k[i][j];          /* node 1 - node 1 */
-        for (int j = 0; j < 3; j++) K[t++] = -k[i][j];         /* node 1 - node 2 */
-    }
-    for (int i = 0; i < 3; i++)
-        for (int j = i; j < 3; j++) K[t++] = k[i][j];          /* node 2 - node 2 */
+    double kk[6];
+    ctn_axial_k(e, l, N, dNdl, kk);
+    ctn_axial_expand(kk, K);
 }
 
 /* Packed upper triangle of the mass matrix of a two-node member of mass ms (linear

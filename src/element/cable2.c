@@ -36,16 +36,25 @@ static void axial_law(const ctn_cable_props *p, unsigned mode, double l, ctn_ele
     st->stress = mode & CTN_EVAL_STRESS ? st->N / p->A : 0.0;
 }
 
+static int cable_axial(const void *props, unsigned mode, const double *X, const double *u, double *f,
+                       double *kk, ctn_elem_state *out)
+{
+    const ctn_cable_props *p = props;
+    double e[3], dNdl;
+    if (ctn_axial_chord(X, u, e, &out->l)) return 1;
+    axial_law(p, mode, out->l, out, &dNdl);
+    ctn_axial_forces(e, out->N, f);
+    if (kk) ctn_axial_k(e, out->l, out->N, dNdl, kk);
+    return 0;
+}
+
 static int cable_eval(const void *props, unsigned mode, const double *X, const double *u,
                       double *f, double *K, ctn_elem_state *out)
 {
-    const ctn_cable_props *p = props;
     ctn_elem_state st;
-    double e[3], dNdl;
-    if (ctn_axial_chord(X, u, e, &st.l)) return 1;
-    axial_law(p, mode, st.l, &st, &dNdl);
-    ctn_axial_forces(e, st.N, f);
-    if (K) ctn_axial_tangent(e, st.l, st.N, dNdl, K);
+    double kk[6];
+    if (cable_axial(props, mode, X, u, f, K ? kk : NULL, &st)) return 1;
+    if (K) ctn_axial_expand(kk, K);
     if (out) *out = st;
     return 0;
 }
@@ -156,5 +165,5 @@ const ctn_element_ops ctn_cable2_ops = {
     .check = cable_check, .setup = cable_setup, .eval = cable_eval, .load = cable_load,
     .stiffness = cable_stiffness, .rest_length = cable_rest_length, .prestress_l0 = cable_prestress_l0,
     .temperature = cable_temperature,
-    .mass = cable_mass,
+    .mass = cable_mass, .eval_axial = cable_axial,
 };

@@ -83,6 +83,13 @@ typedef struct ctn_element_ops {
      * family that shares its mass by reference lengths (pulley). NULL: the family is
      * massless (springs). */
     void (*mass)(const void *props, const double *X, int lumped, double *M);
+    /* Optional: eval for a two-node family of 3 DOFs per node whose tangent is
+     * [[k, -k], [-k, k]] with k symmetric (an axial member): the forces f (6) and k's
+     * upper triangle kk (6: xx, xy, xz, yy, yz, zz) instead of the packed 6 x 6, bit for
+     * bit the values eval gives. The assembler then writes the tangent node by node
+     * (assemble/gather.c); eval stays the generic path. */
+    int (*eval_axial)(const void *props, unsigned mode, const double *X, const double *u, double *f,
+                      double *kk, ctn_elem_state *st);
 } ctn_element_ops;
 
 /* Entries of the packed upper triangle of an n x n matrix. */

@@ -4,20 +4,30 @@
 
 #include <math.h>
 
+static int spring_axial(const void *props, unsigned mode, const double *X, const double *u, double *f,
+                        double *kk, ctn_elem_state *out)
+{
+    const ctn_spring_props *p = props;
+    double e[3];
+    (void)mode;                                        /* a spring is never cut */
+    *out = (ctn_elem_state){ 0, 0, 0, 0, 0, 0 };
+    if (ctn_axial_chord(X, u, e, &out->l)) return 1;
+    double ext = out->l - p->l0;
+    out->strain = ext / p->l0;                         /* engineering: (l - l0) / l0 */
+    out->N = p->k * ext;
+    out->energy = 0.5 * p->k * ext * ext;
+    ctn_axial_forces(e, out->N, f);
+    if (kk) ctn_axial_k(e, out->l, out->N, p->k, kk);
+    return 0;
+}
+
 static int spring_eval(const void *props, unsigned mode, const double *X, const double *u,
                        double *f, double *K, ctn_elem_state *out)
 {
-    const ctn_spring_props *p = props;
-    ctn_elem_state st = { 0, 0, 0, 0, 0, 0 };
-    double e[3];
-    (void)mode;                                        /* a spring is never cut */
-    if (ctn_axial_chord(X, u, e, &st.l)) return 1;
-    double ext = st.l - p->l0;
-    st.strain = ext / p->l0;                           /* engineering: (l - l0) / l0 */
-    st.N = p->k * ext;
-    st.energy = 0.5 * p->k * ext * ext;
-    ctn_axial_forces(e, st.N, f);
-    if (K) ctn_axial_tangent(e, st.l, st.N, p->k, K);
+    ctn_elem_state st;
+    double kk[6];
+    if (spring_axial(props, mode, X, u, f, K ? kk : NULL, &st)) return 1;
+    if (K) ctn_axial_expand(kk, K);
     if (out) *out = st;
     return 0;
 }
@@ -55,5 +65,5 @@ static int spring_prestress_l0(const ctn_model *m, const ctn_element *e, int kin
 const ctn_element_ops ctn_spring2_ops = {
     .name = "spring", .nnodes = 2, .ndof_node = 3, .props_size = sizeof(ctn_spring_props), .flags = 0,
     .check = spring_check, .setup = spring_setup, .eval = spring_eval,
-    .stiffness = spring_stiffness, .prestress_l0 = spring_prestress_l0,
+    .stiffness = spring_stiffness, .prestress_l0 = spring_prestress_l0, .eval_axial = spring_axial,
 };

@@ -1,0 +1,350 @@
+/* The node-by-node assembly of axial members (asm.h, ctn_asm_gather): instead of adding
+ * every element's 6 x 6 into the tangent through a scatter map, each node writes its
+ * columns of the tangent and its internal force once, in the pattern's order. An axial
+ * member's tangent is [[k, -k], [-k, k]], so node q's diagonal block is the sum of its
+ * elements' k and its block with a lower neighbour p is minus the sum over the elements
+ * joining them: the values the scatter gives, summed in the same (model) order, so the
+ * same bits. Nodes are taken in chunks: first the chunk's elements are evaluated (each at
+ * its lower node) into a small per-thread table, apart from the walk, so that the
+ * evaluations of consecutive elements overlap; then each node of the chunk sums and
+ * writes. No zeroing, no read-modify-write, no scatter map. Nodes are independent, so
+ * two threads take half the nodes each (an element across the halves is evaluated by
+ * both; its energy counted by its lower node's). */
+#include "assemble/asm.h"
+
+#include <pthread.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#define GATHER_PARALLEL_NODES 50000   /* two threads from this many nodes (bench_floor) */
+#define KEEP 4096                     /* elements kept per thread (448 KB: within L2) */
+#define CHUNK 64                      /* nodes evaluated, then walked */
+
+/* k's upper triangle (ctn_axial_k) at (i, j) of the symmetric 3 x 3. */
+static const int sym3[3][3] = { { 0, 1, 2 }, { 1, 3, 4 }, { 2, 4, 5 } };
+
+void ctn_asm_gather_free(ctn_asm_gather **g)
+{
+    if (!g || !*g) return;
+    ctn_free((*g)->inc_ptr);
+    ctn_free((*g)->inc);
+    ctn_free((*g)->order);
+    ctn_free((*g)->adj_ptr);
+    ctn_free((*g)->adj);
+    ctn_free((*g)->work);
+    ctn_free((*g)->keep);
+    ctn_free((*g)->X);
+    ctn_free((*g)->free);
+    ctn_free(*g);
+    *g = NULL;
+}
+
+/* Count (inc == NULL: into inc_ptr[q + 1]) or list every axial element at its two ends,
+ * in model order (fill: each node's next free place). 1 if an element joins a node to
+ * itself (the path does not take it: the generic loop's collapse check does). */
+static int each_end(const ctn_asm *a, int *inc_ptr, int *fill, ctn_asm_inc *inc)
+{
+    for (size_t k = 0; k < a->nblocks; k++) {
+        const ctn_asm_block *b = &a->blocks[k];
+        if (!ctn_asm_block_axial(b)) continue;
+        const int *conn = ctn_elem_nodes(a->m, b->e0);
+        for (size_t i = 0; i < b->count; i++) {
+            int n1 = conn[2 * i], n2 = conn[2 * i + 1], e = (int)(b->e0 + i);
+            if (n1 == n2) return 1;
+            if (!inc) {
+                inc_ptr[n1 + 1]++;
+                inc_ptr[n2 + 1]++;
+                continue;
+            }
+            inc[fill[n1]++] = (ctn_asm_inc){ e, 2 * n2, (int)k };
+            inc[fill[n2]++] = (ctn_asm_inc){ e, 2 * n1 + 1, (int)k };
+        }
+    }
+    return 0;
+}
+
+/* order: each node's elements by (other node, element), as positions in its own list. */
+static void sort_by_neighbour(ctn_asm_gather *g, size_t nn)
+{
+    for (size_t q = 0; q < nn; q++) {
+        int t0 = g->inc_ptr[q], n = g->inc_ptr[q + 1] - t0;
+        int *o = g->order + t0;
+        for (int t = 0; t < n; t++) {                  /* insertion: lists are short */
+            int v = t, s = t;
+            for (; s > 0 && g->inc[t0 + o[s - 1]].nb >> 1 > g->inc[t0 + v].nb >> 1; s--) o[s] = o[s - 1];
+            o[s] = v;
+        }
+    }
+}
+
+static int build_lists(ctn_ctx *ctx, const ctn_asm *a, ctn_asm_gather *g, size_t ends)
+{
+    int *fill = ctn_malloc(ctx, a->nn, sizeof(int));
+    g->inc = ctn_malloc(ctx, ends, sizeof(ctn_asm_inc));
+    g->order = ctn_malloc(ctx, ends, sizeof(int));
+    if (!fill || !g->inc || !g->order) {
+        ctn_free(fill);
+        return CTN_ERR_NOMEM;
+    }
+    for (size_t q = 0; q < a->nn; q++) {
+        g->inc_ptr[q + 1] += g->inc_ptr[q];
+        fill[q] = g->inc_ptr[q];
+        int deg = g->inc_ptr[q + 1] - g->inc_ptr[q];
+        if (deg > g->maxdeg) g->maxdeg = deg;
+    }
+    each_end(a, NULL, fill, g->inc);
+    ctn_free(fill);
+    sort_by_neighbour(g, a->nn);
+    return CTN_OK;
+}
+
+/* Doubles of one thread's scratch: maxdeg blocks of 6, on cache lines of its own (the
+ * threads write theirs for every element). */
+static size_t work_stride(const ctn_asm_gather *g)
+{
+    return ((size_t)(g->maxdeg + g->maxadj) * 6 + 7) / 8 * 8 + 8;
+}
+
+static int gather_threads(const ctn_asm *a)
+{
+    if ((a->flags & CTN_ASM_ONE_THREAD) || a->nn < GATHER_PARALLEL_NODES) return 1;
+    return sysconf(_SC_NPROCESSORS_ONLN) >= 2 ? 2 : 1;
+}
+
+int ctn_asm_gather_build(ctn_ctx *ctx, ctn_asm *a, int **ptr, int **adj)
+{
+    size_t ends = 0;
+    int mixed = 0;
+    if ((a->flags & CTN_ASM_GENERIC) || a->map.uniform != 3 || !a->nn) return CTN_OK;
+    for (size_t k = 0; k < a->nblocks; k++) {
+        if (ctn_asm_block_axial(&a->blocks[k])) ends += 2 * a->blocks[k].count;
+        else mixed = 1;
+    }
+    if (!ends) return CTN_OK;
+    ctn_asm_gather *g = ctn_calloc(ctx, 1, sizeof(ctn_asm_gather));
+    if (!g) return CTN_ERR_NOMEM;
+    g->mixed = mixed;
+    g->inc_ptr = ctn_calloc(ctx, a->nn + 1, sizeof(int));
+    int rc = g->inc_ptr ? CTN_OK : CTN_ERR_NOMEM;
+    if (!rc && each_end(a, g->inc_ptr, NULL, NULL)) {      /* a self-joined element */
+        ctn_asm_gather_free(&g);
+        return CTN_OK;
+    }
+    if (!rc) rc = build_lists(ctx, a, g, ends);
+    g->threads = gather_threads(a);
+    for (size_t q = 0; q < a->nn; q++)                 /* most neighbours of a node */
+        if ((*ptr)[q + 1] - (*ptr)[q] > g->maxadj) g->maxadj = (*ptr)[q + 1] - (*ptr)[q];
+    g->work = rc ? NULL : ctn_malloc(ctx, (size_t)g->threads * work_stride(g), sizeof(double));
+    g->keep = rc ? NULL : ctn_malloc(ctx, (size_t)g->threads * KEEP, sizeof(ctn_asm_kept));
+    g->X = rc ? NULL : ctn_malloc(ctx, a->nn * 3, sizeof(double));
+    if (!rc && (!g->work || !g->keep || !g->X)) rc = CTN_ERR_NOMEM;
+    g->free = rc ? NULL : ctn_malloc(ctx, a->nn, 1);
+    if (!rc && !g->free) rc = CTN_ERR_NOMEM;
+    for (size_t q = 0; !rc && q < a->nn; q++) {
+        memcpy(g->X + 3 * q, a->m->nodes.v[q].X, sizeof(double[3]));
+        g->free[q] = 0;
+        for (int j = 0; j < 3; j++) g->free[q] |= (unsigned char)((a->map.eq[3 * q + (size_t)j] >= 0) << j);
+    }
+    if (rc) {
+        ctn_asm_gather_free(&g);
+        return rc;
+    }
+    g->adj_ptr = *ptr;                                 /* taken over */
+    g->adj = *adj;
+    *ptr = *adj = NULL;
+    a->gather = g;
+    return CTN_OK;
+}
+
+/* One thread's share: nodes q0 .. q1 - 1, their columns from Kx[k0]. */
+typedef struct part {
+    const ctn_asm *a;
+    const double *d;
+    unsigned mode;
+    double *f, *Kx;
+    size_t q0, q1, k0;
+    double *w;                 /* maxdeg * 6 */
+    double *S;                 /* maxadj * 6 */
+    ctn_asm_kept *keep;        /* KEEP */
+    double U;                  /* energy of the elements whose first node is here */
+    size_t bad;                /* first collapsed element, SIZE_MAX if none */
+} part;
+
+/* Evaluate the element of incidence in at node q into kept (its forces, and its k when
+ * the tangent is asked for; all zero if it collapsed, and 1 returned). */
+static int eval_one(const part *pt, const ctn_asm_inc *in, size_t q, ctn_asm_kept *kept, double *energy)
+{
+    const ctn_asm *a = pt->a;
+    const ctn_asm_block *b = &a->blocks[in->blk];
+    size_t o = (size_t)(in->nb >> 1), n1 = in->nb & 1 ? o : q, n2 = in->nb & 1 ? q : o;
+    double X[6], u[6];
+    ctn_elem_state st;
+    memcpy(X, a->gather->X + 3 * n1, sizeof(double[3]));
+    memcpy(X + 3, a->gather->X + 3 * n2, sizeof(double[3]));
+    memcpy(u, pt->d + 3 * n1, sizeof(double[3]));
+    memcpy(u + 3, pt->d + 3 * n2, sizeof(double[3]));
+    const void *props = a->props + b->props0 + ((size_t)in->e - b->e0) * b->ops->props_size;
+    kept->e = in->e;
+    if (!b->ops->eval_axial(props, pt->mode, X, u, kept->f, pt->Kx ? kept->k : NULL, &st)) {
+        *energy = st.energy;
+        return 0;
+    }
+    memset(kept->f, 0, sizeof kept->f);
+    memset(kept->k, 0, sizeof kept->k);
+    *energy = 0;
+    return 1;
+}
+
+/* Evaluate the elements of nodes qa .. qb - 1 that are evaluated there: at their lower
+ * node, or at the higher one when the lower is another thread's; into this thread's
+ * table (slot e mod KEEP). The energy of those evaluated at their lower node into U.
+ * Apart from the walk over the nodes, so that the evaluations (chains of divisions and a
+ * square root) of consecutive elements overlap. */
+static void eval_nodes(const part *pt, size_t qa, size_t qb, double *U, size_t *bad)
+{
+    const ctn_asm_gather *g = pt->a->gather;
+    for (size_t q = qa; q < qb; q++)
+        for (int t = g->inc_ptr[q]; t < g->inc_ptr[q + 1]; t++) {
+            const ctn_asm_inc *in = &g->inc[t];
+            size_t o = (size_t)(in->nb >> 1);
+            if (o < q && o >= pt->q0) continue;          /* evaluated at its lower node */
+            double energy;
+            if (eval_one(pt, in, q, pt->keep + (size_t)in->e % KEEP, &energy) && (size_t)in->e < *bad)
+                *bad = (size_t)in->e;
+            if (o > q) *U += energy;
+        }
+}
+
+/* Node q's elements, in model order, from the table (evaluated again if pushed out):
+ * their k into w (list order), the force on q into f, the sum of their k into D. */
+static void node_elements(const part *pt, size_t q, double D[6], size_t *bad)
+{
+    const ctn_asm_gather *g = pt->a->gather;
+    double fq[3] = { 0, 0, 0 };
+    for (int t = g->inc_ptr[q]; t < g->inc_ptr[q + 1]; t++) {
+        const ctn_asm_inc *in = &g->inc[t];
+        const ctn_asm_kept *kept = pt->keep + (size_t)in->e % KEEP;
+        ctn_asm_kept again;
+        double energy;
+        if (kept->e != in->e) {
+            if (eval_one(pt, in, q, &again, &energy) && (size_t)in->e < *bad) *bad = (size_t)in->e;
+            kept = &again;
+        }
+        const double *fe = kept->f + 3 * (in->nb & 1);
+        for (int j = 0; j < 3; j++) fq[j] += fe[j];
+        if (!pt->Kx) continue;
+        memcpy(pt->w + 6 * (t - g->inc_ptr[q]), kept->k, sizeof kept->k);
+        for (int j = 0; j < 6; j++) D[j] += kept->k[j];
+    }
+    memcpy(pt->f + 3 * q, fq, sizeof fq);
+}
+
+/* The blocks of node q's lower neighbours, in the pattern's order: the sum of the k
+ * joining each to q (in model order) into S, 6 a neighbour; returns their count. */
+static int lower_blocks(const part *pt, size_t q, double *S)
+{
+    const ctn_asm_gather *g = pt->a->gather;
+    const int *order = g->order + g->inc_ptr[q];
+    const ctn_asm_inc *inc = g->inc + g->inc_ptr[q];
+    int n = g->inc_ptr[q + 1] - g->inc_ptr[q], r = 0, nl = 0;
+    for (int s = g->adj_ptr[q]; g->adj[s] < (int)q; s++, nl++) {
+        int p = g->adj[s];
+        double *Sp = S + 6 * nl;
+        for (int i = 0; i < 6; i++) Sp[i] = 0;
+        while (r < n && inc[order[r]].nb >> 1 < p) r++;
+        for (; r < n && inc[order[r]].nb >> 1 == p; r++)
+            for (int i = 0; i < 6; i++) Sp[i] += pt->w[6 * order[r] + i];
+    }
+    return nl;
+}
+
+/* Column j of node q (a free direction) from Kx[k]: minus the blocks S of its nl lower
+ * neighbours, then its diagonal block's rows i <= j. Inline with j constant, so that the
+ * symmetric indexing folds. Returns the next position. */
+static inline __attribute__((always_inline)) size_t column(const part *pt, size_t q, int j, const double *S,
+                                                           int nl, const double D[6], size_t k)
+{
+    const ctn_asm_gather *g = pt->a->gather;
+    const int *nb = g->adj + g->adj_ptr[q];
+    double *Kx = pt->Kx;
+    for (int l = 0; l < nl; l++) {
+        unsigned fp = g->free[nb[l]];
+        const double *Sp = S + 6 * l;
+        if (fp == 7) {                                  /* the common case: all free */
+            for (int i = 0; i < 3; i++) Kx[k + (size_t)i] = -Sp[sym3[i][j]];
+            k += 3;
+            continue;
+        }
+        for (int i = 0; i < 3; i++)
+            if (fp >> i & 1) Kx[k++] = -Sp[sym3[i][j]];
+    }
+    for (int i = 0; i <= j; i++)
+        if (g->free[q] >> i & 1) Kx[k++] = D[sym3[i][j]];
+    return k;
+}
+
+/* Node q's columns of the tangent from Kx[k], its free directions in order. */
+static size_t node_columns(const part *pt, size_t q, const double D[6], size_t k)
+{
+    unsigned fq = pt->a->gather->free[q];
+    int nl = lower_blocks(pt, q, pt->S);
+    if (fq & 1) k = column(pt, q, 0, pt->S, nl, D, k);
+    if (fq & 2) k = column(pt, q, 1, pt->S, nl, D, k);
+    if (fq & 4) k = column(pt, q, 2, pt->S, nl, D, k);
+    return k;
+}
+
+static void *run_part(void *arg)
+{
+    part *pt = arg;
+    size_t k = pt->k0, bad = SIZE_MAX;
+    double U = 0;
+    for (size_t i = 0; i < KEEP; i++) pt->keep[i].e = -1;   /* nothing kept yet */
+    for (size_t qa = pt->q0; qa < pt->q1; qa += CHUNK) {
+        size_t qb = qa + CHUNK < pt->q1 ? qa + CHUNK : pt->q1;
+        eval_nodes(pt, qa, qb, &U, &bad);
+        for (size_t q = qa; q < qb; q++) {
+            double D[6] = { 0, 0, 0, 0, 0, 0 };
+            node_elements(pt, q, D, &bad);
+            if (pt->Kx) k = node_columns(pt, q, D, k);
+        }
+    }
+    pt->U = U;                                          /* once: the parts share a line */
+    pt->bad = bad;
+    return NULL;
+}
+
+/* Position in Kx of the first column of node q or a later one. */
+static size_t first_value(const ctn_asm *a, size_t q)
+{
+    for (; q < a->nn; q++)
+        for (int j = 0; j < 3; j++) {
+            int c = a->map.eq[3 * q + (size_t)j];
+            if (c >= 0) return (size_t)a->colptr[c];
+        }
+    return a->nnz;
+}
+
+int ctn_asm_gather_eval(const ctn_asm *a, const double *d, unsigned mode, double *f, double *Kx,
+                        double *U, size_t *bad)
+{
+    const ctn_asm_gather *g = a->gather;
+    part pt[2];
+    int np = g->threads;
+    for (int i = 0; i < np; i++) {
+        size_t q0 = a->nn * (size_t)i / (size_t)np;
+        pt[i] = (part){ a, d, mode, f, Kx, q0, a->nn * (size_t)(i + 1) / (size_t)np, Kx ? first_value(a, q0) : 0,
+                        g->work + (size_t)i * work_stride(g), g->work + (size_t)i * work_stride(g) + (size_t)g->maxdeg * 6,
+                        g->keep + (size_t)i * KEEP, 0.0, SIZE_MAX };
+    }
+    pthread_t t;
+    int threaded = np == 2 && !pthread_create(&t, NULL, run_part, &pt[1]);
+    run_part(&pt[0]);
+    if (threaded) pthread_join(t, NULL);
+    else if (np == 2) run_part(&pt[1]);
+    *U = pt[0].U + (np == 2 ? pt[1].U : 0.0);
+    *bad = np == 2 && pt[1].bad < pt[0].bad ? pt[1].bad : pt[0].bad;
+    return *bad != SIZE_MAX;
+}
