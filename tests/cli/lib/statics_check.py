@@ -377,6 +377,23 @@ def case_springs_reactions():
         need(R[2][0] == 0, "%s: a reaction along the free direction x of node 2" % what)
         need(norm(add(add(add(R[1], R[2]), R[3]), (3.0, 0.0, -0.2 * 41))) < 1e-10, "%s: the reactions do not balance the loads" % what)
         check_residual(res, {2: (3, 0, 0)}, {e["id"]: (0, 0, -0.2 * e["l0"]) for e in res["elements"] if e["id"] != 100}, what)
+    # a deck load on "all" elements: the cable's horizontal projection carries it, the
+    # spring that holds the cable's end none (as temperature passes over springs)
+    what = "hload over a cable and a spring"
+    res = solve("material steel E=2e8\nsection c material=steel A=1e-4 w=0.2\ngravity 0 0 -1\n"
+                "node 1 0 0 0 fix=xyz\nnode 2 40 0 0 fix=yz\nnode 3 41 0 0 fix=xyz\n"
+                "cable 1 2 section=c n=16 length=41\nspring 100 2 3 k=50\nhload q=2\n", what)
+    if res:
+        X = positions(res)
+        deck = 2 * (X[2][0] - X[1][0])
+        Rz = sum(r[2] for r in reactions(res).values())
+        need(abs(Rz - 0.2 * 41 - deck) < 1e-10 * Rz, "%s: vertical reactions %.17g, weight and deck %.17g" % (what, Rz, 0.2 * 41 + deck))
+        loads = {}
+        for e in res["elements"]:
+            if e["id"] != 100:
+                a, b = e["nodes"]
+                loads[e["id"]] = (0.0, 0.0, -0.2 * e["l0"] - 2 * math.hypot(X[b][0] - X[a][0], X[b][1] - X[a][1]))
+        check_residual(res, {}, loads, what)
     # loads on fixed DOFs go into the reactions (R = f_int - f_ext)
     what = "loads on fixed DOFs"
     loads = {3: (0, -10, 7), 2: (1, 2, 3), 1: (4, 5, 6)}
