@@ -110,6 +110,7 @@ int ctn_cmd_solve(int argc, char **argv)
     ctn_app_progress_done(&progress);
     solve_monitor sm = { { stdout, { 0, 0 } }, !a.json && !a.quiet, 0, &progress };
     sm.progress_on = !sm.log_on || !isatty(STDOUT_FILENO);
+    if (!rc) rc = ctn_model_validate(m);   /* a bad model prints no summary header before its error */
     if (!rc) rc = ctn_model_resolve_targets(ctx, m, &opt, NULL);
     if (!rc && !a.json && !a.quiet) print_targets(m);
     if (!rc) {

@@ -121,11 +121,35 @@ static int has_weight(const ctn_model *m, int *line)
     return 0;
 }
 
+/* An hload is lumped at the nodes of the members it selects, segment by segment: right
+ * for members straight between their nodes (cable elements, pulley segments), not for a
+ * catenary element, whose curve between its two nodes would not carry it (its shape and
+ * forces would ignore the load, which would go straight into the nodes): refused. A
+ * spring takes none: naming one alone is an error, sets pass over it (ctn_hload_on). */
+static int check_hload_member(const ctn_model *m, const ctn_hload *hl)
+{
+    if (hl->group < 0 && hl->first == hl->last) {
+        int e = ctn_idmap_get(&m->element_ids, hl->first);
+        if (e >= 0 && m->elements.v[e].section < 0)
+            return ctn_error_at(m->ctx, CTN_ERR_MODEL, m->file, hl->line,
+                                "hload: element %d is a %s, which takes no load per horizontal length", hl->first,
+                                ctn_element_family(m->elements.v[e].type)->name);
+    }
+    for (size_t i = 0; i < m->elements.n; i++)
+        if (ctn_hload_on(m, hl, i) && !strcmp(ctn_element_family(m->elements.v[i].type)->name, "catenary"))
+            return ctn_error_at(m->ctx, CTN_ERR_MODEL, m->file, hl->line,
+                                "hload: element %d is a catenary element, which carries its own weight only: a load "
+                                "per horizontal length cannot ride on it (mesh the span with cable, or leave it out of "
+                                "elements=)", m->elements.v[i].id);
+    return CTN_OK;
+}
+
 static int check_hload_targets(const ctn_model *m)
 {
     for (size_t h = 0; h < m->hloads.n; h++) {
         const ctn_hload *hl = &m->hloads.v[h];
-        int hit = 0;
+        int hit = 0, rc = check_hload_member(m, hl);
+        if (rc) return rc;
         for (size_t i = 0; i < m->elements.n && !hit; i++)
             hit = ctn_hload_on(m, hl, i);
         if (!hit && hl->group >= 0)

@@ -139,10 +139,12 @@ struct ctn_model {
     ctn_array_reserve((ctx), (void **)&(a).v, &(a).cap, (a).n + (extra), sizeof *(a).v)
 int ctn_array_reserve(ctn_ctx *ctx, void **v, size_t *cap, size_t need, size_t size);
 
-/* Whether horizontal load h acts on element index e. */
+/* Whether horizontal load h acts on element index e. Members without a section (springs)
+ * carry none: `all`, ranges and groups pass over them, as temperature changes do. */
 static inline int ctn_hload_on(const ctn_model *m, const ctn_hload *h, size_t e)
 {
     const ctn_element *el = &m->elements.v[e];
+    if (el->section < 0) return 0;
     return h->group >= 0 ? el->group == h->group : el->id >= h->first && el->id <= h->last;
 }
 
