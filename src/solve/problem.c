@@ -62,7 +62,8 @@ static int alloc_vectors(ctn_problem *p)
 
 static int setup(ctn_problem *p)
 {
-    int rc = ctn_asm_create(p->ctx, p->m, &p->a);
+    /* threads=1 asked for: one thread everywhere (an application solving side by side) */
+    int rc = ctn_asm_create_ex(p->ctx, p->m, p->opt.threads == 1 ? CTN_ASM_ONE_THREAD : 0, &p->a);
     if (rc) return rc;
     p->ns = p->a->map.nstate;
     p->ndof = p->a->ndof;
