@@ -44,6 +44,8 @@ int ctn_solution_group(const ctn_model *m, const ctn_solution *s, size_t k, size
         ctn_element_state st;
         if (m->elements.v[i].group != (int)g) continue;
         if (ctn_model_element(m, i, &e) || ctn_solution_step_element(s, k, i, &st)) return CTN_ERR_INVALID;
+        ctn_catenary_result c = { .size = sizeof c };
+        if (!ctn_solution_catenary(m, s, k, i, &c)) st.length = c.length;   /* the curve, not the chord */
         add_member(out, m, &e, &st);
     }
     if (!(out->max_stress > -INFINITY)) out->max_stress = 0;
