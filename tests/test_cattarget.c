@@ -234,20 +234,14 @@ static void test_group_length(void)
     const char *text = "units kN m\ngravity 0 0 -1\nmaterial steel E=2e8 strain=engineering\n"
                        "section s material=steel A=3.14e-4 w=0.1\nnode 1 0 0 0 fix=xyz\nnode 2 200 0 0 fix=xyz\n"
                        "catenary 7 1 2 section=s length=210 group=span\n";
-    ctn_ctx *ctx = NULL;
-    ctn_model *m = NULL;
-    ctn_solution *s = NULL;
     ctn_group_result g;
     ctn_ecatenary_in in = { 200, 0, 0.1, 2e8 * 3.14e-4, 210 };
     ctn_ecatenary c;
-    ctn_ctx_create(&ctx);
-    CHECK(read_resolve(ctx, "group.cable", text, 0, 1, &m, &s) == CTN_OK);
-    CHECK(ctn_ecatenary_solve(NULL, &in, &c) == CTN_OK);
-    CHECK(s && ctn_solution_group(m, s, 0, 0, &g) == CTN_OK);
-    if (s) CHECK_CLOSE(g.stressed_length, c.sum.length, 1e-10, 0);    /* a chord would be 200 */
-    ctn_solution_destroy(&s);
-    ctn_model_destroy(&m);
-    ctn_ctx_destroy(&ctx);
+    run r = run_text("group.cable", text);
+    CHECK(r.rc == CTN_OK && ctn_ecatenary_solve(NULL, &in, &c) == CTN_OK);
+    CHECK(r.s && ctn_solution_group(r.m, r.s, 0, 0, &g) == CTN_OK);
+    if (r.s) CHECK_CLOSE(g.stressed_length, c.sum.length, 1e-10, 0);    /* a chord would be 200 */
+    done(&r);
 }
 
 static void test_errors(void)

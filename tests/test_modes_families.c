@@ -15,6 +15,7 @@
 #include "element/element.h"
 #include "catena.h"
 #include "check.h"
+#include "run_text.h"
 
 #include <math.h>
 
@@ -53,30 +54,6 @@ static void test_element_matrices(void)
     }
 }
 
-typedef struct run {
-    ctn_ctx *ctx;
-    ctn_model *m;
-    ctn_solution *s;
-} run;
-
-static int solve(run *r, const char *text)
-{
-    ctn_solve_options opt;
-    memset(r, 0, sizeof *r);
-    ctn_ctx_create(&r->ctx);
-    int rc = ctn_read_string(r->ctx, "test.cable", text, strlen(text), &r->m, &opt);
-    if (!rc) rc = ctn_solve(r->ctx, r->m, &opt, &r->s);
-    CHECK_MSG(rc == CTN_OK, "%s", ctn_ctx_message(r->ctx));
-    return rc;
-}
-
-static void run_free(run *r)
-{
-    ctn_solution_destroy(&r->s);
-    ctn_model_destroy(&r->m);
-    ctn_ctx_destroy(&r->ctx);
-}
-
 static double omega2(const run *r, size_t k)
 {
     ctn_mode md;
@@ -95,8 +72,9 @@ static void test_line(int pulley, int lumped)
              pulley ? "pulley 1 1 2 3 section=s length=19.8"
                     : "catenary 1 1 2 section=s length=9.9\ncatenary 2 2 3 section=s length=9.9",
              lumped ? "lumped" : "consistent");
-    run r;
-    if (solve(&r, text) == CTN_OK) {
+    run r = run_text("test.cable", text);
+    CHECK_MSG(r.rc == CTN_OK, "%s", ctn_ctx_message(r.ctx));
+    if (r.rc == CTN_OK) {
         CHECK(ctn_solution_mode_count(r.s) == 3);
         double mmid = lumped ? mp * L / 2 : mp * L / 3;
         double wt = 2 * (N / 10) / mmid;
@@ -123,7 +101,7 @@ static void test_line(int pulley, int lumped)
             CHECK_CLOSE(omega2(&r, 2), 2 * (EA / (L / 2)) / mmid, 1e-9, 0);
         }
     }
-    run_free(&r);
+    done(&r);
 }
 
 int main(void)

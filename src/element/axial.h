@@ -52,6 +52,21 @@ static inline void ctn_axial_expand(const double kk[6], double *K)
         for (int j = i; j < 3; j++) K[t++] = kk[ctn_packed_index(3, i, j)];          /* node 2 - node 2 */
 }
 
+/* The generic eval of an axial family from its eval_axial (the same bits): the forces,
+ * and the packed 6 x 6 tangent expanded from k when K is wanted. */
+static inline int ctn_axial_eval(int (*axial)(const void *, unsigned, const double *, const double *, double *,
+                                              double *, ctn_elem_state *),
+                                 const void *props, unsigned mode, const double *X, const double *u, double *f,
+                                 double *K, ctn_elem_state *out)
+{
+    ctn_elem_state st;
+    double kk[6];
+    if (axial(props, mode, X, u, f, K ? kk : NULL, &st)) return 1;
+    if (K) ctn_axial_expand(kk, K);
+    if (out) *out = st;
+    return 0;
+}
+
 /* Packed upper triangle of K = [[k, -k], [-k, k]], k = dN/dl e e^T + N/l (I - e e^T). */
 static inline void ctn_axial_tangent(const double e[3], double l, double N, double dNdl, double *K)
 {

@@ -51,12 +51,7 @@ static int cable_axial(const void *props, unsigned mode, const double *X, const 
 static int cable_eval(const void *props, unsigned mode, const double *X, const double *u,
                       double *f, double *K, ctn_elem_state *out)
 {
-    ctn_elem_state st;
-    double kk[6];
-    if (cable_axial(props, mode, X, u, f, K ? kk : NULL, &st)) return 1;
-    if (K) ctn_axial_expand(kk, K);
-    if (out) *out = st;
-    return 0;
+    return ctn_axial_eval(cable_axial, props, mode, X, u, f, K, out);
 }
 
 static int cable_check(const ctn_model *m, const ctn_element *e)
