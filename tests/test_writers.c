@@ -257,6 +257,7 @@ static void ref_summary(cJSON *root, const ctn_model *m, const ctn_solution *s, 
     ctn_stability st;
     if (ctn_solution_stability(s, &st) == CTN_OK) {
         cJSON_AddBoolToObject(root, "stable", st.stable);
+        if (st.stable) cJSON_AddStringToObject(root, "stable_by", st.by_tension ? "tension" : "factorization");
         if (!st.stable) {
             cJSON *o = cJSON_AddObjectToObject(root, "stability");
             cJSON_AddStringToObject(o, "kind", st.semidefinite ? "semi-definite" : "unstable");

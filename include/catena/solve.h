@@ -263,10 +263,15 @@ typedef struct ctn_stability {
                              stopped the count) */
     int node;             /* not stable: user id of the node whose DOF failed first */
     int dir;              /* its direction 0 = x, 1 = y, 2 = z, -1 if none */
+    int by_tension;       /* stable, shown without a factorization: every member in
+                             tension or slack and every free DOF tied to a support by
+                             members in tension (docs/theory.md); 0: by LL' */
 } ctn_stability;
 int ctn_problem_stability(ctn_problem *p, const ctn_solution *s, ctn_stability *out);
 /* The stability of a converged solution, checked by ctn_problem_solve (free when the
- * last Newton iteration's LL' factorization succeeded, else by ctn_problem_stability).
+ * last Newton iteration's LL' factorization succeeded; else, unless a modal analysis
+ * follows, without a factorization when the tangent is definite by its structure
+ * (by_tension); else by ctn_problem_stability).
  * CTN_ERR_INVALID when not checked (the solve did not converge). */
 int ctn_solution_stability(const ctn_solution *s, ctn_stability *out);
 

@@ -31,7 +31,10 @@ static void put_stability(ctn_jw *j, const ctn_solution *s)
     ctn_stability st;
     if (ctn_solution_stability(s, &st)) return;
     ctn_jw_bool(j, "stable", st.stable);
-    if (st.stable) return;
+    if (st.stable) {
+        ctn_jw_string(j, "stable_by", st.by_tension ? "tension" : "factorization");
+        return;
+    }
     ctn_jw_object(j, "stability");
     ctn_jw_string(j, "kind", st.semidefinite ? "semi-definite" : "unstable");
     ctn_jw_number(j, "negative_eigenvalues", (double)st.negative);

@@ -128,8 +128,10 @@ static void start_state(ctn_problem *p, double *d)
 
 /* The stability of the converged state. The last Newton iteration factored the tangent a
  * correction away from it: if that was LL' of K itself and it succeeded, the state is
- * stable at no cost (the tangents differ by the round-off of the last correction);
- * otherwise the problem checks it. */
+ * stable at no cost (the tangents differ by the round-off of the last correction). Else
+ * a tangent definite by its structure (members in tension tying every free DOF to a
+ * support) needs no factorization, unless a modal analysis follows and reuses the
+ * check's factor; otherwise the problem factors it. */
 static int check_stability(ctn_problem *p, ctn_solution *s)
 {
     s->sum.stable = 1;
@@ -138,6 +140,16 @@ static int check_stability(ctn_problem *p, ctn_solution *s)
         s->stability.stable = 1;
         s->stability.dir = -1;
         return CTN_OK;
+    }
+    if (p->opt.modal.count == 0) {                  /* a modal analysis wants K_T's factor */
+        int ok = 0, rc = ctn_problem_stable_by_tension(p, s, &ok);
+        if (rc) return rc;
+        if (ok) {
+            memset(&s->stability, 0, sizeof s->stability);
+            s->stability.stable = s->stability.by_tension = 1;
+            s->stability.dir = -1;
+            return CTN_OK;
+        }
     }
     ctn_solve_summary *keep = p->sum;
     int rc = ctn_problem_stability(p, s, &s->stability);

@@ -157,6 +157,10 @@ int ctn_follow_apply(ctn_problem *p, const double *x, double *y);
  * d (state layout) of the solution's last step; CTN_ERR_INVALID, naming who, for a
  * solution of another model or a collapsed element (stability.c). */
 int ctn_problem_tangent_at(ctn_problem *p, const ctn_solution *s, double *d, const char *who);
+/* 1 in *ok when the tangent at s's state is positive definite by its structure: axial
+ * members in tension or slack only, and every free DOF tied to a support by members in
+ * tension (stability_tension.c); 0 when that cannot be shown (a factorization can). */
+int ctn_problem_stable_by_tension(ctn_problem *p, const ctn_solution *s, int *ok);
 /* y = A x (ndof), A symmetric with values Ax in the pattern's order (upper triangle). */
 void ctn_problem_symv(const ctn_problem *p, const double *Ax, const double *x, double *y);
 
