@@ -1,0 +1,123 @@
+/* The result set of a large model, staged by two threads (src/io/results.c):
+ *   - byte for byte the files the one-thread path writes (a context set to fail an
+ *     allocation far away keeps ctn_write_results on one thread);
+ *   - under a file size limit that every file but the smallest exceeds, whichever
+ *     thread fails: CTN_ERR_IO with the write error, nothing committed, no temporary. */
+#include "check.h"
+
+#include <catena.h>
+
+#include <dirent.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+static char *read_all(const char *path, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    char *s = NULL;
+    *len = 0;
+    if (!f) return NULL;
+    if (!fseek(f, 0, SEEK_END)) {
+        long n = ftell(f);
+        if (n >= 0 && !fseek(f, 0, SEEK_SET) && (s = malloc((size_t)n + 1)) && fread(s, 1, (size_t)n, f) == (size_t)n)
+            *len = (size_t)n;
+    }
+    fclose(f);
+    return s;
+}
+
+static int count_entries(const char *dir)
+{
+    DIR *d = opendir(dir);
+    if (!d) return -1;
+    int n = 0;
+    for (struct dirent *e; (e = readdir(d));)
+        if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..")) n++;
+    closedir(d);
+    return n;
+}
+
+static void remove_dir(const char *dir)
+{
+    DIR *d = opendir(dir);
+    if (!d) return;
+    for (struct dirent *e; (e = readdir(d));) {
+        char path[4096];
+        if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        unlink(path);
+    }
+    closedir(d);
+    rmdir(dir);
+}
+
+/* A taut cable of 100 000 elements: 200 001 nodes and elements, above the threshold. */
+static const char *model_text =
+    "units kN m\n"
+    "material steel E=2.0e8\n"
+    "section strand material=steel A=3.14e-4 w=0.1\n"
+    "gravity 0 -1 0\n"
+    "node 1 0 0 0 fix=xyz\n"
+    "node 2 200 0 0 fix=xyz\n"
+    "cable 1 2 section=strand n=100000 length=200.3340\n";
+
+int main(void)
+{
+    ctn_ctx *ctx = NULL;
+    ctn_model *m = NULL;
+    ctn_solution *s = NULL;
+    ctn_solve_options opt;
+    char base[64], one[96], two[96], lim_dir[96];
+    ctn_ctx_create(&ctx);
+    snprintf(base, sizeof base, "/tmp/catena-wthreads.XXXXXX");
+    CHECK(mkdtemp(base) != NULL);
+    snprintf(one, sizeof one, "%s/one", base);
+    snprintf(two, sizeof two, "%s/two", base);
+    snprintf(lim_dir, sizeof lim_dir, "%s/limit", base);
+    int rc = ctn_read_string(ctx, "chain.cable", model_text, strlen(model_text), &m, &opt);
+    if (!rc) rc = ctn_solve(ctx, m, &opt, &s);
+    CHECK_MSG(rc == CTN_OK, "%s", ctn_ctx_message(ctx));
+    if (!rc) {
+        CHECK(ctn_model_node_count(m) + ctn_model_element_count(m) >= 200000);
+        CHECK(ctn_write_results(ctx, two, m, s) == CTN_OK);              /* two threads */
+        ctn_ctx_fail_alloc_at(ctx, 1L << 40);                            /* one thread */
+        CHECK(ctn_write_results(ctx, one, m, s) == CTN_OK);
+        ctn_ctx_fail_alloc_at(ctx, 0);
+        const char *names[] = { "result.json", "nodes.csv", "elements.csv", "result.vtu" };
+        for (size_t i = 0; i < sizeof names / sizeof *names; i++) {
+            char p1[160], p2[160];
+            size_t n1, n2;
+            snprintf(p1, sizeof p1, "%s/%s", one, names[i]);
+            snprintf(p2, sizeof p2, "%s/%s", two, names[i]);
+            char *a = read_all(p1, &n1), *b = read_all(p2, &n2);
+            CHECK_MSG(a && b && n1 == n2 && n1 > 1000 && !memcmp(a, b, n1), "%s: %zu and %zu bytes", names[i], n1, n2);
+            free(a);
+            free(b);
+        }
+        CHECK(count_entries(two) == count_entries(one));
+
+        struct rlimit old, lim;
+        if (!getrlimit(RLIMIT_FSIZE, &old)) {
+            void (*handler)(int) = signal(SIGXFSZ, SIG_IGN);
+            lim = old;
+            lim.rlim_cur = 1000000;                 /* 1 MB: result.json and the others fail */
+            CHECK(setrlimit(RLIMIT_FSIZE, &lim) == 0);
+            rc = ctn_write_results(ctx, lim_dir, m, s);
+            setrlimit(RLIMIT_FSIZE, &old);
+            signal(SIGXFSZ, handler);
+            CHECK_MSG(rc == CTN_ERR_IO && strstr(ctn_ctx_message(ctx), "write failed"), "rc %d: %s", rc,
+                      ctn_ctx_message(ctx));
+            CHECK_MSG(count_entries(lim_dir) == 0, "%d entries left", count_entries(lim_dir));
+        }
+    }
+    remove_dir(one);
+    remove_dir(two);
+    remove_dir(lim_dir);
+    rmdir(base);
+    ctn_solution_destroy(&s);
+    ctn_model_destroy(&m);
+    ctn_ctx_destroy(&ctx);
+    CHECK_DONE();
+}
