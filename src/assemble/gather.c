@@ -14,6 +14,7 @@
  * threads take half the nodes each (an element across the halves is evaluated by both;
  * its energy counted by its lower node's). */
 #include "assemble/asm.h"
+#include "element/cable2.h"
 
 #include <pthread.h>
 #include <stdint.h>
@@ -217,7 +218,8 @@ typedef struct part {
 
 /* Evaluate element e of block blk, joining nodes n1 and n2, into kept (its forces, and its
  * k when the tangent is asked for; all zero if it collapsed, and 1 returned). */
-static int eval_elem(const part *pt, int e, int blk, size_t n1, size_t n2, ctn_asm_kept *kept, double *energy)
+static inline __attribute__((always_inline)) int eval_elem(const part *pt, int e, int blk, size_t n1, size_t n2,
+                                                           ctn_asm_kept *kept, double *energy)
 {
     const ctn_asm *a = pt->a;
     const ctn_asm_block *b = &a->blocks[blk];
@@ -228,8 +230,11 @@ static int eval_elem(const part *pt, int e, int blk, size_t n1, size_t n2, ctn_a
     memcpy(u, pt->d + 3 * n1, sizeof(double[3]));
     memcpy(u + 3, pt->d + 3 * n2, sizeof(double[3]));
     const void *props = a->props + b->props0 + ((size_t)e - b->e0) * b->ops->props_size;
+    double *k = pt->Kx ? kept->k : NULL;
     kept->e = e;
-    if (!b->ops->eval_axial(props, pt->mode, X, u, kept->f, pt->Kx ? kept->k : NULL, &st)) {
+    /* the cable's kernel inline (the bits of its eval_axial: cable2.h) */
+    if (!(b->ops == &ctn_cable2_ops ? ctn_cable_axial(props, pt->mode, X, u, kept->f, k, &st)
+                                    : b->ops->eval_axial(props, pt->mode, X, u, kept->f, k, &st))) {
         *energy = st.energy;
         return 0;
     }
@@ -256,6 +261,13 @@ static void eval_chunk(const part *pt, size_t qa, size_t qb, double *U, size_t *
     }
 }
 
+/* eval_elem out of line, for the few elements evaluated at their higher node. */
+static __attribute__((noinline)) int eval_again(const part *pt, int e, int blk, size_t n1, size_t n2,
+                                                ctn_asm_kept *kept, double *energy)
+{
+    return eval_elem(pt, e, blk, n1, n2, kept, energy);
+}
+
 /* The evaluation of node q's element in from the table; evaluated into again if it is not
  * there (pushed out, or its lower node is another thread's: its energy is counted there). */
 static const ctn_asm_kept *kept_of(const part *pt, const ctn_asm_inc *in, size_t q, ctn_asm_kept *again, size_t *bad)
@@ -264,7 +276,7 @@ static const ctn_asm_kept *kept_of(const part *pt, const ctn_asm_inc *in, size_t
     if (kept->e == in->e) return kept;
     size_t o = (size_t)(in->nb >> 1);
     double energy;
-    if (eval_elem(pt, in->e, in->blk, in->nb & 1 ? o : q, in->nb & 1 ? q : o, again, &energy) &&
+    if (eval_again(pt, in->e, in->blk, in->nb & 1 ? o : q, in->nb & 1 ? q : o, again, &energy) &&
         (size_t)in->e < *bad)
         *bad = (size_t)in->e;
     return again;
