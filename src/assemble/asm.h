@@ -64,8 +64,9 @@ typedef struct ctn_asm_gather {
                                           lines: a node's elements' k, its neighbours' blocks */
     double *X;                         /* nn * 3: the nodes' reference coordinates, copied
                                           at creation as the properties are */
-    unsigned char *free;               /* nn: node q's free directions, bit j for j; bit 3:
-                                          a plain node (gather.c) */
+    unsigned char *free;               /* nn: node q's free directions, bit j for j; bits
+                                          3 .. 7: a plain node and its lower neighbours'
+                                          count (gather.c) */
     ctn_asm_kept *keep;                /* threads * KEEP (gather.c): elements evaluated
                                           for the nodes of a chunk */
     int mixed;                         /* other families too: the generic loop adds them */

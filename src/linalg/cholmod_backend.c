@@ -7,7 +7,8 @@
  *   "cholmod-ldl": simplicial LDL' (no pivoting), for indefinite matrices; the signs of
  *                  D give the inertia.
  * The matrix is held as a pattern; the caller's values are lent to CHOLMOD for each
- * factorization (no copy). CHOLMOD's long-integer interface throughout (chol.h). */
+ * factorization, its right-hand side and solution arrays for each solve (no copy).
+ * CHOLMOD's long-integer interface throughout (chol.h). */
 #include "linalg/chol.h"
 
 #include <math.h>
