@@ -9,7 +9,9 @@
  * workspace (cholmod_solve2) or allocating (cholmod_solve). catena's whole iteration is
  * timed with its node-by-node assembly (two threads from 50 000 nodes), the same on one
  * thread, and the generic element loop (the scatter the node-by-node path replaced).
- * Medians of R repetitions after one warm-up; wall and CPU milliseconds.
+ * Medians of R repetitions after one warm-up; wall and CPU milliseconds. Last, the
+ * iteration and the floor (bare long, LDL', factorize + solve) alternately, and the
+ * median of their ratio: on a shared machine, the figure to read.
  *
  *   bench_floor [N] [--repeat R]
  */
@@ -140,6 +142,55 @@ static int time_catena(ctn_ctx *ctx, ctn_asm *a, const double *Kx0, const double
     return 0;
 }
 
+/* catena's iteration (its default assembly on a) and the issue's floor (bare long, LDL',
+ * cholmod_l_factorize + cholmod_l_solve, analyzed once) measured alternately, one of
+ * each per repetition, so that a slow spell of this shared machine falls on both: the
+ * median of the per-repetition ratio, and the medians of each. */
+static int time_paired(ctn_ctx *ctx, ctn_asm *a, const double *Kx0, const double *d, int reps, double out[3])
+{
+    ctn_pattern pat = { a->ndof, a->colptr, a->rowind };
+    ctn_linsolve *ls = NULL;
+    ctn_factor_info info;
+    cholmod_common cm;
+    double ti[MAX_REPEAT], tb[MAX_REPEAT], r[MAX_REPEAT];
+    double *f = malloc(a->map.nstate * sizeof *f), *Kx = malloc(a->nnz * sizeof *Kx);
+    int rc = f && Kx ? ctn_linsolve_create(ctx, "cholmod", &pat, CTN_ORDER_NATURAL, &ls) : CTN_ERR_NOMEM;
+    cholmod_l_start(&cm);
+    cm.nmethods = 1;
+    cm.method[0].ordering = CHOLMOD_NATURAL;
+    cm.postorder = 0;
+    cm.final_ll = 0;
+    cholmod_sparse *A = rc ? NULL : matrix(a, Kx0, 1, &cm);
+    cholmod_factor *L = A ? cholmod_l_analyze(A, &cm) : NULL;
+    cholmod_dense *B = L ? cholmod_l_ones(a->ndof, 1, CHOLMOD_REAL, &cm) : NULL;
+    if (!rc && !B) rc = CTN_ERR_LINALG;
+    for (int k = -1; !rc && k < reps; k++) {
+        double t0 = now();
+        if (ctn_asm_eval(a, d, 0, f, Kx, NULL, NULL)) rc = CTN_ERR_LINALG;
+        if (!rc) rc = ctn_linsolve_factor(ls, Kx, 0.0, &info);
+        if (!rc) rc = info.ok ? ctn_linsolve_solve(ls, f, f) : CTN_ERR_LINALG;
+        double t1 = now();
+        int ok = cholmod_l_factorize(A, L, &cm);
+        cholmod_dense *Z = ok ? cholmod_l_solve(CHOLMOD_A, L, B, &cm) : NULL;
+        double t2 = now();
+        if (!Z || cm.status != CHOLMOD_OK) rc = CTN_ERR_LINALG;
+        cholmod_l_free_dense(&Z, &cm);
+        if (k >= 0) { ti[k] = t1 - t0; tb[k] = t2 - t1; r[k] = ti[k] / tb[k]; }
+    }
+    cholmod_l_free_dense(&B, &cm);
+    cholmod_l_free_factor(&L, &cm);
+    cholmod_l_free_sparse(&A, &cm);
+    cholmod_l_finish(&cm);
+    ctn_linsolve_destroy(&ls);
+    free(f);
+    free(Kx);
+    if (rc) return 1;
+    out[0] = median(ti, reps);
+    out[1] = median(tb, reps);
+    out[2] = median(r, reps);
+    return 0;
+}
+
 static void print_iteration(const char *name, const timing *t)
 {
     printf("%-48s %10.2f %10.2f %10.2f %10.2f  (assembly %.2f)\n", name, 1e3 * t->fac, 1e3 * t->sol,
@@ -198,6 +249,10 @@ int main(int argc, char **argv)
     if (!time_catena(ctx, a, Kx, d, reps, &t)) print_iteration("catena iteration (assembly + factor, solve)", &t);
     if (!time_catena(ctx, a1, Kx, d, reps, &t)) print_iteration("  the same, assembly on one thread", &t);
     if (!time_catena(ctx, ag, Kx, d, reps, &t)) print_iteration("  the same, generic assembly (scatter)", &t);
+    double pr[3];
+    if (!time_paired(ctx, a, Kx, d, reps, pr))
+        printf("paired, alternately: iteration %.2f ms, floor (bare factorize + solve) %.2f ms, iteration / floor "
+               "%.3f (median of the ratios)\n", 1e3 * pr[0], 1e3 * pr[1], pr[2]);
     for (size_t i = 0; i < sizeof vs / sizeof *vs; i++)
         if (!time_bare(&vs[i], a, Kx, reps, &t))
             printf("%-48s %10.2f %10.2f %10.2f %10.2f\n", vs[i].name, 1e3 * t.fac, 1e3 * t.sol, 1e3 * (t.fac + t.sol),

@@ -4,8 +4,10 @@
  *   stored energy agree to 1e-15 relative (to 1e-13 for the energy, summed in another
  *   order), at random states, with and without the tangent, with compression cut; bit
  *   for bit on models of axial members only;
- * - on chains (one and two threads: 60 000 nodes), a net with partly fixed nodes, two
- *   members joining the same nodes and members numbered against the nodes, springs,
+ * - on chains (one and two threads: 60 000 nodes; their nodes plain but the ends' and
+ *   their neighbours'), a net with partly fixed nodes (no node plain), two
+ *   members joining the same nodes (free ones too: that node not plain) and members
+ *   numbered against the nodes, springs,
  *   tension-only and slack members, and a model mixing cables with catenary and pulley
  *   elements (the generic loop adds those after the node-by-node path);
  * - a collapsed element is reported as the same (first) element;
@@ -47,6 +49,24 @@ static const char *NET =
     "element 12 3 7 section=sa\n"
     "spring 13 9 6 k=500\n"
     "spring 14 1 9 k=800 l0=3.5\n";
+
+/* Free nodes 2 .. 5, two members on 3-4: node 4 is not plain (two blocks summed), node 5
+ * is (its lower neighbour 4 free, one member to it). */
+static const char *DOUBLED =
+    "material a E=1e4\n"
+    "section sa material=a A=1\n"
+    "node 1 0 0 0 fix=xyz\n"
+    "node 2 1 0 0.1\n"
+    "node 3 2 0.1 0\n"
+    "node 4 3 0 -0.1\n"
+    "node 5 4 0.1 0\n"
+    "node 6 5 0 0 fix=xyz\n"
+    "element 1 1 2 section=sa l0=0.9\n"
+    "element 2 2 3 section=sa l0=0.95\n"
+    "element 3 3 4 section=sa l0=0.97\n"
+    "element 4 4 3 section=sa l0=1.01\n"
+    "element 5 4 5 section=sa l0=0.99\n"
+    "element 6 5 6 section=sa l0=0.9\n";
 
 static const char *MIXED =
     "material rope E=1e5 strain=engineering\n"
@@ -154,10 +174,22 @@ static ctn_model *chain(ctn_ctx *ctx, int n)
     return m;
 }
 
+/* Nodes of m that the node-by-node path takes as plain (free bit 3). */
+static size_t plain_nodes(ctn_ctx *ctx, const ctn_model *m)
+{
+    ctn_asm *a = NULL;
+    size_t n = 0;
+    CHECK(ctn_asm_create(ctx, m, &a) == CTN_OK && a->gather);
+    for (size_t q = 0; a && a->gather && q < a->nn; q++) n += a->gather->free[q] >> 3 & 1;
+    ctn_asm_destroy(&a);
+    return n;
+}
+
 static void test_models(ctn_ctx *ctx)
 {
     ctn_model *m = chain(ctx, 40);
     CHECK(compare_model(ctx, m, 0, 0.5, 3, "chain 40"));
+    CHECK(plain_nodes(ctx, m) == 41 - 4);    /* all but the fixed ends and their neighbours */
     ctn_model_destroy(&m);
     m = chain(ctx, 60000);
     ctn_asm *a = NULL;
@@ -167,8 +199,13 @@ static void test_models(ctn_ctx *ctx)
     CHECK(compare_model(ctx, m, CTN_ASM_ONE_THREAD, 0.05, 1, "chain 60000, one thread"));
     ctn_model_destroy(&m);
     m = read_model(ctx, NET);
+    CHECK(plain_nodes(ctx, m) == 0);           /* every node next to a fixed direction */
     CHECK(compare_model(ctx, m, 0, 0.8, 4, "net"));         /* large: many compressed */
     CHECK(compare_model(ctx, m, 0, 0.02, 2, "net, small"));
+    ctn_model_destroy(&m);
+    m = read_model(ctx, DOUBLED);
+    CHECK(plain_nodes(ctx, m) == 2);           /* nodes 3 and 5 */
+    CHECK(compare_model(ctx, m, 0, 0.3, 3, "two members on a pair"));
     ctn_model_destroy(&m);
     m = read_model(ctx, MIXED);
     CHECK(compare_model(ctx, m, 0, 0.3, 3, "mixed families"));

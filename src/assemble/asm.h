@@ -34,6 +34,12 @@ typedef struct ctn_asm_inc {
     int e, nb, blk;
 } ctn_asm_inc;
 
+/* An axial element as its lower node evaluates it (gather.c): element e of block blk,
+ * joining nodes n1 and n2 (its first and second). */
+typedef struct ctn_asm_ev {
+    int e, blk, n1, n2;
+} ctn_asm_ev;
+
 /* An axial element's evaluation, kept for its two nodes (gather.c). */
 typedef struct ctn_asm_kept {
     int e;                             /* the element, -1: none */
@@ -58,10 +64,14 @@ typedef struct ctn_asm_gather {
                                           lines: a node's elements' k, its neighbours' blocks */
     double *X;                         /* nn * 3: the nodes' reference coordinates, copied
                                           at creation as the properties are */
-    unsigned char *free;               /* nn: node q's free directions, bit j for j */
+    unsigned char *free;               /* nn: node q's free directions, bit j for j; bits
+                                          3 .. 7: a plain node and its lower neighbours'
+                                          count (gather.c) */
     ctn_asm_kept *keep;                /* threads * KEEP (gather.c): elements evaluated
                                           for the nodes of a chunk */
     int mixed;                         /* other families too: the generic loop adds them */
+    int *ev_ptr;                       /* nn + 1: the elements whose lower node is q, */
+    ctn_asm_ev *ev;                    /* in model order */
 } ctn_asm_gather;
 
 typedef struct ctn_asm {

@@ -4,13 +4,17 @@
  * member's tangent is [[k, -k], [-k, k]], so node q's diagonal block is the sum of its
  * elements' k and its block with a lower neighbour p is minus the sum over the elements
  * joining them: the values the scatter gives, summed in the same (model) order, so the
- * same bits. Nodes are taken in chunks: first the chunk's elements are evaluated (each at
- * its lower node) into a small per-thread table, apart from the walk, so that the
- * evaluations of consecutive elements overlap; then each node of the chunk sums and
- * writes. No zeroing, no read-modify-write, no scatter map. Nodes are independent, so
- * two threads take half the nodes each (an element across the halves is evaluated by
- * both; its energy counted by its lower node's). */
+ * same bits. Nodes are taken in chunks: first the elements whose lower node is in the
+ * chunk are evaluated, in one run of a list kept in that order, into a small per-thread
+ * table, so that the evaluations of consecutive elements overlap; then each node of the
+ * chunk sums and writes. A plain node (its three directions free, and its lower
+ * neighbours', one element to each of them: a chain's, most of a net's) writes its
+ * columns straight from its elements' k; the others sum each neighbour's block first.
+ * No zeroing, no read-modify-write, no scatter map. Nodes are independent, so two
+ * threads take half the nodes each (an element across the halves is evaluated by both;
+ * its energy counted by its lower node's). */
 #include "assemble/asm.h"
+#include "element/cable2.h"
 
 #include <pthread.h>
 #include <stdint.h>
@@ -21,6 +25,9 @@
 #define GATHER_PARALLEL_NODES 50000   /* two threads from this many nodes (bench_floor) */
 #define KEEP 4096                     /* elements kept per thread (448 KB: within L2) */
 #define CHUNK 64                      /* nodes evaluated, then walked */
+#define PLAIN 8                       /* free[q] bit: a plain node, its lower neighbours'
+                                         count in bits 4 .. 7 */
+#define PLAIN_DEG 8                   /* elements of a plain node at most */
 
 /* k's upper triangle (ctn_axial_k) at (i, j) of the symmetric 3 x 3. */
 static const int sym3[3][3] = { { 0, 1, 2 }, { 1, 3, 4 }, { 2, 4, 5 } };
@@ -37,6 +44,8 @@ void ctn_asm_gather_free(ctn_asm_gather **g)
     ctn_free((*g)->keep);
     ctn_free((*g)->X);
     ctn_free((*g)->free);
+    ctn_free((*g)->ev_ptr);
+    ctn_free((*g)->ev);
     ctn_free(*g);
     *g = NULL;
 }
@@ -79,12 +88,29 @@ static void sort_by_neighbour(ctn_asm_gather *g, size_t nn)
     }
 }
 
+/* ev: each node's elements whose other node is higher, in model order. */
+static void lower_lists(ctn_asm_gather *g, size_t nn)
+{
+    int v = 0;
+    for (size_t q = 0; q < nn; q++) {
+        g->ev_ptr[q] = v;
+        for (int t = g->inc_ptr[q]; t < g->inc_ptr[q + 1]; t++) {
+            const ctn_asm_inc *in = &g->inc[t];
+            int o = in->nb >> 1, first = !(in->nb & 1);
+            if (o > (int)q) g->ev[v++] = (ctn_asm_ev){ in->e, in->blk, first ? (int)q : o, first ? o : (int)q };
+        }
+    }
+    g->ev_ptr[nn] = v;
+}
+
 static int build_lists(ctn_ctx *ctx, const ctn_asm *a, ctn_asm_gather *g, size_t ends)
 {
     int *fill = ctn_malloc(ctx, a->nn, sizeof(int));
     g->inc = ctn_malloc(ctx, ends, sizeof(ctn_asm_inc));
     g->order = ctn_malloc(ctx, ends, sizeof(int));
-    if (!fill || !g->inc || !g->order) {
+    g->ev_ptr = ctn_malloc(ctx, a->nn + 1, sizeof(int));
+    g->ev = ctn_malloc(ctx, ends / 2, sizeof(ctn_asm_ev));
+    if (!fill || !g->inc || !g->order || !g->ev_ptr || !g->ev) {
         ctn_free(fill);
         return CTN_ERR_NOMEM;
     }
@@ -97,7 +123,21 @@ static int build_lists(ctn_ctx *ctx, const ctn_asm *a, ctn_asm_gather *g, size_t
     each_end(a, NULL, fill, g->inc);
     ctn_free(fill);
     sort_by_neighbour(g, a->nn);
+    lower_lists(g, a->nn);
     return CTN_OK;
+}
+
+/* Node q is plain when it and its lower neighbours (ptr/adj) have their three directions
+ * free, it has at most PLAIN_DEG elements and one element joins it to each lower
+ * neighbour: then its list in neighbour order (order) starts with exactly those. Their
+ * count, or -1 if q is not plain. */
+static int plain(const ctn_asm_gather *g, size_t q, const int *ptr, const int *adj)
+{
+    int t0 = g->inc_ptr[q], n = g->inc_ptr[q + 1] - t0, nl = 0;
+    if ((g->free[q] & 7) != 7 || n > PLAIN_DEG) return -1;
+    for (int s = ptr[q]; adj[s] < (int)q; s++, nl++)
+        if ((g->free[adj[s]] & 7) != 7 || nl >= n || g->inc[t0 + g->order[t0 + nl]].nb >> 1 != adj[s]) return -1;
+    return nl == n || g->inc[t0 + g->order[t0 + nl]].nb >> 1 > (int)q ? nl : -1;
 }
 
 /* Doubles of one thread's scratch: maxdeg blocks of 6, on cache lines of its own (the
@@ -147,6 +187,10 @@ int ctn_asm_gather_build(ctn_ctx *ctx, ctn_asm *a, int **ptr, int **adj)
         g->free[q] = 0;
         for (int j = 0; j < 3; j++) g->free[q] |= (unsigned char)((a->map.eq[3 * q + (size_t)j] >= 0) << j);
     }
+    for (size_t q = 0; !rc && q < a->nn; q++) {
+        int nl = plain(g, q, *ptr, *adj);
+        if (nl >= 0) g->free[q] |= (unsigned char)(PLAIN | nl << 4);
+    }
     if (rc) {
         ctn_asm_gather_free(&g);
         return rc;
@@ -172,22 +216,25 @@ typedef struct part {
     size_t bad;                /* first collapsed element, SIZE_MAX if none */
 } part;
 
-/* Evaluate the element of incidence in at node q into kept (its forces, and its k when
- * the tangent is asked for; all zero if it collapsed, and 1 returned). */
-static int eval_one(const part *pt, const ctn_asm_inc *in, size_t q, ctn_asm_kept *kept, double *energy)
+/* Evaluate element e of block blk, joining nodes n1 and n2, into kept (its forces, and its
+ * k when the tangent is asked for; all zero if it collapsed, and 1 returned). */
+static inline __attribute__((always_inline)) int eval_elem(const part *pt, int e, int blk, size_t n1, size_t n2,
+                                                           ctn_asm_kept *kept, double *energy)
 {
     const ctn_asm *a = pt->a;
-    const ctn_asm_block *b = &a->blocks[in->blk];
-    size_t o = (size_t)(in->nb >> 1), n1 = in->nb & 1 ? o : q, n2 = in->nb & 1 ? q : o;
+    const ctn_asm_block *b = &a->blocks[blk];
     double X[6], u[6];
     ctn_elem_state st;
     memcpy(X, a->gather->X + 3 * n1, sizeof(double[3]));
     memcpy(X + 3, a->gather->X + 3 * n2, sizeof(double[3]));
     memcpy(u, pt->d + 3 * n1, sizeof(double[3]));
     memcpy(u + 3, pt->d + 3 * n2, sizeof(double[3]));
-    const void *props = a->props + b->props0 + ((size_t)in->e - b->e0) * b->ops->props_size;
-    kept->e = in->e;
-    if (!b->ops->eval_axial(props, pt->mode, X, u, kept->f, pt->Kx ? kept->k : NULL, &st)) {
+    const void *props = a->props + b->props0 + ((size_t)e - b->e0) * b->ops->props_size;
+    double *k = pt->Kx ? kept->k : NULL;
+    kept->e = e;
+    /* the cable's kernel inline (the bits of its eval_axial: cable2.h) */
+    if (!(b->ops == &ctn_cable2_ops ? ctn_cable_axial(props, pt->mode, X, u, kept->f, k, &st)
+                                    : b->ops->eval_axial(props, pt->mode, X, u, kept->f, k, &st))) {
         *energy = st.energy;
         return 0;
     }
@@ -197,41 +244,54 @@ static int eval_one(const part *pt, const ctn_asm_inc *in, size_t q, ctn_asm_kep
     return 1;
 }
 
-/* Evaluate the elements of nodes qa .. qb - 1 that are evaluated there: at their lower
- * node, or at the higher one when the lower is another thread's; into this thread's
- * table (slot e mod KEEP). The energy of those evaluated at their lower node into U.
- * Apart from the walk over the nodes, so that the evaluations (chains of divisions and a
- * square root) of consecutive elements overlap. */
-static void eval_nodes(const part *pt, size_t qa, size_t qb, double *U, size_t *bad)
+/* Evaluate the elements whose lower node is one of qa .. qb - 1 (one run of ev) into this
+ * thread's table (slot e mod KEEP), their energy into U. Apart from the walk over the
+ * nodes, so that the evaluations (chains of divisions and a square root) of consecutive
+ * elements overlap. */
+static void eval_chunk(const part *pt, size_t qa, size_t qb, double *U, size_t *bad)
 {
     const ctn_asm_gather *g = pt->a->gather;
-    for (size_t q = qa; q < qb; q++)
-        for (int t = g->inc_ptr[q]; t < g->inc_ptr[q + 1]; t++) {
-            const ctn_asm_inc *in = &g->inc[t];
-            size_t o = (size_t)(in->nb >> 1);
-            if (o < q && o >= pt->q0) continue;          /* evaluated at its lower node */
-            double energy;
-            if (eval_one(pt, in, q, pt->keep + (size_t)in->e % KEEP, &energy) && (size_t)in->e < *bad)
-                *bad = (size_t)in->e;
-            if (o > q) *U += energy;
-        }
+    for (int t = g->ev_ptr[qa]; t < g->ev_ptr[qb]; t++) {
+        const ctn_asm_ev *v = &g->ev[t];
+        double energy;
+        if (eval_elem(pt, v->e, v->blk, (size_t)v->n1, (size_t)v->n2, pt->keep + (size_t)v->e % KEEP, &energy) &&
+            (size_t)v->e < *bad)
+            *bad = (size_t)v->e;
+        *U += energy;
+    }
 }
 
-/* Node q's elements, in model order, from the table (evaluated again if pushed out):
- * their k into w (list order), the force on q into f, the sum of their k into D. */
+/* eval_elem out of line, for the few elements evaluated at their higher node. */
+static __attribute__((noinline)) int eval_again(const part *pt, int e, int blk, size_t n1, size_t n2,
+                                                ctn_asm_kept *kept, double *energy)
+{
+    return eval_elem(pt, e, blk, n1, n2, kept, energy);
+}
+
+/* The evaluation of node q's element in from the table; evaluated into again if it is not
+ * there (pushed out, or its lower node is another thread's: its energy is counted there). */
+static const ctn_asm_kept *kept_of(const part *pt, const ctn_asm_inc *in, size_t q, ctn_asm_kept *again, size_t *bad)
+{
+    const ctn_asm_kept *kept = pt->keep + (size_t)in->e % KEEP;
+    if (kept->e == in->e) return kept;
+    size_t o = (size_t)(in->nb >> 1);
+    double energy;
+    if (eval_again(pt, in->e, in->blk, in->nb & 1 ? o : q, in->nb & 1 ? q : o, again, &energy) &&
+        (size_t)in->e < *bad)
+        *bad = (size_t)in->e;
+    return again;
+}
+
+/* Node q's elements, in model order, from the table: their k into w (list order), the
+ * force on q into f, the sum of their k into D. */
 static void node_elements(const part *pt, size_t q, double D[6], size_t *bad)
 {
     const ctn_asm_gather *g = pt->a->gather;
     double fq[3] = { 0, 0, 0 };
     for (int t = g->inc_ptr[q]; t < g->inc_ptr[q + 1]; t++) {
         const ctn_asm_inc *in = &g->inc[t];
-        const ctn_asm_kept *kept = pt->keep + (size_t)in->e % KEEP;
         ctn_asm_kept again;
-        double energy;
-        if (kept->e != in->e) {
-            if (eval_one(pt, in, q, &again, &energy) && (size_t)in->e < *bad) *bad = (size_t)in->e;
-            kept = &again;
-        }
+        const ctn_asm_kept *kept = kept_of(pt, in, q, &again, bad);
         const double *fe = kept->f + 3 * (in->nb & 1);
         for (int j = 0; j < 3; j++) fq[j] += fe[j];
         if (!pt->Kx) continue;
@@ -239,6 +299,42 @@ static void node_elements(const part *pt, size_t q, double D[6], size_t *bad)
         for (int j = 0; j < 6; j++) D[j] += kept->k[j];
     }
     memcpy(pt->f + 3 * q, fq, sizeof fq);
+}
+
+/* A plain node's force, and its columns from Kx[k] straight from its elements' k: those
+ * to its nl lower neighbours first in its list by neighbour (order), one a neighbour.
+ * Returns the next position. */
+static size_t plain_node(const part *pt, size_t q, size_t k, size_t *bad)
+{
+    const ctn_asm_gather *g = pt->a->gather;
+    int t0 = g->inc_ptr[q], n = g->inc_ptr[q + 1] - t0, nl = g->free[q] >> 4;
+    const ctn_asm_kept *kp[PLAIN_DEG];
+    ctn_asm_kept again[PLAIN_DEG];
+    double D[6] = { 0, 0, 0, 0, 0, 0 }, fq[3] = { 0, 0, 0 };
+    for (int t = 0; t < n; t++) {
+        const ctn_asm_inc *in = &g->inc[t0 + t];
+        kp[t] = kept_of(pt, in, q, &again[t], bad);
+        const double *fe = kp[t]->f + 3 * (in->nb & 1);
+        for (int j = 0; j < 3; j++) fq[j] += fe[j];
+        if (pt->Kx)
+            for (int j = 0; j < 6; j++) D[j] += kp[t]->k[j];
+    }
+    memcpy(pt->f + 3 * q, fq, sizeof fq);
+    if (!pt->Kx) return k;
+    const int *order = g->order + t0;
+    double *c0 = pt->Kx + k, *c1 = c0 + 3 * nl + 1, *c2 = c1 + 3 * nl + 2;   /* its 3 columns */
+    for (int l = 0; l < nl; l++, c0 += 3, c1 += 3, c2 += 3) {
+        const double *kl = kp[order[l]]->k;
+        double m[6];
+        for (int i = 0; i < 6; i++) m[i] = -kl[i];
+        c0[0] = m[0], c0[1] = m[1], c0[2] = m[2];                 /* k's (xx, xy, xz, yy, yz, zz) */
+        c1[0] = m[1], c1[1] = m[3], c1[2] = m[4];
+        c2[0] = m[2], c2[1] = m[4], c2[2] = m[5];
+    }
+    c0[0] = D[0];
+    c1[0] = D[1], c1[1] = D[3];
+    c2[0] = D[2], c2[1] = D[4], c2[2] = D[5];
+    return k + 9 * (size_t)nl + 6;
 }
 
 /* The blocks of node q's lower neighbours, in the pattern's order: the sum of the k
@@ -270,7 +366,7 @@ static inline __attribute__((always_inline)) size_t column(const part *pt, size_
     const int *nb = g->adj + g->adj_ptr[q];
     double *Kx = pt->Kx;
     for (int l = 0; l < nl; l++) {
-        unsigned fp = g->free[nb[l]];
+        unsigned fp = g->free[nb[l]] & 7u;
         const double *Sp = S + 6 * l;
         if (fp == 7) {                                  /* the common case: all free */
             for (int i = 0; i < 3; i++) Kx[k + (size_t)i] = -Sp[sym3[i][j]];
@@ -304,8 +400,12 @@ static void *run_part(void *arg)
     for (size_t i = 0; i < KEEP; i++) pt->keep[i].e = -1;   /* nothing kept yet */
     for (size_t qa = pt->q0; qa < pt->q1; qa += CHUNK) {
         size_t qb = qa + CHUNK < pt->q1 ? qa + CHUNK : pt->q1;
-        eval_nodes(pt, qa, qb, &U, &bad);
+        eval_chunk(pt, qa, qb, &U, &bad);
         for (size_t q = qa; q < qb; q++) {
+            if (pt->a->gather->free[q] & PLAIN) {
+                k = plain_node(pt, q, k, &bad);
+                continue;
+            }
             double D[6] = { 0, 0, 0, 0, 0, 0 };
             node_elements(pt, q, D, &bad);
             if (pt->Kx) k = node_columns(pt, q, D, k);

@@ -1,57 +1,14 @@
-/* Two-node cable element, total Lagrangian (docs/theory.md).
- *   a = x2 - x1, l = |a|, e = a / l, lambda = l / l0
- *   Green-Lagrange: eps = (lambda^2 - 1)/2, N = EA eps lambda, dN/dl = EA (3 lambda^2 - 1)/(2 l0)
- *   engineering:    eps = lambda - 1,       N = EA eps,        dN/dl = EA / l0
- *   strain energy U = EA l0 eps^2 / 2 (dU/dl = N for both measures)
- *   f2 = N e = -f1;  K = [[k, -k], [-k, k]],  k = dN/dl e e^T + N/l (I - e e^T)         */
-#include "element/axial.h"
+/* Two-node cable element, total Lagrangian (docs/theory.md); its kernel, eval_axial, is
+ * in cable2.h. */
+#include "element/cable2.h"
 
 #include <float.h>
 #include <math.h>
 
-/* Axial force and its derivative with respect to the current length. */
-static void axial_law(const ctn_cable_props *p, unsigned mode, double l, ctn_elem_state *st,
-                      double *dNdl)
-{
-    double lam = l / p->l0;
-    if (p->strain == CTN_STRAIN_ENGINEERING) {
-        st->strain = lam - 1.0;                               /* eps = lambda - 1 */
-        st->N = p->EA * st->strain;
-        *dNdl = p->EA / p->l0;
-    } else {
-        st->strain = 0.5 * (lam - 1.0) * (lam + 1.0);         /* (lambda^2 - 1)/2 */
-        st->N = p->EA * st->strain * lam;                     /* A S lambda */
-        *dNdl = p->EA * (3.0 * lam * lam - 1.0) / (2.0 * p->l0);
-    }
-    st->energy = 0.5 * p->EA * p->l0 * st->strain * st->strain;   /* U = EA l0 eps^2 / 2 */
-    st->slack = 0;
-    /* Slack below zero force; at exactly zero (an unstressed start) the member keeps its
-     * tension-side stiffness, so a straight start is not a matrix of zeros. */
-    if ((p->tension_only || (mode & CTN_EVAL_CUT_COMPRESSION)) && st->N < 0) {
-        st->N = 0;
-        st->energy = 0;
-        *dNdl = 0;
-        st->slack = 1;
-    }
-    st->stress = mode & CTN_EVAL_STRESS ? st->N / p->A : 0.0;
-}
-
-static int cable_axial(const void *props, unsigned mode, const double *X, const double *u, double *f,
-                       double *kk, ctn_elem_state *out)
-{
-    const ctn_cable_props *p = props;
-    double e[3], dNdl;
-    if (ctn_axial_chord(X, u, e, &out->l)) return 1;
-    axial_law(p, mode, out->l, out, &dNdl);
-    ctn_axial_forces(e, out->N, f);
-    if (kk) ctn_axial_k(e, out->l, out->N, dNdl, kk);
-    return 0;
-}
-
 static int cable_eval(const void *props, unsigned mode, const double *X, const double *u,
                       double *f, double *K, ctn_elem_state *out)
 {
-    return ctn_axial_eval(cable_axial, props, mode, X, u, f, K, out);
+    return ctn_axial_eval(ctn_cable_axial, props, mode, X, u, f, K, out);
 }
 
 static int cable_check(const ctn_model *m, const ctn_element *e)
@@ -160,5 +117,5 @@ const ctn_element_ops ctn_cable2_ops = {
     .check = cable_check, .setup = cable_setup, .eval = cable_eval, .load = cable_load,
     .stiffness = cable_stiffness, .rest_length = cable_rest_length, .prestress_l0 = cable_prestress_l0,
     .temperature = cable_temperature,
-    .mass = cable_mass, .eval_axial = cable_axial,
+    .mass = cable_mass, .eval_axial = ctn_cable_axial,
 };

@@ -14,12 +14,12 @@ typedef struct chol {
     cholmod_common cm;
     cholmod_sparse *A;                  /* pattern only between factorizations */
     cholmod_factor *L;
-    cholmod_dense *B, *X, *Y, *E;       /* right-hand side and solve2 workspace */
+    cholmod_dense *B, *Y, *E;           /* right-hand side (its shape) and solve2 workspace */
     ctn_ordering ordering;
     double lnz;                         /* non-zeros of L from the analysis */
     double fl;                          /* flops of one factorization, from the analysis */
     int indefinite;                     /* simplicial LDL' instead of LL' */
-    cholmod_dense *Xk, *Yk, *Ek;        /* solve2 workspace of the block solves */
+    cholmod_dense *Yk, *Ek;             /* solve2 workspace of the block solves */
 } chol;
 
 /* Record a CHOLMOD failure (status in c->cm) with its meaning in words: CTN_ERR_NOMEM

@@ -7,7 +7,8 @@
  *   "cholmod-ldl": simplicial LDL' (no pivoting), for indefinite matrices; the signs of
  *                  D give the inertia.
  * The matrix is held as a pattern; the caller's values are lent to CHOLMOD for each
- * factorization (no copy). CHOLMOD's long-integer interface throughout (chol.h). */
+ * factorization, its right-hand side and solution arrays for each solve (no copy).
+ * CHOLMOD's long-integer interface throughout (chol.h). */
 #include "linalg/chol.h"
 
 #include <math.h>
@@ -21,10 +22,8 @@ static void chol_destroy(void *impl)
     cholmod_l_free_factor(&c->L, &c->cm);
     cholmod_l_free_sparse(&c->A, &c->cm);
     cholmod_l_free_dense(&c->B, &c->cm);
-    cholmod_l_free_dense(&c->X, &c->cm);
     cholmod_l_free_dense(&c->Y, &c->cm);
     cholmod_l_free_dense(&c->E, &c->cm);
-    cholmod_l_free_dense(&c->Xk, &c->cm);
     cholmod_l_free_dense(&c->Yk, &c->cm);
     cholmod_l_free_dense(&c->Ek, &c->cm);
     cholmod_l_finish(&c->cm);
@@ -117,12 +116,25 @@ static int chol_factor(void *impl, const double *Kx, double shift, ctn_factor_in
     return CTN_OK;
 }
 
+/* The caller's array x of n x k values as a CHOLMOD dense matrix of B's shape. Given as
+ * X, solve2 writes the solution there instead of into a matrix of its own that would
+ * then be copied (it keeps an X of the right shape, as this one always is, and would
+ * free one of another shape). solve2 reads B into its workspace (permuted) and solves
+ * there before it writes X, so x may be b. */
+static cholmod_dense lent(const cholmod_dense *B, size_t k, const double *x)
+{
+    cholmod_dense h = *B;
+    h.ncol = k;
+    h.nzmax = B->nrow * k;
+    h.x = (void *)x;
+    return h;
+}
+
 static int chol_solve(void *impl, const double *b, double *x)
 {
     chol *c = impl;
     size_t n = c->A->nrow;
-    void *own = c->B->x;
-    c->B->x = (void *)b;                         /* solve2 only reads B: no copy */
+    cholmod_dense bh = lent(c->B, 1, b), xh = lent(c->B, 1, x), *X = &xh;
     /* cholmod_l_solve2 reallocates its workspace Y whenever Y's shape is not the one it
      * wants (4 x n for a simplicial factor), although the space it kept suffices; give
      * it that shape back, so the loop allocates nothing. Only when the space is there. */
@@ -131,28 +143,19 @@ static int chol_solve(void *impl, const double *b, double *x)
         c->Y->ncol = n;
         c->Y->d = 4;
     }
-    int ok = cholmod_l_solve2(CHOLMOD_A, c->L, c->B, NULL, &c->X, NULL, &c->Y, &c->E, &c->cm);
-    c->B->x = own;
-    if (!ok) return ctn_chol_error(c, "solve");
-    memcpy(x, c->X->x, n * sizeof(double));
-    return CTN_OK;
+    int ok = cholmod_l_solve2(CHOLMOD_A, c->L, &bh, NULL, &X, NULL, &c->Y, &c->E, &c->cm);
+    return ok ? CTN_OK : ctn_chol_error(c, "solve");
 }
 
-/* X = K \ B for k columns at once: B lent to solve2 through a header of its shape; the
- * block workspace is kept apart from the single solves' (solve2 reallocates a workspace
- * of another shape) and is reused while k stays the same. */
+/* X = K \ B for k columns at once, B and X lent to solve2; the block workspace is kept
+ * apart from the single solves' (solve2 reallocates a workspace of another shape) and is
+ * reused while k stays the same. */
 static int chol_solve_block(void *impl, const double *B, double *X, size_t k)
 {
     chol *c = impl;
-    size_t n = c->A->nrow;
-    cholmod_dense b = *c->B;
-    b.ncol = k;
-    b.nzmax = n * k;
-    b.x = (void *)B;
-    int ok = cholmod_l_solve2(CHOLMOD_A, c->L, &b, NULL, &c->Xk, NULL, &c->Yk, &c->Ek, &c->cm);
-    if (!ok) return ctn_chol_error(c, "block solve");
-    memcpy(X, c->Xk->x, n * k * sizeof(double));
-    return CTN_OK;
+    cholmod_dense bh = lent(c->B, k, B), xh = lent(c->B, k, X), *Xp = &xh;
+    int ok = cholmod_l_solve2(CHOLMOD_A, c->L, &bh, NULL, &Xp, NULL, &c->Yk, &c->Ek, &c->cm);
+    return ok ? CTN_OK : ctn_chol_error(c, "block solve");
 }
 
 /* Signs of D (the diagonal of a simplicial LDL' factor: each column's first entry). */
