@@ -7,7 +7,7 @@
  * factor's triangular sweeps) have no use for the second CPU: while they run, a helper
  * thread writes the basis's fresh pages (their first touch costs 4-8 s per GB there),
  * column by column ahead of the Lanczos process, which claims a column itself when it
- * gets there first. docs/solver.md, "Modal analysis". */
+ * gets there first. docs/solver.md, "Threads". */
 #include "linalg/blanczos.h"
 #include "linalg/lapack.h"
 #include "linalg/linsolve.h"
