@@ -48,20 +48,21 @@ static void *run_half(void *arg)
 }
 
 /* fn over [0, count) in two halves, the second on a helper thread when there are two
- * (and it could be started: else one after the other). */
-static void split(ctn_blz *z, half_fn fn, int count, const void *args)
+ * (and it could be started: else one after the other); 1 if it went in two halves. */
+static int split(ctn_blz *z, half_fn fn, int count, const void *args)
 {
     half h[2] = { { z, fn, 0, count, 0, args }, { z, fn, count, count, 1, args } };
     pthread_t t;
     if (z->threads < 2 || count < 2) {
         fn(&h[0]);
-        return;
+        return 0;
     }
     h[0].r1 = h[1].r0 = count / 2;
     int threaded = !pthread_create(&t, NULL, run_half, &h[1]);
     fn(&h[0]);
     if (threaded) pthread_join(t, NULL);
     else fn(&h[1]);
+    return 1;
 }
 
 /* ---- row-split BLAS ---- */
@@ -94,8 +95,7 @@ void ctn_blz_gemm_t(ctn_blz *z, int k, int w, const double *A, const double *B, 
 {
     gemm_args g = { 'T', k, w, 0, ldc, 1, 0, A, B, C };
     if (k <= 0 || w <= 0) return;
-    split(z, gemm_half, z->n, &g);
-    if (z->threads < 2) return;
+    if (!split(z, gemm_half, z->n, &g)) return;
     for (int c = 0; c < w; c++)
         for (int r = 0; r < k; r++) C[r + (size_t)ldc * (size_t)c] += z->Cpart[r + (size_t)k * (size_t)c];
 }

@@ -31,8 +31,8 @@ typedef struct ctn_eigen_ops {
     void (*absmul)(void *ud, const double *x, double lambda, double *y);
     /* Block solver: its threads for the dense work over the basis. 0: two from 50 000
      * unknowns on a machine of two CPUs or more, else one; 1: one; 2: two. With two,
-     * bmul and amul are called from two threads at once (on different vectors); the
-     * solves and absmul always from the calling thread. */
+     * bmul, amul and absmul are called from two threads at once (on different
+     * vectors); the solves always from the calling thread. */
     int threads;
 } ctn_eigen_ops;
 
