@@ -11,6 +11,7 @@
  *   restarts;
  * - every allocation may fail on the two-thread path: CTN_ERR_NOMEM, no leak (ASan). */
 #include "linalg/eigen.h"
+#include "linalg/linsolve.h"
 #include "check.h"
 
 #include <float.h>
@@ -138,7 +139,10 @@ static int pencil_make(pencil *p, int n1, int n2)
         if (i > 0) col[-1] = -a->k[i] * b->m[j];
         if (j > 0) col[-kd] = -a->m[i] * b->k[j];
     }
+    ctn_threads_saved saved;
+    ctn_threads_push(1, &saved);               /* the BLAS on one thread, as the solver's */
     dpbtrf_("U", &p->n, &kd, p->band, &ld, &info, 1);
+    ctn_threads_pop(&saved);
     return info != 0;
 }
 
