@@ -6,7 +6,9 @@
  * eigenpairs of K x = lambda M x by ARPACK (one vector per solve) and by block Lanczos
  * (linalg/eigen.h), each timed (wall and CPU) with its solves, block solves and
  * restarts, its largest residual |K x - lambda M x| / |K x|, and the largest relative
- * difference of its eigenvalues from the other's. Everything on one thread.
+ * difference of its eigenvalues from the other's. The factorization, the solves and
+ * ARPACK on one thread; the block solver's dense work on two from 50 000 DOFs, as in
+ * catena (BENCH_THREADS=1 or 2 sets it; BENCH_NO_ARPACK=1 runs the block solver only).
  *
  *   bench_eigen MODEL.cable [NEV]            (default NEV 20)
  */
