@@ -39,7 +39,7 @@ static double nrm2(const double *x, int n)
 static void blz_free(ctn_blz *z)
 {
     double *p[] = { z->V, z->MV, z->W, z->MW, z->X, z->T, z->S, z->theta, z->H, z->Y, z->R, z->Rb, z->est, z->work,
-                    z->AX, z->BX, z->C, z->lam0 };
+                    z->AX, z->BX, z->C, z->lam0, z->Cpart };
     for (size_t i = 0; i < sizeof p / sizeof *p; i++) ctn_free(p[i]);
     ctn_free(z->order);
 }
@@ -47,13 +47,13 @@ static void blz_free(ctn_blz *z)
 static int blz_alloc(ctn_blz *z)
 {
     ctn_ctx *c = z->ctx;
-    size_t n = (size_t)z->n, m = (size_t)z->mcap, b = (size_t)z->b, wb = b > 3 ? b : 3;
+    size_t n = (size_t)z->n, m = (size_t)z->mcap, b = (size_t)z->b, wb = b > 3 ? b : 3, ws = (size_t)z->ws;
     size_t nx = (size_t)(z->nkeep > z->nev ? z->nkeep : z->nev);
     z->lwork = 66 * z->mcap;
     z->V = ctn_malloc(c, n * m, sizeof(double));
     z->MV = ctn_malloc(c, n * m, sizeof(double));
-    z->W = ctn_malloc(c, n * wb, sizeof(double));
-    z->MW = ctn_malloc(c, n * wb, sizeof(double));
+    z->W = ctn_malloc(c, n * ws, sizeof(double));
+    z->MW = ctn_malloc(c, n * ws, sizeof(double));
     z->X = ctn_malloc(c, n * nx, sizeof(double));
     z->T = ctn_calloc(c, m * m, sizeof(double));
     z->S = ctn_malloc(c, m * m, sizeof(double));
@@ -69,16 +69,18 @@ static int blz_alloc(ctn_blz *z)
     z->BX = ctn_malloc(c, n * nx, sizeof(double));
     z->C = ctn_malloc(c, nx * nx, sizeof(double));
     z->lam0 = ctn_malloc(c, (size_t)z->nev, sizeof(double));
+    z->Cpart = ctn_malloc(c, m * m, sizeof(double));
     return z->V && z->MV && z->W && z->MW && z->X && z->T && z->S && z->Y && z->theta && z->est && z->H && z->R &&
-           z->Rb && z->work && z->order && z->AX && z->BX && z->C && z->lam0 ? CTN_OK : CTN_ERR_NOMEM;
+           z->Rb && z->work && z->order && z->AX && z->BX && z->C && z->lam0 && z->Cpart ? CTN_OK : CTN_ERR_NOMEM;
 }
 
-/* Append the new block (W[:, 0:q], B W) to the basis. */
+/* Append the new block (W[:, 0:q], B W) to the basis (its pages populated first). */
 static void append(ctn_blz *z, int q)
 {
     size_t n = (size_t)z->n, j = (size_t)z->j;
-    memcpy(z->V + n * j, z->W, n * (size_t)q * sizeof(double));
-    memcpy(z->MV + n * j, z->MW, n * (size_t)q * sizeof(double));
+    ctn_blz_populate_wait(z, z->j + q);
+    ctn_blz_copy(z, z->V + n * j, z->W, n * (size_t)q);
+    ctn_blz_copy(z, z->MV + n * j, z->MW, n * (size_t)q);
     z->j += q;
 }
 
@@ -87,12 +89,9 @@ static void append(ctn_blz *z, int q)
 static int start(ctn_blz *z)
 {
     int w = z->b, q = 0;
-    for (int c = 0; c < w; c++) {
-        double *x = z->X + (size_t)z->n * (size_t)c;
-        ctn_blz_random(z, z->W);
-        z->ops->bmul(z->ops->ud, z->W, x);
-    }
-    int rc = z->ops->solve_block(z->ops->ud, z->X, z->W, w);
+    for (int c = 0; c < w; c++) ctn_blz_random(z, z->W + (size_t)z->n * (size_t)c);
+    ctn_blz_apply(z, z->ops->bmul, z->W, z->MW, w);
+    int rc = z->ops->solve_block(z->ops->ud, z->MW, z->W, w);
     z->info->block_solves++;
     z->info->ops += w;
     if (!rc) ctn_blz_project(z, w);
@@ -209,11 +208,10 @@ static int ritz(ctn_blz *z, int *nconv)
 /* X = V[:, 0:ne] S[:, order[0:k]]: the k best Ritz vectors (from base: V or B V). */
 static void ritz_vectors(ctn_blz *z, const double *base, int k)
 {
-    const int n = z->n, ne = z->ne, ld = z->mcap;
-    const double one = 1, zero = 0;
+    const int ne = z->ne, ld = z->mcap;
     for (int i = 0; i < k; i++)
         memcpy(z->Y + (size_t)ld * (size_t)i, z->S + (size_t)ld * (size_t)z->order[i], (size_t)ne * sizeof(double));
-    dgemm_("N", "N", &n, &k, &ne, &one, base, &n, z->Y, &ld, &zero, z->X, &n, 1, 1);
+    ctn_blz_gemm_n(z, ne, k, 1, base, z->Y, ld, 0, z->X);
 }
 
 /* The final Rayleigh-Ritz: X = the nev + b best Ritz vectors (B X = B V times theirs: no
@@ -225,16 +223,16 @@ static void ritz_vectors(ctn_blz *z, const double *base, int k)
 static int rayleigh_ritz(ctn_blz *z, double *lambda)
 {
     const int n = z->n, k = z->nev + z->b < z->ne ? z->nev + z->b : z->ne, one_i = 1;
-    const double one = 1, zero = 0;
     double *G = z->Y, *F = z->Y + (size_t)k * (size_t)k;          /* k x k each */
     int info = 0;
     z->p = k;
+    ctn_blz_populate_wait(z, CTN_BLZ_ALL);
     ritz_vectors(z, z->MV, k);                                      /* B X */
-    memcpy(z->BX, z->X, (size_t)n * (size_t)k * sizeof(double));
+    ctn_blz_copy(z, z->BX, z->X, (size_t)n * (size_t)k);
     ritz_vectors(z, z->V, k);
-    for (int c = 0; c < k; c++) z->ops->amul(z->ops->ud, z->X + (size_t)n * (size_t)c, z->AX + (size_t)n * (size_t)c);
-    dgemm_("T", "N", &k, &k, &n, &one, z->X, &n, z->AX, &n, &zero, G, &k, 1, 1);     /* X^T A X */
-    dgemm_("T", "N", &k, &k, &n, &one, z->X, &n, z->BX, &n, &zero, F, &k, 1, 1);     /* X^T B X */
+    ctn_blz_apply(z, z->ops->amul, z->X, z->AX, k);
+    ctn_blz_gemm_t(z, k, k, z->X, z->AX, G, k);                     /* X^T A X */
+    ctn_blz_gemm_t(z, k, k, z->X, z->BX, F, k);                     /* X^T B X */
     dsygv_(&one_i, "V", "U", &k, G, &k, F, &k, z->est, z->work, &z->lwork, &info, 1, 1);
     if (info) return ctn_error(z->ctx, CTN_ERR_LINALG, "block eigen-solver: LAPACK dsygv failed (info %d)", info);
     int lo = 0;                                     /* the nev nearest sigma: a window */
@@ -246,28 +244,39 @@ static int rayleigh_ritz(ctn_blz *z, double *lambda)
 
 /* The largest true residual |A x - lambda B x| / |A x| of the pairs (lambda, X C) that
  * are above 1e-10 and more than 10 times their rounding bound (0 if none: converged);
- * the largest of all in info->max_residual. */
+ * the largest of all in info->max_residual. By chunks of ws / 2 pairs: A X C and B X C
+ * into W, then X C and the rounding bounds (absmul) of those above 1e-10 into B W. */
 static double residuals(ctn_blz *z, const double *lambda)
 {
-    const int n = z->n, k = z->p, one_i = 1;
-    const double one = 1, zero = 0;
-    double open = 0, *Ax = z->W, *Bx = z->W + n, *x = z->W + 2 * (size_t)n;
+    const int n = z->n, k = z->p, m = z->ws / 2;
+    double open = 0, lam[CTN_BLZ_BMAX], den[CTN_BLZ_BMAX], res[CTN_BLZ_BMAX], *Y = z->Y;
     z->info->max_residual = 0;
-    for (int c = 0; c < z->nev; c++) {
-        const double *cc = z->C + (size_t)k * (size_t)c;
-        dgemv_("N", &n, &k, &one, z->AX, &n, cc, &one_i, &zero, Ax, &one_i, 1);
-        dgemv_("N", &n, &k, &one, z->BX, &n, cc, &one_i, &zero, Bx, &one_i, 1);
-        double an = nrm2(Ax, n), bn = nrm2(Bx, n), d = fmax(an, fabs(z->sigma) * bn);
-        for (int i = 0; i < n; i++) Ax[i] -= lambda[c] * Bx[i];
-        double res = d > 0 ? nrm2(Ax, n) / d : 0;
-        z->info->max_residual = fmax(z->info->max_residual, res);
-        if (res <= BLZ_RESID) continue;
-        dgemv_("N", &n, &k, &one, z->X, &n, cc, &one_i, &zero, x, &one_i, 1);
-        memset(Bx, 0, (size_t)n * sizeof(double));
-        z->ops->absmul(z->ops->ud, x, lambda[c], Bx);
-        double fl = DBL_EPSILON * nrm2(Bx, n) / d;                   /* rounding of the residual */
-        z->info->max_floor = fmax(z->info->max_floor, fl);
-        if (res > BLZ_FLOOR * fl) open = fmax(open, res);
+    for (int c0 = 0; c0 < z->nev; c0 += m) {
+        int mc = z->nev - c0 < m ? z->nev - c0 : m, cnt = 0;
+        const double *C = z->C + (size_t)k * (size_t)c0;
+        double *Ax = z->W, *Bx = z->W + (size_t)n * (size_t)m, *x = z->MW, *abs = z->MW + (size_t)n * (size_t)m;
+        ctn_blz_gemm_n(z, k, mc, 1, z->AX, C, k, 0, Ax);
+        ctn_blz_gemm_n(z, k, mc, 1, z->BX, C, k, 0, Bx);
+        for (int c = 0; c < mc; c++) {
+            double *ax = Ax + (size_t)n * (size_t)c, *bx = Bx + (size_t)n * (size_t)c;
+            double an = nrm2(ax, n), bn = nrm2(bx, n), d = fmax(an, fabs(z->sigma) * bn);
+            for (int i = 0; i < n; i++) ax[i] -= lambda[c0 + c] * bx[i];
+            double r = d > 0 ? nrm2(ax, n) / d : 0;
+            z->info->max_residual = fmax(z->info->max_residual, r);
+            if (r <= BLZ_RESID) continue;
+            memcpy(Y + (size_t)k * (size_t)cnt, C + (size_t)k * (size_t)c, (size_t)k * sizeof(double));
+            lam[cnt] = lambda[c0 + c];
+            den[cnt] = d;
+            res[cnt++] = r;
+        }
+        if (!cnt) continue;
+        ctn_blz_gemm_n(z, k, cnt, 1, z->X, Y, k, 0, x);
+        ctn_blz_apply_abs(z, x, lam, abs, cnt);
+        for (int c = 0; c < cnt; c++) {
+            double fl = DBL_EPSILON * nrm2(abs + (size_t)n * (size_t)c, n) / den[c];   /* rounding of the residual */
+            z->info->max_floor = fmax(z->info->max_floor, fl);
+            if (res[c] > BLZ_FLOOR * fl) open = fmax(open, res[c]);
+        }
     }
     return open;
 }
@@ -278,10 +287,11 @@ static double residuals(ctn_blz *z, const double *lambda)
 static void restart(ctn_blz *z, int keep, int pending)
 {
     const size_t n = (size_t)z->n, k = (size_t)keep, q = pending ? (size_t)(z->j - z->ne) : 0, ld = (size_t)z->mcap;
+    ctn_blz_populate_wait(z, CTN_BLZ_ALL);
     ritz_vectors(z, z->V, keep);
-    memcpy(z->V, z->X, n * k * sizeof(double));
+    ctn_blz_copy(z, z->V, z->X, n * k);
     ritz_vectors(z, z->MV, keep);
-    memcpy(z->MV, z->X, n * k * sizeof(double));
+    ctn_blz_copy(z, z->MV, z->X, n * k);
     memmove(z->V + n * k, z->V + n * (size_t)z->ne, n * q * sizeof(double));
     memmove(z->MV + n * k, z->MV + n * (size_t)z->ne, n * q * sizeof(double));
     memset(z->T, 0, ld * ld * sizeof(double));
@@ -362,9 +372,7 @@ static int iterate(ctn_blz *z, double *lambda)
 /* The eigenvectors X C into V's first columns. */
 static void finish(ctn_blz *z)
 {
-    const int n = z->n, k = z->nev, p = z->p;
-    const double one = 1, zero = 0;
-    dgemm_("N", "N", &n, &k, &p, &one, z->X, &n, z->C, &p, &zero, z->V, &n, 1, 1);
+    ctn_blz_gemm_n(z, z->p, z->nev, 1, z->X, z->C, z->p, 0, z->V);
 }
 
 int ctn_eigen_block(ctn_ctx *ctx, int n, int nev, double sigma, const ctn_eigen_ops *ops, double *lambda,
@@ -387,13 +395,17 @@ int ctn_eigen_block(ctn_ctx *ctx, int n, int nev, double sigma, const ctn_eigen_
     z.mcap = nev + (nev > BLZ_EXTRA ? nev : BLZ_EXTRA);
     if (z.mcap > n) z.mcap = n;
     z.nkeep = nev + z.b;
+    z.ws = 2 * z.b > 8 ? 2 * z.b : 8;
     z.need = nev;
+    z.threads = ctn_blz_threads(ops->threads, n);
     info->block = z.b;
     ctn_threads_saved saved;
     ctn_threads_push(1, &saved);
     int rc = blz_alloc(&z);
+    if (!rc) ctn_blz_populate_start(&z);
     if (!rc) rc = start(&z);
     if (!rc) rc = iterate(&z, lambda);
+    ctn_blz_populate_stop(&z);
     ctn_threads_pop(&saved);
     if (!rc) {
         finish(&z);

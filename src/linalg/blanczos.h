@@ -8,6 +8,9 @@
 
 #include "linalg/eigen.h"
 
+#include <pthread.h>
+#include <stddef.h>
+
 #define CTN_BLZ_BMAX 16            /* widest block */
 #define CTN_BLZ_DEFLATE 1e-10      /* a column of a projected block this much smaller
                                       after the block's earlier columns are taken out
@@ -24,7 +27,9 @@ typedef struct ctn_blz {
     int nkeep;                 /* Ritz vectors kept by a restart */
     double sigma;
     double *V, *MV;            /* n x mcap: the basis (B-orthonormal) and B V */
-    double *W, *MW;            /* n x max(b, 3): a new block and B times it */
+    double *W, *MW;            /* n x ws: a new block and B times it (the columns from b:
+                                  the residuals' scratch) */
+    int ws;                    /* max(2 b, 8) */
     double *X;                 /* n x max(nkeep, nev): restart and Ritz vectors */
     double *AX, *BX;           /* n x (nev + b): A and B times the Ritz vectors */
     double *C;                 /* p x nev: the final Rayleigh-Ritz's eigenvectors */
@@ -46,6 +51,15 @@ typedef struct ctn_blz {
     int w;                     /* width of the last expanded block (columns of R) */
     int q;                     /* columns of the new block (rows of R) */
     unsigned long long seed;   /* random replacements of dependent columns */
+    int threads;               /* 1, or 2: the dense work split between two (blanczos_par.c) */
+    double *Cpart;             /* mcap x mcap: the helper thread's half of a product A^T B */
+    /* The helper thread that populates the basis's pages (blanczos_par.c): pf_units
+     * units (columns), those below pf_next claimed (pf_busy the one it works on, -1). */
+    int pf_on, pf_units, pf_next, pf_busy, pf_stop;
+    long page;
+    pthread_t pf_thread;
+    pthread_mutex_t pf_lock;
+    pthread_cond_t pf_done;
 } ctn_blz;
 
 /* W (w columns) -= V[:, 0:j] (V^T B W), twice (classical Gram-Schmidt, BLAS-3); the sum
@@ -59,5 +73,33 @@ void ctn_blz_project(ctn_blz *z, int w);
 int ctn_blz_orthonormalize(ctn_blz *z, int w, int room, int *q);
 /* A fixed pseudo-random vector (runs repeat exactly). */
 void ctn_blz_random(ctn_blz *z, double *x);
+
+/* blanczos_par.c: the threads of the dense work (ops->threads: 0 two from 50 000 rows on
+ * a machine of two CPUs or more, 1 one, 2 two). Tall matrices are n rows (ld n); the
+ * rows are split between the threads, so the results do not depend on their number
+ * beyond the rounding of the sum of two halves in ctn_blz_gemm_t. */
+int ctn_blz_threads(int asked, int n);
+/* C (k x w, ld ldc) = A^T B: A n x k, B n x w. */
+void ctn_blz_gemm_t(ctn_blz *z, int k, int w, const double *A, const double *B, double *C, int ldc);
+/* C = alpha A B + beta C: A n x k, B k x w (ld ldb), C n x w. */
+void ctn_blz_gemm_n(ctn_blz *z, int k, int w, double alpha, const double *A, const double *B, int ldb, double beta,
+                    double *C);
+/* X (n x w) = X U^-1, U w x w upper triangular (ld ldu). */
+void ctn_blz_trsm(ctn_blz *z, int w, const double *U, int ldu, double *X);
+/* dst[0:count] = src[0:count] (no overlap). */
+void ctn_blz_copy(ctn_blz *z, double *dst, const double *src, size_t count);
+/* Y[:, c] = op(X[:, c]) for the k columns (op: ops->bmul or ops->amul), half of them on
+ * the helper thread. */
+void ctn_blz_apply(ctn_blz *z, void (*op)(void *ud, const double *x, double *y), const double *X, double *Y, int k);
+/* Y[:, c] = ops->absmul(X[:, c], lambda[c]) (Y zeroed first) for the k columns. */
+void ctn_blz_apply_abs(ctn_blz *z, const double *X, const double *lambda, double *Y, int k);
+/* The helper thread that populates V and B V ahead of the process, then X, A X and B X
+ * (two threads only); wait: V's and B V's columns 0 .. upto - 1 populated (the caller
+ * populates those not yet claimed), upto = CTN_BLZ_ALL: X, A X and B X as well; stop:
+ * the thread ended (before anything is written that was not waited for). */
+#define CTN_BLZ_ALL 0x7fffffff
+void ctn_blz_populate_start(ctn_blz *z);
+void ctn_blz_populate_wait(ctn_blz *z, int upto);
+void ctn_blz_populate_stop(ctn_blz *z);
 
 #endif

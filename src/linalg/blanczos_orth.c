@@ -30,15 +30,14 @@ void ctn_blz_random(ctn_blz *z, double *x)
  * residuals of 2e-10 to 5e-10 that two full passes bring below 1e-10. */
 static void project(ctn_blz *z, double *Wp, double *MWp, int w, double *H)
 {
-    const int n = z->n, ld = z->mcap, j = z->j;
-    const double one = 1, zero = 0, mone = -1;
+    const int ld = z->mcap, j = z->j;
     double *H2 = z->H + (size_t)ld * (size_t)z->b;
     memset(H, 0, (size_t)ld * (size_t)w * sizeof(double));
     if (j == 0 || w == 0) return;
     for (int pass = 0; pass < 2; pass++) {
-        dgemm_("T", "N", &j, &w, &n, &one, z->MV, &n, Wp, &n, &zero, H2, &ld, 1, 1);   /* H2 = V^T B W */
-        dgemm_("N", "N", &n, &w, &j, &mone, z->V, &n, H2, &ld, &one, Wp, &n, 1, 1);    /* W -= V H2 */
-        if (MWp) dgemm_("N", "N", &n, &w, &j, &mone, z->MV, &n, H2, &ld, &one, MWp, &n, 1, 1);
+        ctn_blz_gemm_t(z, j, w, z->MV, Wp, H2, ld);                     /* H2 = V^T B W */
+        ctn_blz_gemm_n(z, j, w, -1, z->V, H2, ld, 1, Wp);               /* W -= V H2 */
+        if (MWp) ctn_blz_gemm_n(z, j, w, -1, z->MV, H2, ld, 1, MWp);
         for (int c = 0; c < w; c++)
             for (int r = 0; r < j; r++) H[r + (size_t)ld * (size_t)c] += H2[r + (size_t)ld * (size_t)c];
     }
@@ -146,17 +145,16 @@ static void compose(ctn_blz *z, const double *A, int q, int w)
  * is changed). */
 static int cholqr(ctn_blz *z, int w, const double *n0)
 {
-    const int n = z->n, b = z->b;
-    const double one = 1, zero = 0;
+    const int b = z->b;
     int info = 0;
-    dgemm_("T", "N", &w, &w, &n, &one, z->W, &n, z->MW, &n, &zero, z->Rb, &b, 1, 1);   /* G = W^T B W */
+    ctn_blz_gemm_t(z, w, w, z->W, z->MW, z->Rb, b);                   /* G = W^T B W */
     dpotrf_("U", &w, z->Rb, &b, &info, 1);
     for (int c = 0; !info && n0 && c < w; c++) info = !(z->Rb[c + b * c] > CTN_BLZ_CHOLQR * n0[c]);
     if (info) return 1;
     for (int c = 0; c < w; c++)
         for (int r = c + 1; r < w; r++) z->Rb[r + b * c] = 0;
-    dtrsm_("R", "U", "N", "N", &n, &w, &one, z->Rb, &b, z->W, &n, 1, 1, 1, 1);
-    dtrsm_("R", "U", "N", "N", &n, &w, &one, z->Rb, &b, z->MW, &n, 1, 1, 1, 1);
+    ctn_blz_trsm(z, w, z->Rb, b, z->W);
+    ctn_blz_trsm(z, w, z->Rb, b, z->MW);
     compose(z, z->Rb, w, w);
     return 0;
 }
@@ -165,9 +163,9 @@ int ctn_blz_orthonormalize(ctn_blz *z, int w, int room, int *q)
 {
     const int n = z->n, b = z->b;
     double n0[CTN_BLZ_BMAX] = { 0 };
+    ctn_blz_apply(z, z->ops->bmul, z->W, z->MW, w);
     for (int c = 0; c < w; c++) {
         double *v = z->W + (size_t)n * (size_t)c, *mv = z->MW + (size_t)n * (size_t)c;
-        z->ops->bmul(z->ops->ud, v, mv);
         n0[c] = sqrt(fmax(dot(v, mv, n), 0));                 /* |column| */
     }
     memset(z->R, 0, (size_t)b * (size_t)b * sizeof(double));

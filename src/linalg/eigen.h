@@ -29,6 +29,11 @@ typedef struct ctn_eigen_ops {
     /* y = |A| |x| + |lambda| |B| |x| (entrywise absolute values): eps times it bounds the
      * rounding of the residual A x - lambda B x itself. */
     void (*absmul)(void *ud, const double *x, double lambda, double *y);
+    /* Block solver: its threads for the dense work over the basis. 0: two from 50 000
+     * unknowns on a machine of two CPUs or more, else one; 1: one; 2: two. With two,
+     * bmul, amul and absmul are called from two threads at once (on different
+     * vectors); the solves always from the calling thread. */
+    int threads;
 } ctn_eigen_ops;
 
 typedef struct ctn_eigen_info {

@@ -81,3 +81,15 @@ void ctn_sym_matvec_abs(const ctn_pattern *p, const double *Ax, const double *x,
             if (i != j) y[j] += fabs(Ax[k] * x[i]);
         }
 }
+
+void ctn_sym_matvec_abs_pair(const ctn_pattern *p, const double *Ax, const double *Bx, double s, const double *x,
+                             double *y)
+{
+    for (size_t j = 0; j < p->n; j++)
+        for (int k = p->colptr[j]; k < p->colptr[j + 1]; k++) {
+            size_t i = (size_t)p->rowind[k];
+            double a = fabs(Ax[k]) + s * fabs(Bx[k]);
+            y[i] += a * fabs(x[j]);
+            if (i != j) y[j] += a * fabs(x[i]);
+        }
+}

@@ -28,5 +28,8 @@ int ctn_pcg_solve(ctn_pcg *g, const double *b, double *x, double target, int max
 void ctn_sym_matvec(const ctn_pattern *p, const double *Ax, const double *x, double *y);
 /* y += |A| |x| (entrywise absolute values; the rounding bound of A x). */
 void ctn_sym_matvec_abs(const ctn_pattern *p, const double *Ax, const double *x, double *y);
+/* y += |A| |x| + s |B| |x| (s >= 0), A and B on the same pattern: one pass over both. */
+void ctn_sym_matvec_abs_pair(const ctn_pattern *p, const double *Ax, const double *Bx, double s, const double *x,
+                             double *y);
 
 #endif

@@ -117,9 +117,7 @@ static void op_abs(void *ud, const double *x, double lambda, double *y)
 {
     ctn_modal *md = ud;
     ctn_pattern pat = { md->p->ndof, md->p->a->colptr, md->p->a->rowind };
-    ctn_sym_matvec_abs(&pat, md->p->Kx, x, y);
-    for (size_t q = 0; q < pat.n; q++) md->w1[q] = fabs(lambda) * x[q];
-    ctn_sym_matvec_abs(&pat, md->Mx, md->w1, y);
+    ctn_sym_matvec_abs_pair(&pat, md->p->Kx, md->Mx, fabs(lambda), x, y);
 }
 
 static void op_mass(void *ud, const double *x, double *y)
@@ -159,7 +157,8 @@ static int eigenpairs(ctn_modal *md, double *lambda, double **V)
     int block = asked == CTN_EIGEN_BLOCK;
     int n = (int)p->ndof, count = md->opt->count, nev = count < n || block ? count : n - 1;
     ctn_eigen_ops ops = { .ud = md, .solve = op_solve, .bmul = op_mass, .work = md->w0,
-                          .solve_block = op_solve_block, .amul = op_stiffness, .absmul = op_abs };
+                          .solve_block = op_solve_block, .amul = op_stiffness, .absmul = op_abs,
+                          .threads = p->opt.threads == 1 ? 1 : 0 };
     ctn_eigen_info info;
     memset(&info, 0, sizeof info);
     int rc = CTN_OK;
