@@ -19,6 +19,8 @@ typedef struct chol {
     double lnz;                         /* non-zeros of L from the analysis */
     double fl;                          /* flops of one factorization, from the analysis */
     int indefinite;                     /* simplicial LDL' instead of LL' */
+    int helpers;                        /* 1: a new factor's pages may be first touched on
+                                           two threads (not under threads=1) */
     cholmod_dense *Yk, *Ek;             /* solve2 workspace of the block solves */
 } chol;
 
@@ -30,6 +32,10 @@ const char *ctn_chol_status(int status);
 /* Choose the ordering (ord, or by the analyses' flops for CTN_ORDER_AUTO) and do the
  * symbolic analysis: c->L, c->ordering, c->lnz, c->fl. */
 int ctn_chol_analyze(chol *c, ctn_ordering ord);
+/* Write one byte of every page of a new factor's values, on two threads, before its
+ * first factorization (cholmod_touch.c); nothing for small factors, one CPU or
+ * c->helpers = 0. */
+void ctn_chol_touch(chol *c);
 
 /* The quotient graph of c->A (cholmod_quotient.c): ns supervariables, runs of
  * consecutive columns with identical patterns (a node's DOFs), supervariable s holding

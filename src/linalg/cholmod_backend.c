@@ -51,6 +51,7 @@ static int chol_create(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, int
     c->ctx = ctx;
     cholmod_l_start(&c->cm);
     c->indefinite = indefinite;
+    c->helpers = 1;
     c->cm.final_ll = 0;
     if (indefinite) c->cm.supernodal = CHOLMOD_SIMPLICIAL;
     c->cm.quick_return_if_not_posdef = 1;
@@ -100,6 +101,13 @@ static int chol_factor(void *impl, const double *Kx, double shift, ctn_factor_in
     double beta[2] = { shift, 0 };
     info->ok = 0;
     info->fail_col = -1;
+    if (c->L->is_super && c->L->xtype == CHOLMOD_PATTERN) {
+        /* the factor's values, allocated here as the factorization would, so that
+         * their pages are first touched on two threads (cholmod_touch.c) */
+        if (!cholmod_l_change_factor(CHOLMOD_REAL, 1, 1, 1, 1, c->L, &c->cm))
+            return ctn_chol_error(c, "factorization");
+        ctn_chol_touch(c);
+    }
     c->A->xtype = CHOLMOD_REAL;                  /* lend the caller's values */
     c->A->x = (void *)Kx;
     int ok = cholmod_l_factorize_p(c->A, beta, NULL, 0, c->L, &c->cm);
@@ -178,6 +186,8 @@ static int ldl_inertia(void *impl, double tol, long *negative, long *zero, long 
 
 static ctn_ordering chol_ordering(const void *impl) { return ((const chol *)impl)->ordering; }
 
+static void chol_helpers(void *impl, int allowed) { ((chol *)impl)->helpers = allowed; }
+
 static size_t chol_factor_nnz(const void *impl) { return (size_t)((const chol *)impl)->lnz; }
 
 static double chol_flops(const void *impl) { return ((const chol *)impl)->fl; }
@@ -186,10 +196,12 @@ const ctn_linsolve_ops ctn_cholmod_ll_ops = {
     .name = "cholmod", .indefinite = 0, .create = ll_create, .destroy = chol_destroy,
     .factor = chol_factor, .solve = chol_solve, .inertia = NULL, .ordering = chol_ordering,
     .factor_nnz = chol_factor_nnz, .flops = chol_flops, .solve_block = chol_solve_block,
+    .helpers = chol_helpers,
 };
 
 const ctn_linsolve_ops ctn_cholmod_ldl_ops = {
     .name = "cholmod-ldl", .indefinite = 1, .create = ldl_create, .destroy = chol_destroy,
     .factor = chol_factor, .solve = chol_solve, .inertia = ldl_inertia, .ordering = chol_ordering,
     .factor_nnz = chol_factor_nnz, .flops = chol_flops, .solve_block = chol_solve_block,
+    .helpers = chol_helpers,
 };

@@ -118,7 +118,11 @@ size_t ctn_linsolve_factor_nnz(const ctn_linsolve *s) { return s->ops->factor_nn
 
 double ctn_linsolve_flops(const ctn_linsolve *s) { return s->ops->flops ? s->ops->flops(s->impl) : 0; }
 
-void ctn_linsolve_set_threads(ctn_linsolve *s, int n) { s->threads = n > 0 ? n : 0; }
+void ctn_linsolve_set_threads(ctn_linsolve *s, int n)
+{
+    s->threads = n > 0 ? n : 0;
+    if (s->ops->helpers) s->ops->helpers(s->impl, n != 1);
+}
 
 int ctn_linsolve_threads(const ctn_linsolve *s) { return s->used ? s->used : 1; }
 

@@ -46,6 +46,9 @@ typedef struct ctn_linsolve_ops {
      * by columns (leading dimension n; X and B do not alias). One pass over the factor
      * for all k columns: level-3 BLAS in a supernodal factor. */
     int (*solve_block)(void *impl, const double *B, double *X, size_t k);
+    /* Optional: whether the solver may use a second thread around a factorization
+     * (allowed = 0 under threads=1; allowed by default). */
+    void (*helpers)(void *impl, int allowed);
 } ctn_linsolve_ops;
 
 typedef struct ctn_linsolve ctn_linsolve;
