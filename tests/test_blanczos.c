@@ -42,22 +42,28 @@ typedef struct pencil {
 
 static double row_diag(const row *r, int i) { return r->k[i] + r->k[i + 1]; }
 
-static void amul(void *ud, const double *x, double *y)
+/* The five-point stencil of A (absolute = 0: y = A x) or of the rounding bound
+ * (absolute = 1: y += (|A| + |lambda| B) |x|). */
+static void stencil(const pencil *p, const double *x, double lambda, int absolute, double *y)
 {
-    const pencil *p = ud;
     const row *a = &p->r[0], *b = &p->r[1];
     const int n1 = a->n, n2 = b->n;
+    const double sign = absolute ? 1.0 : -1.0;
+#define V(q) (absolute ? fabs(x[q]) : x[q])
     for (int j = 0; j < n2; j++)
         for (int i = 0; i < n1; i++) {
             size_t q = (size_t)i + (size_t)n1 * (size_t)j;
-            double s = (row_diag(a, i) * b->m[j] + a->m[i] * row_diag(b, j)) * x[q];
-            if (i > 0) s -= a->k[i] * b->m[j] * x[q - 1];
-            if (i + 1 < n1) s -= a->k[i + 1] * b->m[j] * x[q + 1];
-            if (j > 0) s -= a->m[i] * b->k[j] * x[q - (size_t)n1];
-            if (j + 1 < n2) s -= a->m[i] * b->k[j + 1] * x[q + (size_t)n1];
-            y[q] = s;
+            double s = (row_diag(a, i) * b->m[j] + a->m[i] * row_diag(b, j) + fabs(lambda) * a->m[i] * b->m[j]) * V(q);
+            if (i > 0) s += sign * a->k[i] * b->m[j] * V(q - 1);
+            if (i + 1 < n1) s += sign * a->k[i + 1] * b->m[j] * V(q + 1);
+            if (j > 0) s += sign * a->m[i] * b->k[j] * V(q - (size_t)n1);
+            if (j + 1 < n2) s += sign * a->m[i] * b->k[j + 1] * V(q + (size_t)n1);
+            y[q] = absolute ? y[q] + s : s;
         }
+#undef V
 }
+
+static void amul(void *ud, const double *x, double *y) { stencil(ud, x, 0.0, 0, y); }
 
 static void bmul(void *ud, const double *x, double *y)
 {
@@ -66,22 +72,7 @@ static void bmul(void *ud, const double *x, double *y)
     for (int q = 0; q < p->n; q++) y[q] = p->r[0].m[q % n1] * p->r[1].m[q / n1] * x[q];
 }
 
-static void absmul(void *ud, const double *x, double lambda, double *y)
-{
-    const pencil *p = ud;
-    const row *a = &p->r[0], *b = &p->r[1];
-    const int n1 = a->n, n2 = b->n;
-    for (int j = 0; j < n2; j++)
-        for (int i = 0; i < n1; i++) {
-            size_t q = (size_t)i + (size_t)n1 * (size_t)j;
-            double s = (row_diag(a, i) * b->m[j] + a->m[i] * row_diag(b, j) + fabs(lambda) * a->m[i] * b->m[j]) * fabs(x[q]);
-            if (i > 0) s += a->k[i] * b->m[j] * fabs(x[q - 1]);
-            if (i + 1 < n1) s += a->k[i + 1] * b->m[j] * fabs(x[q + 1]);
-            if (j > 0) s += a->m[i] * b->k[j] * fabs(x[q - (size_t)n1]);
-            if (j + 1 < n2) s += a->m[i] * b->k[j + 1] * fabs(x[q + (size_t)n1]);
-            y[q] += s;
-        }
-}
+static void absmul(void *ud, const double *x, double lambda, double *y) { stencil(ud, x, lambda, 1, y); }
 
 static int solve_block(void *ud, const double *X, double *Y, int k)
 {

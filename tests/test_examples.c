@@ -8,6 +8,7 @@
  * and, when converged and not arc-length, the reactions must balance the loads. */
 #include "catena.h"
 #include "check.h"
+#include "files.h"
 
 #include <dirent.h>
 #include <stdlib.h>
@@ -116,23 +117,16 @@ static int run_example(const char *path)
     return lines;
 }
 
+static void visit(const char *path, void *data)
+{
+    (void)data;
+    CHECK_MSG(run_example(path) > 0, "%s has no #@ expectation", path);
+}
+
 int main(void)
 {
     const char *dirs[] = { "examples/paper", "examples/robust", "examples/springs", "examples/catenary", "examples/design" };
-    int files = 0;
-    for (size_t i = 0; i < sizeof dirs / sizeof *dirs; i++) {
-        DIR *dir = opendir(dirs[i]);
-        CHECK_MSG(dir != NULL, "cannot open %s (run from the project root)", dirs[i]);
-        for (struct dirent *de; dir && (de = readdir(dir));) {
-            size_t len = strlen(de->d_name);
-            if (len < 7 || strcmp(de->d_name + len - 6, ".cable")) continue;
-            char path[1024];
-            snprintf(path, sizeof path, "%s/%s", dirs[i], de->d_name);
-            CHECK_MSG(run_example(path) > 0, "%s has no #@ expectation", path);
-            files++;
-        }
-        if (dir) closedir(dir);
-    }
+    int files = each_example(dirs, sizeof dirs / sizeof *dirs, visit, NULL);
     CHECK(files >= 8);
     CHECK_DONE();
 }

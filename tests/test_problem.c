@@ -13,6 +13,7 @@
 #include "assemble/dofmap.h"
 #include "catena.h"
 #include "check.h"
+#include "slack_model.h"
 
 #include <stdlib.h>
 
@@ -114,20 +115,6 @@ static void test_unstable_mast(void)
     CHECK_MSG(!st.stable && st.negative == 1 && !st.semidefinite, "stable %d negative %ld", st.stable, st.negative);
     CHECK_MSG(st.node == 2 && st.dir == 1, "node %d dir %d", st.node, st.dir);    /* top, out of plane */
 }
-
-/* A taut cable, and node 4 hanging from it by a slack tension-only strut: unloaded, in
- * equilibrium, but with no stiffness at all. */
-static const char *slack_text =
-    "material rope E=1e8 tension-only\n"
-    "section s material=rope A=1e-4\n"
-    "node 1 0 0 0 fix=xyz\n"
-    "node 2 10 0 0\n"
-    "node 3 20 0 0 fix=xyz\n"
-    "node 4 10 0 -3\n"
-    "element 1 1 2 section=s l0=9.99\n"
-    "element 2 2 3 section=s l0=9.99\n"
-    "element 3 2 4 section=s l0=3.5\n"
-    "load 2 0 0 -1\n";
 
 static void test_semidefinite(void)
 {

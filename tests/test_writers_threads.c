@@ -4,6 +4,7 @@
  *   - under a file size limit that every file but the smallest exceeds, whichever
  *     thread fails: CTN_ERR_IO with the write error, nothing committed, no temporary. */
 #include "check.h"
+#include "files.h"
 
 #include <catena.h>
 
@@ -12,46 +13,6 @@
 #include <stdlib.h>
 #include <sys/resource.h>
 #include <unistd.h>
-
-static char *read_all(const char *path, size_t *len)
-{
-    FILE *f = fopen(path, "rb");
-    char *s = NULL;
-    *len = 0;
-    if (!f) return NULL;
-    if (!fseek(f, 0, SEEK_END)) {
-        long n = ftell(f);
-        if (n >= 0 && !fseek(f, 0, SEEK_SET) && (s = malloc((size_t)n + 1)) && fread(s, 1, (size_t)n, f) == (size_t)n)
-            *len = (size_t)n;
-    }
-    fclose(f);
-    return s;
-}
-
-static int count_entries(const char *dir)
-{
-    DIR *d = opendir(dir);
-    if (!d) return -1;
-    int n = 0;
-    for (struct dirent *e; (e = readdir(d));)
-        if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..")) n++;
-    closedir(d);
-    return n;
-}
-
-static void remove_dir(const char *dir)
-{
-    DIR *d = opendir(dir);
-    if (!d) return;
-    for (struct dirent *e; (e = readdir(d));) {
-        char path[4096];
-        if (!strcmp(e->d_name, ".") || !strcmp(e->d_name, "..")) continue;
-        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-        unlink(path);
-    }
-    closedir(d);
-    rmdir(dir);
-}
 
 /* A taut cable of 100 000 elements: 200 001 nodes and elements, above the threshold. */
 static const char *model_text =
@@ -91,7 +52,7 @@ int main(void)
             size_t n1, n2;
             snprintf(p1, sizeof p1, "%s/%s", one, names[i]);
             snprintf(p2, sizeof p2, "%s/%s", two, names[i]);
-            char *a = read_all(p1, &n1), *b = read_all(p2, &n2);
+            char *a = read_all_len(p1, &n1), *b = read_all_len(p2, &n2);
             CHECK_MSG(a && b && n1 == n2 && n1 > 1000 && !memcmp(a, b, n1), "%s: %zu and %zu bytes", names[i], n1, n2);
             free(a);
             free(b);
