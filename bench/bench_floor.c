@@ -17,6 +17,7 @@
  */
 #include "assemble/asm.h"
 #include "linalg/linsolve.h"
+#include "solve/overlap.h"
 
 #include "bench_common.h"
 
@@ -107,11 +108,32 @@ static int time_bare(const variant *v, const ctn_asm *a, const double *Kx, int r
     return 0;
 }
 
+/* The residual and tangent at d and the tangent's factorization: overlapped as pure
+ * Newton does (solve/overlap.c) when `overlap` is set and possible, else one after the
+ * other as the other methods do; the assembly's wall time into *t_as (overlapped: its
+ * own, hidden behind the factorization). */
+static int assemble_factor(ctn_asm *a, ctn_linsolve *ls, const double *d, double *f, double *Kx, int overlap,
+                           ctn_factor_info *info, double *t_as)
+{
+    if (overlap && ctn_overlap_possible(a, ls)) {
+        ctn_overlap o;
+        int rc = ctn_overlap_eval_factor(a, ls, d, 0, f, Kx, 0.0, &o);
+        *info = o.info;
+        *t_as = o.t_asm;
+        return rc ? rc : o.collapsed ? CTN_ERR_LINALG : CTN_OK;
+    }
+    double t0 = now();
+    if (ctn_asm_eval(a, d, 0, f, Kx, NULL, NULL)) return CTN_ERR_LINALG;
+    *t_as = now() - t0;
+    return ctn_linsolve_factor(ls, Kx, 0.0, info);
+}
+
 /* catena's backend ("cholmod", natural ordering) on Kx; with a state d, catena's whole
  * Newton iteration instead: the residual and the tangent assembled at d (ctn_asm_eval,
  * as every iteration does) before the factorize and the solve, which is what the issue's
  * "assembly + factorization + solves per iteration" is. */
-static int time_catena(ctn_ctx *ctx, ctn_asm *a, const double *Kx0, const double *d, int reps, timing *t)
+static int time_catena(ctn_ctx *ctx, ctn_asm *a, const double *Kx0, const double *d, int overlap, int reps,
+                       timing *t)
 {
     ctn_pattern pat = { a->ndof, a->colptr, a->rowind };
     ctn_linsolve *ls = NULL;
@@ -122,14 +144,12 @@ static int time_catena(ctn_ctx *ctx, ctn_asm *a, const double *Kx0, const double
     if (!rc) memcpy(Kx, Kx0, a->nnz * sizeof *Kx);
     for (int k = -1; !rc && k < reps; k++) {
         for (size_t i = 0; !d && i < a->ndof; i++) f[i] = 1.0;
-        double c0 = cpu_now(), t0 = now();
-        if (d && ctn_asm_eval(a, d, 0, f, Kx, NULL, NULL)) rc = CTN_ERR_LINALG;
-        double ts0 = now();
-        if (!rc) rc = ctn_linsolve_factor(ls, Kx, 0.0, &info);
+        double c0 = cpu_now(), t0 = now(), tas = 0;
+        rc = d ? assemble_factor(a, ls, d, f, Kx, overlap, &info, &tas) : ctn_linsolve_factor(ls, Kx, 0.0, &info);
         double t1 = now();
         if (!rc) rc = info.ok ? ctn_linsolve_solve(ls, f, f) : CTN_ERR_LINALG;
         double t2 = now(), c2 = cpu_now();
-        if (k >= 0) { tf[k] = t1 - t0; ts[k] = t2 - t1; tc[k] = c2 - c0; ta[k] = ts0 - t0; }
+        if (k >= 0) { tf[k] = t1 - t0; ts[k] = t2 - t1; tc[k] = c2 - c0; ta[k] = tas; }
     }
     ctn_linsolve_destroy(&ls);
     free(f);
@@ -146,7 +166,8 @@ static int time_catena(ctn_ctx *ctx, ctn_asm *a, const double *Kx0, const double
  * cholmod_l_factorize + cholmod_l_solve, analyzed once) measured alternately, one of
  * each per repetition, so that a slow spell of this shared machine falls on both: the
  * median of the per-repetition ratio, and the medians of each. */
-static int time_paired(ctn_ctx *ctx, ctn_asm *a, const double *Kx0, const double *d, int reps, double out[3])
+static int time_paired(ctn_ctx *ctx, ctn_asm *a, const double *Kx0, const double *d, int overlap, int reps,
+                       double out[3])
 {
     ctn_pattern pat = { a->ndof, a->colptr, a->rowind };
     ctn_linsolve *ls = NULL;
@@ -165,9 +186,8 @@ static int time_paired(ctn_ctx *ctx, ctn_asm *a, const double *Kx0, const double
     cholmod_dense *B = L ? cholmod_l_ones(a->ndof, 1, CHOLMOD_REAL, &cm) : NULL;
     if (!rc && !B) rc = CTN_ERR_LINALG;
     for (int k = -1; !rc && k < reps; k++) {
-        double t0 = now();
-        if (ctn_asm_eval(a, d, 0, f, Kx, NULL, NULL)) rc = CTN_ERR_LINALG;
-        if (!rc) rc = ctn_linsolve_factor(ls, Kx, 0.0, &info);
+        double t0 = now(), tas;
+        rc = assemble_factor(a, ls, d, f, Kx, overlap, &info, &tas);
         if (!rc) rc = info.ok ? ctn_linsolve_solve(ls, f, f) : CTN_ERR_LINALG;
         double t1 = now();
         int ok = cholmod_l_factorize(A, L, &cm);
@@ -243,16 +263,19 @@ int main(int argc, char **argv)
            load_average());
     printf("%-48s %10s %10s %10s %10s\n", "variant", "factor[ms]", "solve[ms]", "total[ms]", "CPU[ms]");
     timing t;
-    if (!time_catena(ctx, a, Kx, NULL, reps, &t))
+    if (!time_catena(ctx, a, Kx, NULL, 0, reps, &t))
         printf("%-48s %10.2f %10.2f %10.2f %10.2f\n", "catena backend (\"cholmod\")", 1e3 * t.fac, 1e3 * t.sol,
                1e3 * (t.fac + t.sol), 1e3 * t.cpu);
-    if (!time_catena(ctx, a, Kx, d, reps, &t)) print_iteration("catena iteration (assembly + factor, solve)", &t);
-    if (!time_catena(ctx, a1, Kx, d, reps, &t)) print_iteration("  the same, assembly on one thread", &t);
-    if (!time_catena(ctx, ag, Kx, d, reps, &t)) print_iteration("  the same, generic assembly (scatter)", &t);
+    if (!time_catena(ctx, a, Kx, d, 1, reps, &t)) print_iteration("catena pure Newton (assembly beside factor)", &t);
+    if (!time_catena(ctx, a, Kx, d, 0, reps, &t)) print_iteration("catena iteration (assembly + factor, solve)", &t);
+    if (!time_catena(ctx, a1, Kx, d, 0, reps, &t)) print_iteration("  the same, assembly on one thread", &t);
+    if (!time_catena(ctx, ag, Kx, d, 0, reps, &t)) print_iteration("  the same, generic assembly (scatter)", &t);
     double pr[3];
-    if (!time_paired(ctx, a, Kx, d, reps, pr))
-        printf("paired, alternately: iteration %.2f ms, floor (bare factorize + solve) %.2f ms, iteration / floor "
-               "%.3f (median of the ratios)\n", 1e3 * pr[0], 1e3 * pr[1], pr[2]);
+    for (int ov = 1; ov >= 0; ov--)
+        if (!time_paired(ctx, a, Kx, d, ov, reps, pr))
+            printf("paired, alternately: %s %.2f ms, floor (bare factorize + solve) %.2f ms, iteration / floor "
+                   "%.3f (median of the ratios)\n", ov ? "pure Newton iteration (assembly beside factor)" :
+                   "iteration (assembly, then factor)", 1e3 * pr[0], 1e3 * pr[1], pr[2]);
     for (size_t i = 0; i < sizeof vs / sizeof *vs; i++)
         if (!time_bare(&vs[i], a, Kx, reps, &t))
             printf("%-48s %10.2f %10.2f %10.2f %10.2f\n", vs[i].name, 1e3 * t.fac, 1e3 * t.sol, 1e3 * (t.fac + t.sol),

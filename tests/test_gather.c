@@ -16,6 +16,7 @@
 #include "assemble/asm.h"
 #include "element/axial.h"
 #include "catena.h"
+#include "chain_model.h"
 #include "check.h"
 
 #include <stdlib.h>
@@ -160,17 +161,8 @@ static ctn_model *read_model(ctn_ctx *ctx, const char *text)
  * for the two threads (their split falls inside it). */
 static ctn_model *chain(ctn_ctx *ctx, int n)
 {
-    const double A[3] = { 0, 0, 0 }, B[3] = { 200, 0, 0 }, g[3] = { 0, -1, 0 };
-    ctn_cable_spec spec = { .n = n, .length = 250.8777, .shape = CTN_SHAPE_ARC, .guess_strain = 1e-3,
-                            .start = CTN_START_CATENARY, .prestress = CTN_PRESTRESS_NONE };
-    ctn_model *m = NULL;
-    ctn_model_create(ctx, &m);
-    ctn_model_set_gravity(m, g);
-    ctn_model_add_material(m, "steel", 2.0e8, CTN_STRAIN_GREEN_LAGRANGE, 0);
-    ctn_model_add_section(m, "strand", "steel", 3.14e-4, 0.1);
-    ctn_model_add_node(m, 1, A, CTN_FIX_ALL);
-    ctn_model_add_node(m, 2, B, CTN_FIX_ALL);
-    CHECK(ctn_model_add_cable(m, 1, 2, "strand", &spec, NULL, NULL) == CTN_OK);
+    ctn_model *m = chain_model(ctx, n);
+    CHECK(m != NULL);
     return m;
 }
 

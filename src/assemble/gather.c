@@ -28,6 +28,8 @@
 #define PLAIN 8                       /* free[q] bit: a plain node, its lower neighbours'
                                          count in bits 4 .. 7 */
 #define PLAIN_DEG 8                   /* elements of a plain node at most */
+#define FEED_CHUNKS 16                /* chunks between two publications of the columns
+                                         done (ctn_asm_gather_feed) */
 
 /* k's upper triangle (ctn_axial_k) at (i, j) of the symmetric 3 x 3. */
 static const int sym3[3][3] = { { 0, 1, 2 }, { 1, 3, 4 }, { 2, 4, 5 } };
@@ -214,6 +216,7 @@ typedef struct part {
     ctn_asm_kept *keep;        /* KEEP */
     double U;                  /* energy of the elements whose first node is here */
     size_t bad;                /* first collapsed element, SIZE_MAX if none */
+    ctn_feed *feed;            /* NULL, or where the columns done are published */
 } part;
 
 /* Evaluate element e of block blk, joining nodes n1 and n2, into kept (its forces, and its
@@ -392,6 +395,17 @@ static size_t node_columns(const part *pt, size_t q, const double D[6], size_t k
     return k;
 }
 
+/* The columns of the nodes before q: the first equation of node q or a later one. */
+static size_t columns_before(const ctn_asm *a, size_t q)
+{
+    for (; q < a->nn; q++)
+        for (int j = 0; j < 3; j++) {
+            int c = a->map.eq[3 * q + (size_t)j];
+            if (c >= 0) return (size_t)c;
+        }
+    return a->ndof;
+}
+
 static void *run_part(void *arg)
 {
     part *pt = arg;
@@ -399,6 +413,8 @@ static void *run_part(void *arg)
     double U = 0;
     for (size_t i = 0; i < KEEP; i++) pt->keep[i].e = -1;   /* nothing kept yet */
     for (size_t qa = pt->q0; qa < pt->q1; qa += CHUNK) {
+        if (pt->feed && qa > pt->q0 && (qa - pt->q0) % (CHUNK * FEED_CHUNKS) == 0)
+            ctn_feed_publish(pt->feed, columns_before(pt->a, qa));
         size_t qb = qa + CHUNK < pt->q1 ? qa + CHUNK : pt->q1;
         eval_chunk(pt, qa, qb, &U, &bad);
         for (size_t q = qa; q < qb; q++) {
@@ -437,7 +453,7 @@ int ctn_asm_gather_eval(const ctn_asm *a, const double *d, unsigned mode, double
         size_t q0 = a->nn * (size_t)i / (size_t)np;
         pt[i] = (part){ a, d, mode, f, Kx, q0, a->nn * (size_t)(i + 1) / (size_t)np, Kx ? first_value(a, q0) : 0,
                         g->work + (size_t)i * work_stride(g), g->work + (size_t)i * work_stride(g) + (size_t)g->maxdeg * 6,
-                        g->keep + (size_t)i * KEEP, 0.0, SIZE_MAX };
+                        g->keep + (size_t)i * KEEP, 0.0, SIZE_MAX, NULL };
     }
     pthread_t t;
     int threaded = np == 2 && !pthread_create(&t, NULL, run_part, &pt[1]);
@@ -446,5 +462,18 @@ int ctn_asm_gather_eval(const ctn_asm *a, const double *d, unsigned mode, double
     else if (np == 2) run_part(&pt[1]);
     *U = pt[0].U + (np == 2 ? pt[1].U : 0.0);
     *bad = np == 2 && pt[1].bad < pt[0].bad ? pt[1].bad : pt[0].bad;
+    return *bad != SIZE_MAX;
+}
+
+int ctn_asm_gather_feed(const ctn_asm *a, const double *d, unsigned mode, double *f, double *Kx, double *U,
+                        size_t *bad, ctn_feed *feed)
+{
+    const ctn_asm_gather *g = a->gather;
+    part pt = { a, d, mode, f, Kx, 0, a->nn, Kx ? first_value(a, 0) : 0, g->work, g->work + (size_t)g->maxdeg * 6,
+                g->keep, 0.0, SIZE_MAX, feed };
+    run_part(&pt);
+    ctn_feed_publish(feed, a->ndof);
+    *U = pt.U;
+    *bad = pt.bad;
     return *bad != SIZE_MAX;
 }

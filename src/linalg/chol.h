@@ -5,6 +5,7 @@
 #ifndef CTN_LINALG_CHOL_H
 #define CTN_LINALG_CHOL_H
 
+#include "core/feed.h"
 #include "linalg/linsolve.h"
 
 #include <cholmod.h>
@@ -36,6 +37,14 @@ int ctn_chol_analyze(chol *c, ctn_ordering ord);
  * first factorization (cholmod_touch.c); nothing for small factors, one CPU or
  * c->helpers = 0. */
 void ctn_chol_touch(chol *c);
+
+/* cholmod_feed.c: whether the next factorization can follow the assembly row block by
+ * row block (a simplicial LDL' factor in the natural ordering, already factorized once),
+ * and that factorization (K + shift I; the same factor as chol's factor op). The first
+ * pivot d <= 0 of an LDL' factor among rows j0 .. j1 - 1, -1 if none. */
+int ctn_chol_feedable(const chol *c);
+int ctn_chol_factor_feed(chol *c, const double *Kx, double shift, ctn_feed *feed, ctn_factor_info *info);
+long ctn_chol_first_nonpositive(const cholmod_factor *L, size_t j0, size_t j1);
 
 /* The quotient graph of c->A (cholmod_quotient.c): ns supervariables, runs of
  * consecutive columns with identical patterns (a node's DOFs), supervariable s holding

@@ -87,12 +87,7 @@ static int ldl_create(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, void
  * none or the factor is LL'. */
 static long first_nonpositive(const cholmod_factor *L)
 {
-    if (L->is_super || L->is_ll) return -1;
-    const SuiteSparse_long *p = L->p;
-    const double *x = L->x;
-    for (size_t j = 0; j < L->n; j++)
-        if (!(x[p[j]] > 0)) return (long)j;
-    return -1;
+    return L->is_super || L->is_ll ? -1 : ctn_chol_first_nonpositive(L, 0, L->n);
 }
 
 static int chol_factor(void *impl, const double *Kx, double shift, ctn_factor_info *info)
@@ -184,6 +179,13 @@ static int ldl_inertia(void *impl, double tol, long *negative, long *zero, long 
     return CTN_OK;
 }
 
+static int chol_feedable(const void *impl) { return ctn_chol_feedable(impl); }
+
+static int chol_factor_feed(void *impl, const double *Kx, double shift, ctn_feed *feed, ctn_factor_info *info)
+{
+    return ctn_chol_factor_feed(impl, Kx, shift, feed, info);
+}
+
 static ctn_ordering chol_ordering(const void *impl) { return ((const chol *)impl)->ordering; }
 
 static void chol_helpers(void *impl, int allowed) { ((chol *)impl)->helpers = allowed; }
@@ -196,12 +198,12 @@ const ctn_linsolve_ops ctn_cholmod_ll_ops = {
     .name = "cholmod", .indefinite = 0, .create = ll_create, .destroy = chol_destroy,
     .factor = chol_factor, .solve = chol_solve, .inertia = NULL, .ordering = chol_ordering,
     .factor_nnz = chol_factor_nnz, .flops = chol_flops, .solve_block = chol_solve_block,
-    .helpers = chol_helpers,
+    .helpers = chol_helpers, .feedable = chol_feedable, .factor_feed = chol_factor_feed,
 };
 
 const ctn_linsolve_ops ctn_cholmod_ldl_ops = {
     .name = "cholmod-ldl", .indefinite = 1, .create = ldl_create, .destroy = chol_destroy,
     .factor = chol_factor, .solve = chol_solve, .inertia = ldl_inertia, .ordering = chol_ordering,
     .factor_nnz = chol_factor_nnz, .flops = chol_flops, .solve_block = chol_solve_block,
-    .helpers = chol_helpers,
+    .helpers = chol_helpers, .feedable = chol_feedable, .factor_feed = chol_factor_feed,
 };

@@ -14,6 +14,7 @@
 
 #include "catena/solve.h"
 #include "core/ctx.h"
+#include "core/feed.h"
 
 /* A symmetric matrix's upper triangle in compressed columns, rows sorted. */
 typedef struct ctn_pattern {
@@ -49,6 +50,12 @@ typedef struct ctn_linsolve_ops {
     /* Optional: whether the solver may use a second thread around a factorization
      * (allowed = 0 under threads=1; allowed by default). */
     void (*helpers)(void *impl, int allowed);
+    /* Optional (both or neither): whether the next factorization can start before the
+     * matrix is complete, and that factorization, which waits on feed for the columns it
+     * needs (the assembly's thread publishes them in order) and returns once feed is
+     * complete. The same factor as factor. */
+    int (*feedable)(const void *impl);
+    int (*factor_feed)(void *impl, const double *Kx, double shift, ctn_feed *feed, ctn_factor_info *info);
 } ctn_linsolve_ops;
 
 typedef struct ctn_linsolve ctn_linsolve;
@@ -63,6 +70,12 @@ const ctn_linsolve_ops *ctn_linsolve_type(const ctn_linsolve *s);
 /* Factor K + shift I from values Kx (pattern order). A failed pivot is an outcome in
  * *info (status CTN_OK); a backend failure is a status (message in the context). */
 int ctn_linsolve_factor(ctn_linsolve *s, const double *Kx, double shift, ctn_factor_info *info);
+/* Whether the next factorization can follow an assembly on another thread, and that
+ * factorization: it waits on feed for the columns it needs (published in order by the
+ * assembling thread) and returns once all are published; the same factor as
+ * ctn_linsolve_factor. Its CPU time is the calling thread's. */
+int ctn_linsolve_feedable(const ctn_linsolve *s);
+int ctn_linsolve_factor_feed(ctn_linsolve *s, const double *Kx, double shift, ctn_feed *feed, ctn_factor_info *info);
 /* x = K \ b with the last factorization (x and b may alias). */
 int ctn_linsolve_solve(ctn_linsolve *s, const double *b, double *x);
 /* X = K \ B for the n x k block B (columns, leading dimension n; X and B do not alias):
@@ -81,6 +94,8 @@ double ctn_linsolve_flops(const ctn_linsolve *s);
 void ctn_linsolve_set_threads(ctn_linsolve *s, int n);
 int ctn_linsolve_threads(const ctn_linsolve *s);
 double ctn_linsolve_cpu(const ctn_linsolve *s);
+/* Numeric factorizations so far (which one the factor held is). */
+unsigned long ctn_linsolve_count(const ctn_linsolve *s);
 
 /* Threads (threads.c): run the calling thread's OpenMP regions on n threads (n = 1: no
  * parallel region at all, as OpenMP's max-active-levels 0, which is process-wide) until

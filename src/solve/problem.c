@@ -1,6 +1,7 @@
 /* The problem: setup once per model, residual and potential at a load parameter t,
  * factorization with an optional shift, solves. */
 #include "solve/modes.h"
+#include "solve/overlap.h"
 
 #include <math.h>
 #include <string.h>
@@ -78,6 +79,9 @@ static int setup(ctn_problem *p)
     ctn_linsolve_set_threads(p->ls, p->opt.threads);
     int reuse = p->strategy->globalized && p->opt.reuse && !p->fl && !ctn_linsolve_type(p->ls)->indefinite;
     if (reuse && !(p->cg = ctn_calloc(p->ctx, 4 * p->ndof, sizeof(double)))) return CTN_ERR_NOMEM;
+    /* Pure Newton factorizes every tangent it assembles (but the converged state's) */
+    p->overlap = p->opt.method == CTN_METHOD_NEWTON && !p->opt.linesearch && !p->fl && p->opt.threads != 1 &&
+                 !ctn_linsolve_type(p->ls)->indefinite;
     return CTN_OK;
 }
 
@@ -197,13 +201,43 @@ void ctn_problem_step_loads(ctn_problem *p, size_t k)
     ctn_model_step_temperatures(p->m, k, p->dT1);
 }
 
+/* f_int and K at d, and K factorized beside its assembly (overlap.c): counted and timed
+ * as a factorization, and held for ctn_problem_factor. */
+static int eval_overlapped(ctn_problem *p, const double *d, double *U, size_t *bad, int *collapsed)
+{
+    ctn_overlap o;
+    int rc = ctn_overlap_eval_factor(p->a, p->ls, d, p->mode, p->fint, p->Kx, 0.0, &o);
+    *U = o.U;
+    *bad = o.bad;
+    *collapsed = o.collapsed;
+    p->sum->t_factor += o.t_fac;
+    p->sum->t_factor_cpu += ctn_linsolve_cpu(p->ls);
+    p->sum->threads = ctn_linsolve_threads(p->ls);
+    p->sum->factorizations++;
+    p->sum->t_assemble -= o.t_fac;                /* the caller adds the whole call */
+    p->shift = 0;
+    p->factored_at = NULL;
+    p->last_definite = p->spd_factor = !rc && !o.collapsed && o.info.ok;
+    p->pre.valid = !rc && !o.collapsed;
+    p->pre.ok = o.info.ok;
+    p->pre.fail_col = o.info.fail_col;
+    p->pre.count = ctn_linsolve_count(p->ls);
+    return rc;
+}
+
 int ctn_problem_residual(ctn_problem *p, const double *d, int with_K, double *rnorm, double *pi,
                          int *valid)
 {
     double t0 = ctn_clock(), U = 0, work = 0;
     const int *eq = p->a->map.eq;
     size_t bad = 0;
-    *valid = !ctn_asm_eval(p->a, d, p->mode, p->fint, with_K ? p->Kx : NULL, pi ? &U : NULL, &bad);
+    p->pre.valid = 0;
+    if (with_K && p->overlap && ctn_overlap_possible(p->a, p->ls)) {
+        int collapsed = 0, rc = eval_overlapped(p, d, &U, &bad, &collapsed);
+        if (rc) return rc;
+        *valid = !collapsed;
+    }
+    else *valid = !ctn_asm_eval(p->a, d, p->mode, p->fint, with_K ? p->Kx : NULL, pi ? &U : NULL, &bad);
     if (!*valid) p->sum->fail_element = p->m->elements.v[bad].id;     /* reported if not converged */
     if (*valid) {
         const double *fh = p->fl ? ctn_follow_forces(p, d) : NULL;
@@ -239,6 +273,12 @@ double ctn_problem_fref(const ctn_problem *p)
 
 int ctn_problem_factor(ctn_problem *p, double shift, int *posdef, long *fail_col)
 {
+    if (p->pre.valid && shift == 0 && p->ls && ctn_linsolve_count(p->ls) == p->pre.count) {
+        p->pre.valid = 0;                         /* factorized beside the assembly */
+        *posdef = p->pre.ok;
+        *fail_col = p->pre.fail_col;
+        return CTN_OK;
+    }
     double t0 = ctn_clock();
     ctn_factor_info info = { 1, -1 };
     int rc = p->ls ? ctn_linsolve_factor(p->ls, p->Kx, shift, &info) : CTN_OK;

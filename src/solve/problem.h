@@ -74,6 +74,15 @@ struct ctn_problem {
                                   when it is of anything else */
     int mech_node, mech_dir;   /* the junction start found no equilibrium: the loads move
                                   this node (index) in this direction without bound; -1 */
+    int overlap;               /* pure Newton: each residual with K also factorizes K,
+                                  overlapped with its assembly (overlap.c), for the
+                                  factorization that follows */
+    struct {
+        int valid;             /* the factor held is of p->Kx as the last residual left it */
+        int ok;
+        long fail_col;
+        unsigned long count;   /* ctn_linsolve_count when it was made */
+    } pre;
 };
 
 /* ctn_problem_create without the check that every cable target is resolved (for the
