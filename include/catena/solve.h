@@ -198,15 +198,13 @@ typedef struct ctn_solve_summary {
                              (CTN_METHOD_AUTO from a start with compressed members) */
     size_t ndof;          /* free DOFs */
     size_t nnz_factor;    /* non-zeros of the Cholesky factor */
-    int factorizations;   /* numeric factorizations of the tangent (pure Newton on a
-                             large chain-like model also factorizes the converged
-                             state's, beside its assembly: docs/solver.md) */
+    int factorizations;   /* numeric factorizations of the tangent */
     int solves;           /* triangular solves (right-hand sides) */
     double t_setup;       /* wall seconds: DOF map, pattern, scatter map, ordering and
                              symbolic analysis (once per model) */
     double t_assemble;    /* wall seconds in all iterations: internal forces, tangent
-                             values and residual (the part not beside a factorization,
-                             when the two overlap) */
+                             values and residual (pure Newton on a chain runs the
+                             factorization beside it: the two then overlap in time) */
     double t_factor;      /* wall seconds in all numeric factorizations */
     double t_solve;       /* wall seconds in all triangular solves */
     int fail_element;     /* not converged: user id of the element that could not be

@@ -21,7 +21,6 @@ struct ctn_linsolve {
     int threads;               /* asked for: n > 0, or 0 (auto) */
     int used;                  /* threads of the last factorization */
     double cpu;                /* CPU seconds of the last factorization */
-    unsigned long count;       /* factorizations so far */
 };
 
 static double cpu_clock(clockid_t id)
@@ -79,7 +78,6 @@ int ctn_linsolve_factor(ctn_linsolve *s, const double *Kx, double shift, ctn_fac
     ctn_threads_push(n, &old);
     double t0 = cpu_clock(CLOCK_PROCESS_CPUTIME_ID);
     int rc = s->ops->factor(s->impl, Kx, shift, info);
-    s->count++;
     s->cpu = cpu_clock(CLOCK_PROCESS_CPUTIME_ID) - t0;
     ctn_threads_pop(&old);
     s->used = old.threads ? n : 1;
@@ -88,16 +86,13 @@ int ctn_linsolve_factor(ctn_linsolve *s, const double *Kx, double shift, ctn_fac
 
 int ctn_linsolve_feedable(const ctn_linsolve *s) { return s->ops->feedable && s->ops->feedable(s->impl); }
 
-/* One thread: the assembly has the other. */
+/* CHOLMOD's simplicial factorization calls neither OpenMP nor the BLAS: no thread
+ * setting to make (and none to make from another thread than the caller's). */
 int ctn_linsolve_factor_feed(ctn_linsolve *s, const double *Kx, double shift, ctn_feed *feed, ctn_factor_info *info)
 {
-    ctn_threads_saved old;
-    ctn_threads_push(1, &old);
     double t0 = cpu_clock(CLOCK_THREAD_CPUTIME_ID);
     int rc = s->ops->factor_feed(s->impl, Kx, shift, feed, info);
-    s->count++;
     s->cpu = cpu_clock(CLOCK_THREAD_CPUTIME_ID) - t0;
-    ctn_threads_pop(&old);
     s->used = 1;
     return rc;
 }
@@ -146,4 +141,4 @@ int ctn_linsolve_threads(const ctn_linsolve *s) { return s->used ? s->used : 1; 
 
 double ctn_linsolve_cpu(const ctn_linsolve *s) { return s->cpu; }
 
-unsigned long ctn_linsolve_count(const ctn_linsolve *s) { return s->count; }
+size_t ctn_linsolve_order(const ctn_linsolve *s) { return s->n; }

@@ -52,8 +52,8 @@ typedef struct ctn_linsolve_ops {
     void (*helpers)(void *impl, int allowed);
     /* Optional (both or neither): whether the next factorization can start before the
      * matrix is complete, and that factorization, which waits on feed for the columns it
-     * needs (the assembly's thread publishes them in order) and returns once feed is
-     * complete. The same factor as factor. */
+     * needs (the assembly's thread publishes them in order), or gives up when the feed
+     * is stopped. The same factor as factor. */
     int (*feedable)(const void *impl);
     int (*factor_feed)(void *impl, const double *Kx, double shift, ctn_feed *feed, ctn_factor_info *info);
 } ctn_linsolve_ops;
@@ -72,8 +72,9 @@ const ctn_linsolve_ops *ctn_linsolve_type(const ctn_linsolve *s);
 int ctn_linsolve_factor(ctn_linsolve *s, const double *Kx, double shift, ctn_factor_info *info);
 /* Whether the next factorization can follow an assembly on another thread, and that
  * factorization: it waits on feed for the columns it needs (published in order by the
- * assembling thread) and returns once all are published; the same factor as
- * ctn_linsolve_factor. Its CPU time is the calling thread's. */
+ * assembling thread) and returns once it is done, or without a factor (info->ok = 0,
+ * fail_col = -1) if the feed is stopped; the same factor as ctn_linsolve_factor. It may
+ * run on a thread of its own; its CPU time is that thread's. */
 int ctn_linsolve_feedable(const ctn_linsolve *s);
 int ctn_linsolve_factor_feed(ctn_linsolve *s, const double *Kx, double shift, ctn_feed *feed, ctn_factor_info *info);
 /* x = K \ b with the last factorization (x and b may alias). */
@@ -94,8 +95,8 @@ double ctn_linsolve_flops(const ctn_linsolve *s);
 void ctn_linsolve_set_threads(ctn_linsolve *s, int n);
 int ctn_linsolve_threads(const ctn_linsolve *s);
 double ctn_linsolve_cpu(const ctn_linsolve *s);
-/* Numeric factorizations so far (which one the factor held is). */
-unsigned long ctn_linsolve_count(const ctn_linsolve *s);
+/* The order of the matrix. */
+size_t ctn_linsolve_order(const ctn_linsolve *s);
 
 /* Threads (threads.c): run the calling thread's OpenMP regions on n threads (n = 1: no
  * parallel region at all, as OpenMP's max-active-levels 0, which is process-wide) until

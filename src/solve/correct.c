@@ -271,8 +271,11 @@ static int correct(ctn_problem *e, ctn_solution *s, double *d, ctn_reason *reaso
  * not biased by the first phase. */
 int ctn_newton_correct(ctn_problem *e, ctn_solution *s, double *d, ctn_reason *reason)
 {
-    if (!e->strategy->globalized || !ctn_asm_count_compressed(e->a, d, e->in_chain))
-        return correct(e, s, d, reason);
+    if (!e->strategy->globalized || !ctn_asm_count_compressed(e->a, d, e->in_chain)) {
+        int rc = correct(e, s, d, reason);
+        ctn_problem_settle(e);                      /* the converged state's is not wanted */
+        return rc;
+    }
     e->mode = CTN_EVAL_CUT_COMPRESSION;
     int rc = correct(e, s, d, reason);
     e->mode = 0;

@@ -57,6 +57,7 @@ static int factor_shifted(ctn_modal *md, const ctn_solution *s)
     ctn_problem *p = md->p;
     ctn_factor_info info = { 0, -1 };
     double t0 = ctn_clock();
+    ctn_problem_settle(p);
     if (md->opt->shift == 0 && p->factored_at == s && p->ls && !ctn_linsolve_type(p->ls)->indefinite) {
         md->sigma = 0;
         md->ls = p->ls;

@@ -1,23 +1,15 @@
-/* The assembly of the tangent and its factorization, overlapped. A Newton iteration
- * assembles K at the new state, then factorizes it: on a chain the assembly is a
- * quarter of the iteration. With the factor computed row by row in the natural ordering
- * (linsolve's factor_feed), row k needs only the columns up to k, so a second thread
- * assembles the nodes in order and publishes the columns done while the calling thread
- * factorizes behind it: the iteration costs the factorization, not the sum. */
+/* The factorization of the tangent beside its assembly. A Newton iteration assembles K at
+ * the new state, then factorizes it: on a chain the assembly is a fifth of the
+ * iteration. With the factor computed row by row in the natural ordering (linsolve's
+ * factor_feed), row k needs only the columns up to k, so a thread of its own factorizes
+ * K a block of rows behind the caller's assembly, which publishes the columns it has
+ * finished: the iteration costs the factorization, not the sum. The caller keeps its
+ * thread, and can still drop the factorization (a converged state needs none) once its
+ * residual is known. */
 #include "solve/overlap.h"
 
-#include <pthread.h>
 #include <time.h>
 #include <unistd.h>
-
-typedef struct job {
-    const ctn_asm *a;
-    const double *d;
-    unsigned mode;
-    double *f, *Kx;
-    ctn_feed *feed;
-    ctn_overlap *out;
-} job;
 
 static double now(void)
 {
@@ -26,12 +18,12 @@ static double now(void)
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
-static void *assemble(void *arg)
+static void *factorize(void *arg)
 {
-    job *j = arg;
+    ctn_overlap *o = arg;
     double t0 = now();
-    j->out->collapsed = ctn_asm_eval_feed(j->a, j->d, j->mode, j->f, j->Kx, &j->out->U, &j->out->bad, j->feed);
-    j->out->t_asm = now() - t0;
+    o->rc = ctn_linsolve_factor_feed(o->ls, o->Kx, o->shift, &o->feed, &o->info);
+    o->t_fac = now() - t0;
     return NULL;
 }
 
@@ -41,29 +33,56 @@ int ctn_overlap_possible(const ctn_asm *a, const ctn_linsolve *ls)
            sysconf(_SC_NPROCESSORS_ONLN) >= 2;
 }
 
-int ctn_overlap_eval_factor(const ctn_asm *a, ctn_linsolve *ls, const double *d, unsigned mode, double *f,
-                            double *Kx, double shift, ctn_overlap *out)
+int ctn_overlap_start(ctn_overlap *o, ctn_linsolve *ls, const double *Kx, double shift)
 {
-    ctn_feed feed;
-    job j = { a, d, mode, f, Kx, &feed, out };
-    pthread_t t;
-    out->bad = 0;
-    out->U = 0;
-    int fed = !ctn_feed_init(&feed, a->ndof), threaded = fed && !pthread_create(&t, NULL, assemble, &j);
-    if (!threaded) {                               /* one after the other */
-        if (fed) ctn_feed_destroy(&feed);
-        double t0 = now();
-        out->collapsed = ctn_asm_eval(a, d, mode, f, Kx, &out->U, &out->bad);
-        out->t_asm = now() - t0;
-        t0 = now();
-        int rc = ctn_linsolve_factor(ls, Kx, shift, &out->info);
-        out->t_fac = now() - t0;
-        return rc;
+    o->running = 0;
+    o->ls = ls;
+    o->Kx = Kx;
+    o->shift = shift;
+    o->rc = CTN_OK;
+    o->info = (ctn_factor_info){ 0, -1 };
+    o->t_fac = 0;
+    if (ctn_feed_init(&o->feed, ctn_linsolve_order(ls))) return 0;
+    if (pthread_create(&o->thread, NULL, factorize, o)) {
+        ctn_feed_destroy(&o->feed);
+        return 0;
     }
-    double t0 = now();
-    int rc = ctn_linsolve_factor_feed(ls, Kx, shift, &feed, &out->info);
-    out->t_fac = now() - t0;
-    pthread_join(t, NULL);
-    ctn_feed_destroy(&feed);
-    return rc;
+    o->running = 1;
+    return 1;
+}
+
+int ctn_overlap_assemble(ctn_overlap *o, const ctn_asm *a, const double *d, unsigned mode, double *f, double *Kx,
+                         double *U, size_t *bad)
+{
+    return ctn_asm_eval_feed(a, d, mode, f, Kx, U, bad, &o->feed);
+}
+
+int ctn_overlap_finish(ctn_overlap *o, ctn_factor_info *info)
+{
+    pthread_join(o->thread, NULL);
+    ctn_feed_destroy(&o->feed);
+    o->running = 0;
+    *info = o->info;
+    return o->rc;
+}
+
+void ctn_overlap_abandon(ctn_overlap *o)
+{
+    if (!o->running) return;
+    ctn_feed_stop(&o->feed);
+    ctn_factor_info info;
+    (void)ctn_overlap_finish(o, &info);
+}
+
+int ctn_overlap_eval_factor(const ctn_asm *a, ctn_linsolve *ls, const double *d, unsigned mode, double *f,
+                            double *Kx, double shift, double *U, size_t *bad, int *collapsed,
+                            ctn_factor_info *info)
+{
+    ctn_overlap o;
+    if (!ctn_overlap_start(&o, ls, Kx, shift)) {
+        *collapsed = ctn_asm_eval(a, d, mode, f, Kx, U, bad);
+        return ctn_linsolve_factor(ls, Kx, shift, info);
+    }
+    *collapsed = ctn_overlap_assemble(&o, a, d, mode, f, Kx, U, bad);
+    return ctn_overlap_finish(&o, info);
 }

@@ -1,29 +1,46 @@
-/* Internal: the tangent's assembly overlapped with its factorization (overlap.c). */
+/* Internal: the tangent's factorization beside its assembly (overlap.c). */
 #ifndef CTN_SOLVE_OVERLAP_H
 #define CTN_SOLVE_OVERLAP_H
 
 #include "assemble/asm.h"
 #include "linalg/linsolve.h"
 
+#include <pthread.h>
+
 #define CTN_OVERLAP_MIN_DOF 30000   /* below, a thread's start costs what it saves */
 
+/* A factorization of K + shift I running on a thread of its own, fed the columns of K
+ * by the caller's assembly. */
 typedef struct ctn_overlap {
-    int collapsed;             /* an element collapsed (bad: the first); the factor is
-                                  then of meaningless values */
-    size_t bad;
-    double U;                  /* stored energy */
-    ctn_factor_info info;      /* the factorization's outcome */
-    double t_asm, t_fac;       /* wall seconds of each (they overlap) */
+    int running;               /* started, not yet finished or abandoned */
+    pthread_t thread;
+    ctn_feed feed;
+    ctn_linsolve *ls;
+    const double *Kx;
+    double shift;
+    int rc;                    /* the factorization's status and outcome */
+    ctn_factor_info info;
+    double t_fac;              /* its wall seconds */
 } ctn_overlap;
 
-/* Whether ctn_overlap_eval_factor can overlap these (a model assembled node by node, a
- * factorization that follows the columns, two CPUs). */
+/* Whether a factorization can follow the assembly of a (a model assembled node by node,
+ * a solver whose next factorization follows the columns, two CPUs). */
 int ctn_overlap_possible(const ctn_asm *a, const ctn_linsolve *ls);
-/* f_int and K at d into f and Kx (as ctn_asm_eval) on a second thread, and K + shift I
- * factorized on the calling thread as its columns are done. The same results as
- * ctn_asm_eval then ctn_linsolve_factor, which it falls back to if the thread cannot
- * start. A status only for the factorization's failure (a pivot is an outcome). */
+/* Start factorizing K + shift I from Kx (being assembled): 1 if started, 0 if the thread
+ * could not start (nothing to finish then). */
+int ctn_overlap_start(ctn_overlap *o, ctn_linsolve *ls, const double *Kx, double shift);
+/* The assembly of f_int and K at d into f and Kx (as ctn_asm_eval), feeding o. */
+int ctn_overlap_assemble(ctn_overlap *o, const ctn_asm *a, const double *d, unsigned mode, double *f, double *Kx,
+                         double *U, size_t *bad);
+/* Wait for the factorization: its status, its outcome in *info. */
+int ctn_overlap_finish(ctn_overlap *o, ctn_factor_info *info);
+/* The factorization is not wanted: stopped between two blocks of rows (the factor held
+ * is then of no matrix) and joined. */
+void ctn_overlap_abandon(ctn_overlap *o);
+/* All of it at once: assembly and factorization overlapped, or one after the other if
+ * the thread cannot start; the same results (bench_floor, tests). */
 int ctn_overlap_eval_factor(const ctn_asm *a, ctn_linsolve *ls, const double *d, unsigned mode, double *f,
-                            double *Kx, double shift, ctn_overlap *out);
+                            double *Kx, double shift, double *U, size_t *bad, int *collapsed,
+                            ctn_factor_info *info);
 
 #endif

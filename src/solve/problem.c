@@ -1,7 +1,6 @@
 /* The problem: setup once per model, residual and potential at a load parameter t,
  * factorization with an optional shift, solves. */
 #include "solve/modes.h"
-#include "solve/overlap.h"
 
 #include <math.h>
 #include <string.h>
@@ -165,6 +164,7 @@ void ctn_problem_destroy(ctn_problem **pp)
 {
     if (!pp || !*pp) return;
     ctn_problem *p = *pp;
+    ctn_problem_settle(p);
     ctn_asm_destroy(&p->a);
     ctn_linsolve_destroy(&p->ls);
     ctn_follow_destroy(&p->fl);
@@ -201,42 +201,15 @@ void ctn_problem_step_loads(ctn_problem *p, size_t k)
     ctn_model_step_temperatures(p->m, k, p->dT1);
 }
 
-/* f_int and K at d, and K factorized beside its assembly (overlap.c): counted and timed
- * as a factorization, and held for ctn_problem_factor. */
-static int eval_overlapped(ctn_problem *p, const double *d, double *U, size_t *bad, int *collapsed)
-{
-    ctn_overlap o;
-    int rc = ctn_overlap_eval_factor(p->a, p->ls, d, p->mode, p->fint, p->Kx, 0.0, &o);
-    *U = o.U;
-    *bad = o.bad;
-    *collapsed = o.collapsed;
-    p->sum->t_factor += o.t_fac;
-    p->sum->t_factor_cpu += ctn_linsolve_cpu(p->ls);
-    p->sum->threads = ctn_linsolve_threads(p->ls);
-    p->sum->factorizations++;
-    p->sum->t_assemble -= o.t_fac;                /* the caller adds the whole call */
-    p->shift = 0;
-    p->factored_at = NULL;
-    p->last_definite = p->spd_factor = !rc && !o.collapsed && o.info.ok;
-    p->pre.valid = !rc && !o.collapsed;
-    p->pre.ok = o.info.ok;
-    p->pre.fail_col = o.info.fail_col;
-    p->pre.count = ctn_linsolve_count(p->ls);
-    return rc;
-}
-
 int ctn_problem_residual(ctn_problem *p, const double *d, int with_K, double *rnorm, double *pi,
                          int *valid)
 {
     double t0 = ctn_clock(), U = 0, work = 0;
     const int *eq = p->a->map.eq;
     size_t bad = 0;
-    p->pre.valid = 0;
-    if (with_K && p->overlap && ctn_overlap_possible(p->a, p->ls)) {
-        int collapsed = 0, rc = eval_overlapped(p, d, &U, &bad, &collapsed);
-        if (rc) return rc;
-        *valid = !collapsed;
-    }
+    ctn_problem_settle(p);
+    if (with_K && p->overlap && ctn_overlap_possible(p->a, p->ls) && ctn_overlap_start(&p->ovl, p->ls, p->Kx, 0.0))
+        *valid = !ctn_overlap_assemble(&p->ovl, p->a, d, p->mode, p->fint, p->Kx, pi ? &U : NULL, &bad);
     else *valid = !ctn_asm_eval(p->a, d, p->mode, p->fint, with_K ? p->Kx : NULL, pi ? &U : NULL, &bad);
     if (!*valid) p->sum->fail_element = p->m->elements.v[bad].id;     /* reported if not converged */
     if (*valid) {
@@ -254,6 +227,7 @@ int ctn_problem_residual(ctn_problem *p, const double *d, int with_K, double *rn
         if (pi) *pi = U - work;
         *valid = isfinite(*rnorm) && (!pi || isfinite(*pi));
     }
+    if (!*valid) ctn_problem_settle(p);
     p->sum->t_assemble += ctn_clock() - t0;
     return CTN_OK;
 }
@@ -271,18 +245,30 @@ double ctn_problem_fref(const ctn_problem *p)
     return ff > 0 ? sqrt(ff) : fr > 0 ? sqrt(fr) : 1.0;
 }
 
+/* The factorization started beside the last assembly, waited for. */
+static int finish_overlapped(ctn_problem *p, ctn_factor_info *info, double *t)
+{
+    int rc = ctn_overlap_finish(&p->ovl, info);
+    *t = p->ovl.t_fac;
+    return rc;
+}
+
+void ctn_problem_settle(ctn_problem *p)
+{
+    if (!p->ovl.running) return;
+    ctn_overlap_abandon(&p->ovl);
+    p->spd_factor = 0;
+    p->factored_at = NULL;
+}
+
 int ctn_problem_factor(ctn_problem *p, double shift, int *posdef, long *fail_col)
 {
-    if (p->pre.valid && shift == 0 && p->ls && ctn_linsolve_count(p->ls) == p->pre.count) {
-        p->pre.valid = 0;                         /* factorized beside the assembly */
-        *posdef = p->pre.ok;
-        *fail_col = p->pre.fail_col;
-        return CTN_OK;
-    }
-    double t0 = ctn_clock();
+    double t0 = ctn_clock(), t = 0;
     ctn_factor_info info = { 1, -1 };
-    int rc = p->ls ? ctn_linsolve_factor(p->ls, p->Kx, shift, &info) : CTN_OK;
-    p->sum->t_factor += ctn_clock() - t0;
+    if (shift != 0) ctn_problem_settle(p);
+    int rc = p->ovl.running ? finish_overlapped(p, &info, &t)
+                            : p->ls ? ctn_linsolve_factor(p->ls, p->Kx, shift, &info) : CTN_OK;
+    p->sum->t_factor += t > 0 ? t : ctn_clock() - t0;
     p->sum->t_factor_cpu += p->ls ? ctn_linsolve_cpu(p->ls) : 0;
     p->sum->threads = p->ls ? ctn_linsolve_threads(p->ls) : 1;
     p->sum->factorizations++;
@@ -297,6 +283,7 @@ int ctn_problem_factor(ctn_problem *p, double shift, int *posdef, long *fail_col
 
 int ctn_problem_linsolve(ctn_problem *p, const double *b, double *x)
 {
+    ctn_problem_settle(p);
     double t0 = ctn_clock();
     int rc = !p->ls ? CTN_OK : p->fl ? ctn_follow_solve(p, b, x) : ctn_linsolve_solve(p->ls, b, x);
     p->sum->t_solve += ctn_clock() - t0;

@@ -14,6 +14,7 @@
 #include "assemble/asm.h"
 #include "linalg/gmres.h"
 #include "linalg/linsolve.h"
+#include "solve/overlap.h"
 #include "solve/solution.h"
 
 /* A solution strategy (static analysis), registered by its ctn_method. */
@@ -74,15 +75,9 @@ struct ctn_problem {
                                   when it is of anything else */
     int mech_node, mech_dir;   /* the junction start found no equilibrium: the loads move
                                   this node (index) in this direction without bound; -1 */
-    int overlap;               /* pure Newton: each residual with K also factorizes K,
-                                  overlapped with its assembly (overlap.c), for the
-                                  factorization that follows */
-    struct {
-        int valid;             /* the factor held is of p->Kx as the last residual left it */
-        int ok;
-        long fail_col;
-        unsigned long count;   /* ctn_linsolve_count when it was made */
-    } pre;
+    int overlap;               /* pure Newton: each residual with K also starts K's
+                                  factorization beside its assembly (overlap.c) */
+    ctn_overlap ovl;           /* that factorization, while it runs */
 };
 
 /* ctn_problem_create without the check that every cable target is resolved (for the
@@ -107,8 +102,13 @@ double ctn_problem_fref(const ctn_problem *p);
  * curvature or no factorization can be reused (reuse.c). */
 int ctn_problem_reuse_step(ctn_problem *p, double target, double rmax, int *ok);
 /* Factorize K + shift I; *posdef = 0 when the factorization failed on a pivot, with its
- * equation in *fail_col. */
+ * equation in *fail_col. Without a shift, the factorization the last residual started
+ * beside its assembly (p->overlap) is the one waited for. */
 int ctn_problem_factor(ctn_problem *p, double shift, int *posdef, long *fail_col);
+/* Drop the factorization the last residual started, if it runs (no factorization
+ * wanted: a converged state, a shifted one): the factor held is then of no matrix. Every
+ * use of p->Kx or p->ls but ctn_problem_factor settles first. */
+void ctn_problem_settle(ctn_problem *p);
 /* x = K \ b (ndof vectors). */
 int ctn_problem_linsolve(ctn_problem *p, const double *b, double *x);
 /* Largest diagonal entry of the assembled tangent. */

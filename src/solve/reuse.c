@@ -31,6 +31,7 @@ static int precond(void *data, const double *x, double *y)
 int ctn_problem_reuse_step(ctn_problem *p, double target, double rmax, int *ok)
 {
     *ok = 0;
+    ctn_problem_settle(p);
     if (!p->cg || !p->ls || !p->spd_factor) return CTN_OK;
     double t0 = ctn_clock(), res;
     int iters, posdef;
