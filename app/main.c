@@ -1,6 +1,8 @@
 /* catena: command-line entry, dispatch to sub-commands (the table is in help.c). */
 #include "app.h"
+#include "core/ctx.h"
 
+#include <SuiteSparse_config.h>
 #include <errno.h>
 #include <string.h>
 #ifdef __GLIBC__
@@ -97,9 +99,44 @@ static void keep_heap(void)
 #endif
 }
 
+/* CHOLMOD's blocks (the factor, its analysis's and factorization's work arrays) advised
+ * for transparent huge pages as the library's own are (ctn_mem_huge): on the VM of
+ * bench/RESULTS.md a page fault costs 16-32 us, and the K = 1000 net's 5.7 GB were 1.1
+ * million of them. SuiteSparse's allocator is process-wide: the process, not the
+ * library, sets it. */
+static void *huge_malloc(size_t n)
+{
+    void *p = malloc(n);
+    ctn_mem_huge(p, n);
+    return p;
+}
+
+static void *huge_calloc(size_t n, size_t size)
+{
+    void *p = calloc(n, size);
+    if (p) ctn_mem_huge(p, n * size);        /* calloc checked n * size */
+    return p;
+}
+
+static void *huge_realloc(void *p, size_t n)
+{
+    void *q = realloc(p, n);
+    ctn_mem_huge(q, n);
+    return q;
+}
+
+static void huge_pages(void)
+{
+    SuiteSparse_config.malloc_func = huge_malloc;
+    SuiteSparse_config.calloc_func = huge_calloc;
+    SuiteSparse_config.realloc_func = huge_realloc;
+    SuiteSparse_config.free_func = free;
+}
+
 int main(int argc, char **argv)
 {
     keep_heap();
+    huge_pages();
     int code = dispatch(argc, argv);
     if (code == CTN_EXIT_IO) {
         fclose(stdout);

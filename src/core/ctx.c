@@ -1,10 +1,12 @@
 /* Context: error recording and checked, fault-injectable allocation. */
+#define _DEFAULT_SOURCE                  /* madvise, MADV_HUGEPAGE */
 #include "core/ctx.h"
 
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 
 int ctn_ctx_create(ctn_ctx **out)
 {
@@ -97,11 +99,20 @@ static int alloc_refused(ctn_ctx *ctx, size_t n, size_t size)
     return 0;
 }
 
+void ctn_mem_huge(void *p, size_t bytes)
+{
+    if (!p || bytes < CTN_HUGE_MIN) return;
+    uintptr_t a = ((uintptr_t)p + CTN_HUGE_PAGE - 1) & ~(uintptr_t)(CTN_HUGE_PAGE - 1);
+    uintptr_t b = ((uintptr_t)p + bytes) & ~(uintptr_t)(CTN_HUGE_PAGE - 1);
+    if (b > a) (void)madvise((void *)a, b - a, MADV_HUGEPAGE);   /* a hint: may be refused */
+}
+
 void *ctn_malloc(ctn_ctx *ctx, size_t n, size_t size)
 {
     if (alloc_refused(ctx, n, size)) return NULL;
     void *p = malloc(n * size > 0 ? n * size : 1);
     if (!p) ctn_error(ctx, CTN_ERR_NOMEM, "out of memory (%zu bytes)", n * size);
+    ctn_mem_huge(p, n * size);
     return p;
 }
 
@@ -110,6 +121,7 @@ void *ctn_calloc(ctn_ctx *ctx, size_t n, size_t size)
     if (alloc_refused(ctx, n, size)) return NULL;
     void *p = calloc(n ? n : 1, size ? size : 1);
     if (!p) ctn_error(ctx, CTN_ERR_NOMEM, "out of memory (%zu bytes)", n * size);
+    ctn_mem_huge(p, n * size);
     return p;
 }
 
@@ -118,6 +130,7 @@ void *ctn_realloc(ctn_ctx *ctx, void *p, size_t n, size_t size)
     if (alloc_refused(ctx, n, size)) return NULL;
     void *q = realloc(p, n * size > 0 ? n * size : 1);
     if (!q) ctn_error(ctx, CTN_ERR_NOMEM, "out of memory (%zu bytes)", n * size);
+    ctn_mem_huge(q, n * size);
     return q;
 }
 

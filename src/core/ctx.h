@@ -29,11 +29,21 @@ int ctn_error_at(ctn_ctx *ctx, int code, const char *file, int line, const char 
     __attribute__((format(printf, 5, 6)));
 
 /* Checked allocation (counted, fault-injectable). NULL on failure, error recorded.
- * n * size overflow is detected. ctn_free(NULL) is a no-op. */
+ * n * size overflow is detected. ctn_free(NULL) is a no-op. Blocks of CTN_HUGE_MIN bytes
+ * or more are advised to the kernel for transparent huge pages (ctn_mem_huge). */
 void *ctn_malloc(ctn_ctx *ctx, size_t n, size_t size);
 void *ctn_calloc(ctn_ctx *ctx, size_t n, size_t size);
 /* Grow or shrink p to n * size bytes; on failure p is untouched and NULL returned. */
 void *ctn_realloc(ctn_ctx *ctx, void *p, size_t n, size_t size);
 void ctn_free(void *p);
+
+/* Ask the kernel to back the 2 MB-aligned part of [p, p + bytes) with transparent huge
+ * pages (madvise MADV_HUGEPAGE; nothing below CTN_HUGE_MIN bytes, and a hint the kernel
+ * may ignore): one page fault per 2 MB instead of 512. Where a page fault is costly (a
+ * virtual machine that traps each one: bench/RESULTS.md measured 4-8 s per GB of first
+ * writes) this is most of the cost of fresh memory. */
+#define CTN_HUGE_PAGE ((size_t)2 << 20)
+#define CTN_HUGE_MIN ((size_t)4 << 20)
+void ctn_mem_huge(void *p, size_t bytes);
 
 #endif

@@ -98,9 +98,11 @@ static int chol_factor(void *impl, const double *Kx, double shift, ctn_factor_in
     info->fail_col = -1;
     if (c->L->is_super && c->L->xtype == CHOLMOD_PATTERN) {
         /* the factor's values, allocated here as the factorization would, so that
-         * their pages are first touched on two threads (cholmod_touch.c) */
+         * they are advised for huge pages and first touched on two threads
+         * (cholmod_touch.c) */
         if (!cholmod_l_change_factor(CHOLMOD_REAL, 1, 1, 1, 1, c->L, &c->cm))
             return ctn_chol_error(c, "factorization");
+        ctn_mem_huge(c->L->x, c->L->xsize * sizeof(double));
         ctn_chol_touch(c);
     }
     c->A->xtype = CHOLMOD_REAL;                  /* lend the caller's values */
