@@ -4,6 +4,8 @@
 
 #include <SuiteSparse_config.h>
 #include <errno.h>
+#include <stdlib.h>
+#include <unistd.h>
 #include <string.h>
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -133,10 +135,33 @@ static void huge_pages(void)
     SuiteSparse_config.free_func = free;
 }
 
+/* The whole heap advised for huge pages, the small blocks too: with keep_heap's settings
+ * every block comes from the heap and the heap is never trimmed, so a block as large as
+ * the system lends (the machine's memory, or half, ...), advised and freed at once,
+ * leaves the heap's address range reserved (nothing is touched) and advised for what
+ * follows. Not under a memory checker
+ * (AddressSanitizer's and valgrind's allocators are not glibc's heap). */
+#define CTN_HUGE_HEAP_MIN ((size_t)256 << 20)
+static void huge_heap(void)
+{
+#if defined(M_MMAP_MAX) && !defined(__SANITIZE_ADDRESS__)
+    const char *pre = getenv("LD_PRELOAD");
+    if (pre && strstr(pre, "vgpreload")) return;
+    long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+    if (pages <= 0 || page <= 0) return;
+    size_t want = (size_t)pages * (size_t)page, cap = (size_t)64 << 30, n = want < cap ? want : cap;
+    void *p = malloc(n);
+    while (!p && n / 2 >= CTN_HUGE_HEAP_MIN) p = malloc(n /= 2);    /* what the system lends */
+    ctn_mem_huge(p, n);
+    free(p);
+#endif
+}
+
 int main(int argc, char **argv)
 {
     keep_heap();
     huge_pages();
+    huge_heap();
     int code = dispatch(argc, argv);
     if (code == CTN_EXIT_IO) {
         fclose(stdout);
