@@ -5,6 +5,7 @@
  * backward error (checked from its residual), and their difference is bounded by the
  * condition number (from power iterations) times the backward errors. One thread and
  * two give identical results; every allocation may fail. */
+#include "linalg/linsolve.h"
 #include "linalg/psolve.h"
 
 #include "check.h"
@@ -124,14 +125,15 @@ static void apply(cholmod_sparse *A, const double *x, double *y, cholmod_common 
     cholmod_l_sdmult(A, 0, one, zero, &xd, &yd, cm);
 }
 
-/* kappa_2(A) from 200 power iterations on A and on A^-1 (the factor's solves). */
-static double condition(cholmod_sparse *A, cholmod_factor *L, cholmod_common *cm)
+/* kappa_2(A) from `its` power iterations on A and on A^-1 (the factor's solves): from
+ * below, so a bound made with it is, if anything, strict. */
+static double condition(cholmod_sparse *A, cholmod_factor *L, cholmod_common *cm, int its)
 {
     size_t n = A->nrow;
     double *x = malloc(n * sizeof *x), *y = malloc(n * sizeof *y), lam[2] = { 0, 0 };
     for (int inv = 0; inv < 2 && x && y; inv++) {
         for (size_t i = 0; i < n; i++) x[i] = 1 + 0.1 * (double)(i % 7);
-        for (int it = 0; it < 200; it++) {
+        for (int it = 0; it < its; it++) {
             double s = norm2(x, n);
             for (size_t i = 0; i < n; i++) x[i] /= s;
             if (inv) {
@@ -206,7 +208,7 @@ static void compare(const char *name, cholmod_sparse *A, int metis, int expect_p
     CHECK(ctn_ctx_create(&ctx) == CTN_OK);
     CHECK(ctn_psolve_create(ctx, L, &p) == CTN_OK);
     CHECK_MSG(!expect_plan || p, "%s: a plan (%zu supernodes)", name, L->nsuper);
-    double kappa = condition(A, L, cm), an = anorm2(A, cm), worst = 0;
+    double kappa = condition(A, L, cm, 200), an = anorm2(A, cm), worst = 0;
     for (int k = 1; p && k <= 7; k += 3) {
         double *B = malloc(n * (size_t)k * sizeof *B), *X1 = malloc(n * (size_t)k * sizeof *X1);
         double *X2 = malloc(n * (size_t)k * sizeof *X2);
@@ -280,8 +282,58 @@ static void alloc_failures(cholmod_sparse *A, cholmod_common *cm)
     cholmod_l_free_factor(&L, cm);
 }
 
+/* The linear solver's block solve takes the two-thread path from 50 000 rows (not under
+ * threads=1): against single solves of the same factor, within rounding (two backward
+ * stable solves differ by a few eps times the condition number). */
+static void backend(cholmod_common *cm)
+{
+    cholmod_sparse *A = net(132, cm);                   /* 3 x 130^2 = 50 700 rows */
+    if (!A) return;
+    size_t n = A->nrow, nnz = (size_t)((SuiteSparse_long *)A->p)[n];
+    int *colptr = malloc((n + 1) * sizeof *colptr), *rowind = malloc(nnz * sizeof *rowind);
+    double *B = malloc(4 * n * sizeof *B), *X = malloc(4 * n * sizeof *X), *S = malloc(4 * n * sizeof *S);
+    ctn_ctx *ctx = NULL;
+    ctn_linsolve *ls = NULL;
+    ctn_factor_info info = { 0, -1 };
+    CHECK(colptr && rowind && B && X && S && ctn_ctx_create(&ctx) == CTN_OK);
+    for (size_t j = 0; colptr && rowind && j <= n; j++) colptr[j] = (int)((SuiteSparse_long *)A->p)[j];
+    for (size_t q = 0; colptr && rowind && q < nnz; q++) rowind[q] = (int)((SuiteSparse_long *)A->i)[q];
+    for (size_t i = 0; B && i < 4 * n; i++) B[i] = cos(0.3 * (double)i);
+    ctn_pattern pat = { n, colptr, rowind };
+    cholmod_factor *L = factor(A, 1, cm);
+    double kappa = L ? condition(A, L, cm, 30) : INFINITY;
+    cholmod_l_free_factor(&L, cm);
+    if (ctx && colptr && rowind && B && X && S) {
+        CHECK(ctn_linsolve_create(ctx, "cholmod", &pat, CTN_ORDER_METIS, &ls) == CTN_OK);
+        if (ls) CHECK(ctn_linsolve_factor(ls, A->x, 0, &info) == CTN_OK && info.ok);
+        for (int threads = 0; ls && info.ok && threads < 2; threads++) {
+            ctn_linsolve_set_threads(ls, threads);      /* 0: the default, two; then one */
+            CHECK(ctn_linsolve_solve_block(ls, B, X, 4) == CTN_OK);
+            double d = 0, x = 0;
+            for (size_t c = 0; c < 4; c++) {
+                CHECK(ctn_linsolve_solve(ls, B + n * c, S + n * c) == CTN_OK);
+                for (size_t i = 0; i < n; i++) d = fmax(d, fabs(X[n * c + i] - S[n * c + i])), x = fmax(x, fabs(S[n * c + i]));
+            }
+            CHECK_MSG(d <= 64 * EPS * kappa * x, "threads=%d: block and single solves differ by %.3g of %.3g (kappa %.3g)",
+                      threads, d, x, kappa);
+            printf("backend  n %6zu, threads=%d: block solve against single solves %.2g (kappa %.2g)\n", n, threads,
+                   d / x, kappa);
+        }
+    }
+    ctn_linsolve_destroy(&ls);
+    ctn_ctx_destroy(&ctx);
+    free(colptr);
+    free(rowind);
+    free(B);
+    free(X);
+    free(S);
+    cholmod_l_free_sparse(&A, cm);
+}
+
 int main(void)
 {
+    ctn_threads_saved saved;
+    ctn_threads_push(1, &saved);                 /* CHOLMOD's BLAS on one thread, as catena's solves */
     cholmod_common cm;
     cholmod_l_start(&cm);
     cm.print = 0;
@@ -295,7 +347,9 @@ int main(void)
         compare("tiny", A[3], 0, 0, &cm);
         alloc_failures(A[0], &cm);
     }
+    backend(&cm);
     for (int i = 0; i < 4; i++) cholmod_l_free_sparse(&A[i], &cm);
     cholmod_l_finish(&cm);
+    ctn_threads_pop(&saved);
     CHECK_DONE();
 }
