@@ -7,7 +7,10 @@
  * and of k single solves (ctn_linsolve_solve), wall and CPU seconds, per column and as
  * a fraction of the factorization. Solves run on one thread, as catena runs them.
  *
- *   bench_block MODEL.cable [--repeat R] [K...]      (default K: 1 4 8 16 32 64)
+ * A block solve takes catena's two-thread path (cholmod_psolve.c) where catena would;
+ * --threads 1 keeps cholmod_l_solve2 (as threads=1 does).
+ *
+ *   bench_block MODEL.cable [--repeat R] [--threads T] [K...]   (default K: 1 4 8 16 32 64)
  */
 #include "assemble/asm.h"
 #include "linalg/linsolve.h"
@@ -60,16 +63,17 @@ static int time_k(ctn_linsolve *ls, size_t n, size_t k, int reps, double *B, dou
 
 int main(int argc, char **argv)
 {
-    int reps = 3, ks[16], nk = 0;
+    int reps = 3, ks[16], nk = 0, threads = 0;
     const char *path = NULL;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--repeat") && i + 1 < argc && !parse_count(argv[i + 1], 1, MAX_REPEAT, &reps)) i++;
+        else if (!strcmp(argv[i], "--threads") && i + 1 < argc && !parse_count(argv[i + 1], 1, 2, &threads)) i++;
         else if (!path && argv[i][0] != '-') path = argv[i];
         else if (nk < 16 && !parse_count(argv[i], 1, 1024, &ks[nk])) nk++;
         else path = NULL, i = argc;
     }
     if (!path) {
-        fprintf(stderr, "usage: bench_block MODEL.cable [--repeat R] [K...]\n");
+        fprintf(stderr, "usage: bench_block MODEL.cable [--repeat R] [--threads T] [K...]\n");
         return 1;
     }
     if (!nk) {
@@ -99,6 +103,7 @@ int main(int argc, char **argv)
     if (!rc) rc = ctn_asm_eval(a, d, 0, f, Kx, NULL, NULL) ? CTN_ERR_MODEL : 0;
     ctn_pattern pat = { n, a ? a->colptr : NULL, a ? a->rowind : NULL };
     if (!rc) rc = ctn_linsolve_create(ctx, "cholmod", &pat, CTN_ORDER_AUTO, &ls);
+    if (!rc) ctn_linsolve_set_threads(ls, threads);
     if (!rc) rc = factor(ls, a, Kx, &tf, &cf);
     if (rc) {
         fprintf(stderr, "bench_block: %s\n", ctn_ctx_message(ctx));
@@ -107,8 +112,8 @@ int main(int argc, char **argv)
     srand(1);
     for (size_t i = 0; i < n * (size_t)kmax; i++) B[i] = (double)rand() / RAND_MAX - 0.5;
     printf("# %s: %zu DOFs, factor nnz %zu (%s), factorization %.3f s wall, %.3f s CPU; load average %.2f;"
-           " medians of %d\n", path, n, ctn_linsolve_factor_nnz(ls), ctn_ordering_name(ctn_linsolve_ordering(ls)), tf,
-           cf, load_average(), reps);
+           " medians of %d; threads=%d\n", path, n, ctn_linsolve_factor_nnz(ls), ctn_ordering_name(ctn_linsolve_ordering(ls)), tf,
+           cf, load_average(), reps, threads);
     printf("%4s %12s %12s %12s %12s %14s %14s %10s\n", "k", "block[s]", "block CPU", "k singles[s]", "singles CPU",
            "block/col[s]", "single/col[s]", "speed-up");
     for (int i = 0; i < nk && !rc; i++) {

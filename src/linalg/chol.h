@@ -23,6 +23,9 @@ typedef struct chol {
     int helpers;                        /* 1: a new factor's pages may be first touched on
                                            two threads (not under threads=1) */
     cholmod_dense *Yk, *Ek;             /* solve2 workspace of the block solves */
+    struct ctn_psolve *ps;              /* the block solves on two threads (cholmod_psolve.c):
+                                           planned at the first block solve, NULL if not used */
+    int ps_planned;                     /* 1: the plan was made (ps may still be NULL) */
 } chol;
 
 /* Record a CHOLMOD failure (status in c->cm) with its meaning in words: CTN_ERR_NOMEM
@@ -37,6 +40,11 @@ int ctn_chol_analyze(chol *c, ctn_ordering ord);
  * first factorization (cholmod_touch.c); nothing for small factors, one CPU or
  * c->helpers = 0. */
 void ctn_chol_touch(chol *c);
+/* Plan the block solves on two threads (cholmod_psolve.c) once, at the first block solve
+ * of a supernodal LL' factor of order CTN_PSOLVE_MIN or more on a machine of 2 CPUs or
+ * more, unless c->helpers is 0 (threads=1): c->ps, or NULL (cholmod_l_solve2 then). */
+#define CTN_PSOLVE_MIN 50000
+int ctn_chol_psolve_plan(chol *c);
 
 /* cholmod_feed.c: whether the next factorization can follow the assembly row block by
  * row block (a simplicial LDL' factor in the natural ordering, already factorized once),

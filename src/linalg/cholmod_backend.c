@@ -10,6 +10,7 @@
  * factorization, its right-hand side and solution arrays for each solve (no copy).
  * CHOLMOD's long-integer interface throughout (chol.h). */
 #include "linalg/chol.h"
+#include "linalg/psolve.h"
 
 #include <math.h>
 #include <string.h>
@@ -26,6 +27,7 @@ static void chol_destroy(void *impl)
     cholmod_l_free_dense(&c->E, &c->cm);
     cholmod_l_free_dense(&c->Yk, &c->cm);
     cholmod_l_free_dense(&c->Ek, &c->cm);
+    ctn_psolve_destroy(&c->ps);
     cholmod_l_finish(&c->cm);
     ctn_free(c);
 }
@@ -158,6 +160,9 @@ static int chol_solve(void *impl, const double *b, double *x)
 static int chol_solve_block(void *impl, const double *B, double *X, size_t k)
 {
     chol *c = impl;
+    int rc = ctn_chol_psolve_plan(c);
+    if (rc) return rc;
+    if (c->ps && c->helpers) return ctn_psolve_solve(c->ps, c->L, B, X, k, 2);
     cholmod_dense bh = lent(c->B, k, B), xh = lent(c->B, k, X), *Xp = &xh;
     int ok = cholmod_l_solve2(CHOLMOD_A, c->L, &bh, NULL, &Xp, NULL, &c->Yk, &c->Ek, &c->cm);
     return ok ? CTN_OK : ctn_chol_error(c, "block solve");

@@ -29,5 +29,8 @@ void dsyev_(const char *jobz, const char *uplo, const int *n, double *a, const i
 /* Solve A X = B with the Cholesky factor of dpotrf */
 void dpotrs_(const char *uplo, const int *n, const int *nrhs, const double *a, const int *lda, double *b,
              const int *ldb, int *info, size_t lu);
+/* x = op(A)^-1 x with A triangular */
+void dtrsv_(const char *uplo, const char *ta, const char *diag, const int *n, const double *a, const int *lda,
+            double *x, const int *incx, size_t lu, size_t lt, size_t ld);
 
 #endif
