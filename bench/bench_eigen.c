@@ -137,7 +137,7 @@ int main(int argc, char **argv)
         rc = d && f && Kx && Mx ? 0 : CTN_ERR_NOMEM;
     }
     if (!rc) rc = ctn_asm_eval(a, d, 0, f, Kx, NULL, NULL) ? CTN_ERR_MODEL : 0;
-    if (!rc) ctn_asm_mass(a, 0, Mx);
+    if (!rc) rc = ctn_asm_mass(ctx, a, 0, Mx);
     B.pat = (ctn_pattern){ a ? a->ndof : 0, a ? a->colptr : NULL, a ? a->rowind : NULL };
     B.Kx = Kx;
     B.Mx = Mx;

@@ -20,13 +20,18 @@ int ctn_asm_create_ex(ctn_ctx *ctx, const ctn_model *m, unsigned flags, ctn_asm 
     a->ne = m->elements.n;
     int rc = ctn_asm_blocks(ctx, a);
     if (!rc) rc = ctn_asm_pattern(ctx, a);
-    if (!rc) rc = ctn_asm_scatter_map(ctx, a);
+    if (!rc && (!a->gather || a->gather->mixed)) rc = ctn_asm_scatter_map(ctx, a);   /* else when needed */
     if (rc) {
         ctn_asm_destroy(&a);
         return rc;
     }
     *out = a;
     return CTN_OK;
+}
+
+int ctn_asm_need_slots(ctn_ctx *ctx, ctn_asm *a)
+{
+    return a->slot ? CTN_OK : ctn_asm_scatter_map(ctx, a);
 }
 
 void ctn_asm_destroy(ctn_asm **a)
@@ -74,7 +79,7 @@ static inline __attribute__((always_inline)) int block_loop(const ctn_asm *a, co
     for (size_t i = 0; i < b->count; i++) {
         el.e = b->e0 + i;
         el.nodes = conn + i * (size_t)b->nnodes;
-        el.slot = a->slot + b->slot0 + i * (size_t)b->nslots;
+        el.slot = a->slot ? a->slot + b->slot0 + i * (size_t)b->nslots : NULL;
         el.props = props + i * ops->props_size;
         if (!d) {                                       /* properties only: no state */
             visit(data, a, &el);

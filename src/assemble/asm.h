@@ -88,7 +88,9 @@ typedef struct ctn_asm {
     int *slot;                         /* per element nslots entries: v >= 0 adds into value
                                           v, v <= -2 assigns value -(v + 2) (the first
                                           element to reach an entry: no zeroing pass), -1:
-                                          none (a fixed DOF) */
+                                          none (a fixed DOF); NULL until
+                                          needed when every element is assembled node by
+                                          node (ctn_asm_need_slots) */
     int maxdof;                        /* largest nedof over the blocks */
     double *work;                      /* 2 maxdof + 3 nnodes_max + maxslots: eval scratch */
     double kscale;                     /* largest element stiffness scale */
@@ -112,7 +114,7 @@ typedef struct ctn_asm_elem {
     const void *props;         /* its properties */
     const double *fe, *Ke;
     const ctn_elem_state *st;
-    const int *slot;           /* its scatter slots */
+    const int *slot;           /* its scatter slots (NULL: the map is not built) */
 } ctn_asm_elem;
 typedef void (*ctn_asm_visit_fn)(void *data, const ctn_asm *a, const ctn_asm_elem *el);
 
@@ -131,8 +133,9 @@ int ctn_asm_eval(const ctn_asm *a, const double *d, unsigned mode, double *f, do
                  double *U, size_t *bad);
 
 /* The mass matrix's values (nnz, the tangent's pattern and order): the elements' mass
- * ops, lumped or consistent, and the nodes' point masses on the diagonal (mass.c). */
-void ctn_asm_mass(const ctn_asm *a, int lumped, double *Mx);
+ * ops, lumped or consistent, and the nodes' point masses on the diagonal (mass.c); the
+ * scatter map built first if it is not (CTN_ERR_NOMEM). */
+int ctn_asm_mass(ctn_ctx *ctx, ctn_asm *a, int lumped, double *Mx);
 /* The diagonal of the lumped mass matrix (ndof) and in tot[3] the total mass that moves
  * with the free DOFs in x, y, z; 1 with the index of an element whose mass the model
  * cannot tell (NAN) in *bad. */
@@ -161,6 +164,9 @@ void ctn_asm_setup_element(ctn_asm *a, size_t e);
 int ctn_asm_blocks(ctn_ctx *ctx, ctn_asm *a);
 int ctn_asm_pattern(ctn_ctx *ctx, ctn_asm *a);
 int ctn_asm_scatter_map(ctn_ctx *ctx, ctn_asm *a);
+/* The scatter map, built when first needed: a model assembled node by node alone has
+ * none until something adds element matrices through it (the mass matrix). */
+int ctn_asm_need_slots(ctn_ctx *ctx, ctn_asm *a);
 /* The node-by-node path (gather.c): built from the node adjacency (CSR ptr/adj, taken
  * over when it is used, else left to the caller) if every node has 3 DOFs and some block
  * is axial; evaluated like ctn_asm_eval's axial part (f and Kx entirely written). */

@@ -28,9 +28,9 @@ static void mass_visit(void *data, const ctn_asm *a, const ctn_asm_elem *el)
         memcpy(X + 3 * i, a->m->nodes.v[el->nodes[i]].X, 3 * sizeof(double));
     b->ops->mass(el->props, X, mp->lumped, Me);
     for (int t = 0; t < b->nslots; t++) {
-        int s = el->slot[t];
         if (!isfinite(Me[t]) && mp->bad == (size_t)-1) mp->bad = el->e;
-        if (mp->Mx && s != -1) mp->Mx[s >= 0 ? s : -(s + 2)] += Me[t];   /* -1: a fixed DOF */
+        int s = mp->Mx ? el->slot[t] : -1;
+        if (s != -1) mp->Mx[s >= 0 ? s : -(s + 2)] += Me[t];   /* -1: a fixed DOF */
     }
     if (!mp->diag) return;
     int n = b->nedof, ndn = b->ops->ndof_node;
@@ -40,9 +40,11 @@ static void mass_visit(void *data, const ctn_asm *a, const ctn_asm_elem *el)
     }
 }
 
-void ctn_asm_mass(const ctn_asm *a, int lumped, double *Mx)
+int ctn_asm_mass(ctn_ctx *ctx, ctn_asm *a, int lumped, double *Mx)
 {
     mass_pass mp = { lumped, Mx, NULL, (size_t)-1 };
+    int rc = ctn_asm_need_slots(ctx, a);
+    if (rc) return rc;
     memset(Mx, 0, a->nnz * sizeof(double));
     ctn_asm_loop(a, NULL, 0, 0, mass_visit, &mp, NULL);
     for (size_t i = 0; i < a->nn; i++)               /* point masses on the diagonal */
@@ -50,6 +52,7 @@ void ctn_asm_mass(const ctn_asm *a, int lumped, double *Mx)
             int q = node_eq(a, i, k);
             if (q >= 0) Mx[a->colptr[q + 1] - 1] += a->m->nodes.v[i].mass;
         }
+    return CTN_OK;
 }
 
 int ctn_asm_mass_diag(const ctn_asm *a, double *diag, double tot[3], size_t *bad)

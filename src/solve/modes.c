@@ -210,8 +210,8 @@ static int prepare(ctn_modal *md, const ctn_solution *s)
     double t0 = ctn_clock();
     int rc = ctn_modal_check(p, md->opt, md->diag, md->sum.total_mass);
     if (!rc) rc = ctn_problem_tangent_at(p, s, md->d, "ctn_problem_modes");
+    if (!rc) rc = ctn_asm_mass(p->ctx, p->a, md->opt->mass == CTN_MASS_LUMPED, md->Mx);
     if (rc) return rc;
-    ctn_asm_mass(p->a, md->opt->mass == CTN_MASS_LUMPED, md->Mx);
     ctn_asm_mass_moving(p->a, md->Mx, md->sum.total_mass);       /* of this M */
     double ls = lambda_scale(p, md->diag), w = CTN_TWO_PI * md->opt->shift;
     md->sigma = md->opt->shift > 0 ? w * w : -(ls > 0 ? 1e-9 * ls : 1.0);   /* below every
