@@ -16,6 +16,7 @@
 #include "linalg/linsolve.h"
 
 #include "bench_common.h"
+#include "bench_tangent.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -87,20 +88,15 @@ int main(int argc, char **argv)
     ctn_model *m = NULL;
     ctn_asm *a = NULL;
     ctn_linsolve *ls = NULL;
-    double *d = NULL, *f = NULL, *Kx = NULL, *B = NULL, *X = NULL, tf = 0, cf = 0;
+    double *Kx = NULL, *B = NULL, *X = NULL, tf = 0, cf = 0;
     int rc = ctn_ctx_create(&ctx);
-    if (!rc) rc = ctn_read_file(ctx, path, &m, NULL);
-    if (!rc) rc = ctn_asm_create(ctx, m, &a);
+    if (!rc) rc = bench_tangent(ctx, path, &m, &a, &Kx);
     size_t n = a ? a->ndof : 0;
     if (!rc) {
-        d = calloc(a->map.nstate, sizeof *d);
-        f = calloc(a->map.nstate, sizeof *f);
-        Kx = calloc(a->nnz, sizeof *Kx);
         B = malloc(n * (size_t)kmax * sizeof *B);
         X = malloc(n * (size_t)kmax * sizeof *X);
-        rc = d && f && Kx && B && X ? 0 : CTN_ERR_NOMEM;
+        rc = B && X ? 0 : CTN_ERR_NOMEM;
     }
-    if (!rc) rc = ctn_asm_eval(a, d, 0, f, Kx, NULL, NULL) ? CTN_ERR_MODEL : 0;
     ctn_pattern pat = { n, a ? a->colptr : NULL, a ? a->rowind : NULL };
     if (!rc) rc = ctn_linsolve_create(ctx, "cholmod", &pat, CTN_ORDER_AUTO, &ls);
     if (!rc) ctn_linsolve_set_threads(ls, threads);
@@ -125,8 +121,6 @@ int main(int argc, char **argv)
         fflush(stdout);
     }
     if (rc) fprintf(stderr, "bench_block: %s\n", ctn_ctx_message(ctx));
-    free(d);
-    free(f);
     free(Kx);
     free(B);
     free(X);

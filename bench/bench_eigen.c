@@ -18,6 +18,7 @@
 #include "linalg/pcg.h"
 
 #include "bench_common.h"
+#include "bench_tangent.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -125,18 +126,10 @@ int main(int argc, char **argv)
     ctn_asm *a = NULL;
     bench B;
     memset(&B, 0, sizeof B);
-    double *d = NULL, *f = NULL, *Kx = NULL, *Mx = NULL, la[1000], lb[1000];
+    double *Kx = NULL, *Mx = NULL, la[1000], lb[1000];
     int rc = ctn_ctx_create(&ctx);
-    if (!rc) rc = ctn_read_file(ctx, argv[1], &m, NULL);
-    if (!rc) rc = ctn_asm_create(ctx, m, &a);
-    if (!rc) {
-        d = calloc(a->map.nstate, sizeof *d);
-        f = calloc(a->map.nstate, sizeof *f);
-        Kx = calloc(a->nnz, sizeof *Kx);
-        Mx = calloc(a->nnz, sizeof *Mx);
-        rc = d && f && Kx && Mx ? 0 : CTN_ERR_NOMEM;
-    }
-    if (!rc) rc = ctn_asm_eval(a, d, 0, f, Kx, NULL, NULL) ? CTN_ERR_MODEL : 0;
+    if (!rc) rc = bench_tangent(ctx, argv[1], &m, &a, &Kx);
+    if (!rc && !(Mx = calloc(a->nnz, sizeof *Mx))) rc = CTN_ERR_NOMEM;
     if (!rc) rc = ctn_asm_mass(ctx, a, 0, Mx);
     B.pat = (ctn_pattern){ a ? a->ndof : 0, a ? a->colptr : NULL, a ? a->rowind : NULL };
     B.Kx = Kx;
@@ -169,8 +162,6 @@ int main(int argc, char **argv)
         printf("# largest relative difference of the eigenvalues: %.1e\n", dmax);
     }
     ctn_linsolve_destroy(&B.ls);
-    free(d);
-    free(f);
     free(Kx);
     free(Mx);
     ctn_asm_destroy(&a);

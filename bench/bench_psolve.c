@@ -19,6 +19,7 @@
 #include "linalg/psolve.h"
 
 #include "bench_common.h"
+#include "bench_tangent.h"
 
 #include <pthread.h>
 #include <stdio.h>
@@ -133,21 +134,16 @@ int main(int argc, char **argv)
     memset(s, 0, sizeof s);
     cholmod_l_start(&s[0].cm);
     cholmod_l_start(&s[1].cm);
-    double *d = NULL, *f = NULL, *Kx = NULL, *B = NULL, *X = NULL, *X1 = NULL, tf = 0;
+    double *Kx = NULL, *B = NULL, *X = NULL, *X1 = NULL, tf = 0;
     int rc = ctn_ctx_create(&ctx);
-    if (!rc) rc = ctn_read_file(ctx, path, &m, NULL);
-    if (!rc) rc = ctn_asm_create(ctx, m, &a);
+    if (!rc) rc = bench_tangent(ctx, path, &m, &a, &Kx);
     size_t n = a ? a->ndof : 0, nb = n * (size_t)kmax;
     if (!rc) {
-        d = calloc(a->map.nstate, sizeof *d);
-        f = calloc(a->map.nstate, sizeof *f);
-        Kx = calloc(a->nnz, sizeof *Kx);
         B = malloc(nb * sizeof *B);
         X = malloc(2 * nb * sizeof *X);
         X1 = malloc(nb * sizeof *X1);
-        rc = d && f && Kx && B && X && X1 ? 0 : CTN_ERR_NOMEM;
+        rc = B && X && X1 ? 0 : CTN_ERR_NOMEM;
     }
-    if (!rc) rc = ctn_asm_eval(a, d, 0, f, Kx, NULL, NULL) ? CTN_ERR_MODEL : 0;
     if (!rc && !(s[0].L = s[1].L = factor(a, Kx, &s[0].cm, &tf))) rc = ctn_error(ctx, CTN_ERR_LINALG, "no factor");
     if (!rc) rc = ctn_psolve_create(ctx, s[0].L, &p);
     if (!rc && !p) rc = ctn_error(ctx, CTN_ERR_LINALG, "no split of the tree: nothing to measure");
@@ -182,8 +178,6 @@ int main(int argc, char **argv)
     cholmod_l_free_factor(&s[0].L, &s[0].cm);
     cholmod_l_finish(&s[0].cm);
     cholmod_l_finish(&s[1].cm);
-    free(d);
-    free(f);
     free(Kx);
     free(B);
     free(X);

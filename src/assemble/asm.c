@@ -183,16 +183,6 @@ int ctn_asm_eval(const ctn_asm *a, const double *d, unsigned mode, double *f, do
 
 int ctn_asm_can_feed(const ctn_asm *a) { return a->gather && !a->gather->mixed; }
 
-int ctn_asm_eval_feed(const ctn_asm *a, const double *d, unsigned mode, double *f, double *Kx, double *U,
-                      size_t *bad, ctn_feed *feed)
-{
-    double u = 0;
-    size_t first = SIZE_MAX;
-    int collapsed = ctn_asm_gather_feed(a, d, mode, f, Kx, &u, &first, feed);
-    if (U) *U = u;
-    if (bad && collapsed) *bad = first;
-    return collapsed;
-}
 
 typedef struct compressed {
     size_t n;

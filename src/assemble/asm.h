@@ -174,13 +174,10 @@ int ctn_asm_gather_build(ctn_ctx *ctx, ctn_asm *a, int **ptr, int **adj);
 void ctn_asm_gather_free(ctn_asm_gather **g);
 int ctn_asm_gather_eval(const ctn_asm *a, const double *d, unsigned mode, double *f, double *Kx,
                         double *U, size_t *bad);
-/* The same on the calling thread alone, node after node, publishing to feed the
- * tangent's columns done as it goes (all of them at the end, even if an element
- * collapsed): a factorization on another thread follows it (solve/overlap.c). */
-int ctn_asm_gather_feed(const ctn_asm *a, const double *d, unsigned mode, double *f, double *Kx, double *U,
-                        size_t *bad, ctn_feed *feed);
 /* Whether ctn_asm_eval_feed can assemble this model (every element node by node), and
- * ctn_asm_eval with the tangent's columns published to feed as they are done. */
+ * ctn_asm_eval done that way on the calling thread alone, node after node, publishing to
+ * feed the tangent's columns done as it goes (all of them at the end, even if an element
+ * collapsed): a factorization on another thread follows it (solve/overlap.c; gather.c). */
 int ctn_asm_can_feed(const ctn_asm *a);
 int ctn_asm_eval_feed(const ctn_asm *a, const double *d, unsigned mode, double *f, double *Kx, double *U,
                       size_t *bad, ctn_feed *feed);

@@ -29,7 +29,7 @@
                                          count in bits 4 .. 7 */
 #define PLAIN_DEG 8                   /* elements of a plain node at most */
 #define FEED_CHUNKS 16                /* chunks between two publications of the columns
-                                         done (ctn_asm_gather_feed) */
+                                         done (ctn_asm_eval_feed) */
 
 /* k's upper triangle (ctn_axial_k) at (i, j) of the symmetric 3 x 3. */
 static const int sym3[3][3] = { { 0, 1, 2 }, { 1, 3, 4 }, { 2, 4, 5 } };
@@ -465,7 +465,7 @@ int ctn_asm_gather_eval(const ctn_asm *a, const double *d, unsigned mode, double
     return *bad != SIZE_MAX;
 }
 
-int ctn_asm_gather_feed(const ctn_asm *a, const double *d, unsigned mode, double *f, double *Kx, double *U,
+int ctn_asm_eval_feed(const ctn_asm *a, const double *d, unsigned mode, double *f, double *Kx, double *U,
                         size_t *bad, ctn_feed *feed)
 {
     const ctn_asm_gather *g = a->gather;
@@ -473,7 +473,7 @@ int ctn_asm_gather_feed(const ctn_asm *a, const double *d, unsigned mode, double
                 g->keep, 0.0, SIZE_MAX, feed };
     run_part(&pt);
     ctn_feed_publish(feed, a->ndof);
-    *U = pt.U;
-    *bad = pt.bad;
-    return *bad != SIZE_MAX;
+    if (U) *U = pt.U;
+    if (bad && pt.bad != SIZE_MAX) *bad = pt.bad;
+    return pt.bad != SIZE_MAX;
 }

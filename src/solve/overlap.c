@@ -6,24 +6,16 @@
  * finished: the iteration costs the factorization, not the sum. The caller keeps its
  * thread, and can still drop the factorization (a converged state needs none) once its
  * residual is known. */
-#include "solve/overlap.h"
+#include "solve/problem.h"
 
-#include <time.h>
 #include <unistd.h>
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 static void *factorize(void *arg)
 {
     ctn_overlap *o = arg;
-    double t0 = now();
+    double t0 = ctn_clock();
     o->rc = ctn_linsolve_factor_feed(o->ls, o->Kx, o->shift, &o->feed, &o->info);
-    o->t_fac = now() - t0;
+    o->t_fac = ctn_clock() - t0;
     return NULL;
 }
 

@@ -245,14 +245,6 @@ double ctn_problem_fref(const ctn_problem *p)
     return ff > 0 ? sqrt(ff) : fr > 0 ? sqrt(fr) : 1.0;
 }
 
-/* The factorization started beside the last assembly, waited for. */
-static int finish_overlapped(ctn_problem *p, ctn_factor_info *info, double *t)
-{
-    int rc = ctn_overlap_finish(&p->ovl, info);
-    *t = p->ovl.t_fac;
-    return rc;
-}
-
 void ctn_problem_settle(ctn_problem *p)
 {
     if (!p->ovl.running) return;
@@ -263,12 +255,13 @@ void ctn_problem_settle(ctn_problem *p)
 
 int ctn_problem_factor(ctn_problem *p, double shift, int *posdef, long *fail_col)
 {
-    double t0 = ctn_clock(), t = 0;
+    double t0 = ctn_clock();
     ctn_factor_info info = { 1, -1 };
     if (shift != 0) ctn_problem_settle(p);
-    int rc = p->ovl.running ? finish_overlapped(p, &info, &t)
-                            : p->ls ? ctn_linsolve_factor(p->ls, p->Kx, shift, &info) : CTN_OK;
-    p->sum->t_factor += t > 0 ? t : ctn_clock() - t0;
+    int beside = p->ovl.running;                  /* started beside the last assembly */
+    int rc = beside ? ctn_overlap_finish(&p->ovl, &info)
+                    : p->ls ? ctn_linsolve_factor(p->ls, p->Kx, shift, &info) : CTN_OK;
+    p->sum->t_factor += beside ? p->ovl.t_fac : ctn_clock() - t0;
     p->sum->t_factor_cpu += p->ls ? ctn_linsolve_cpu(p->ls) : 0;
     p->sum->threads = p->ls ? ctn_linsolve_threads(p->ls) : 1;
     p->sum->factorizations++;
