@@ -139,7 +139,7 @@ static int incidence(const ctn_problem *e, chains *c)
     ctn_ctx *ctx = e->ctx;
     c->deg = ctn_calloc(ctx, nn, sizeof(int));
     c->inc = ctn_malloc(ctx, 2 * nn, sizeof(int));
-    c->nodes = ctn_malloc(ctx, nn, sizeof(int));
+    c->nodes = ctn_malloc(ctx, nn + 1, sizeof(int));   /* a chain's two anchors may be one node */
     c->elems = ctn_malloc(ctx, nn, sizeof(int));
     c->seen = ctn_calloc(ctx, ne, 1);
     if (!c->deg || !c->inc || !c->nodes || !c->elems || !c->seen) return CTN_ERR_NOMEM;
