@@ -4,9 +4,12 @@
  * matrix; 1, 4 and 7 columns. The two solves differ by rounding only: each has a small
  * backward error (checked from its residual), and their difference is bounded by the
  * condition number (from power iterations) times the backward errors. One thread and
- * two give identical results; every allocation may fail. */
+ * two give identical results; every allocation may fail. The 4-column supernode sweeps
+ * by hand (both the baseline's copy and AVX2's) against a plain loop on single
+ * supernodes. */
 #include "linalg/linsolve.h"
 #include "linalg/psolve.h"
+#include "linalg/psolve_k4.h"
 
 #include "check.h"
 
@@ -330,6 +333,69 @@ static void backend(cholmod_common *cm)
     cholmod_l_free_sparse(&A, cm);
 }
 
+/* One supernode (nr x nc, a well-conditioned lower triangle over L21) and 4 columns: the
+ * kernels' forward and backward sweeps against plain loops, entry by entry. */
+static void kernel_case(const ctn_ps4_kernels *k, const char *copy, int nr, int nc)
+{
+    const int m = nr - nc;
+    double *L = malloc((size_t)nr * (size_t)nc * sizeof *L), *Z = malloc((size_t)nc * 4 * sizeof *Z);
+    double *Zr = malloc((size_t)nc * 4 * sizeof *Zr), *E = malloc((size_t)(m + 1) * 4 * sizeof *E);
+    double *Er = malloc((size_t)(m + 1) * 4 * sizeof *Er);
+    for (int c = 0; c < nc; c++)
+        for (int r = 0; r < nr; r++)
+            L[r + (size_t)nr * c] = r < c ? 0 : r == c ? 2 + 0.1 * (c % 3) : 0.3 * sin(1.3 * r + 0.7 * c) / (1 + r - c);
+    for (int i = 0; i < 4 * nc; i++) Z[i] = Zr[i] = cos(0.37 * i);
+    for (int i = 0; i < 4 * m; i++) E[i] = 99;                      /* overwritten */
+    k->forward(L, nr, nc, Z, E);
+    for (int c = 0; c < 4; c++) {                                   /* plain: Z = L11 \ Z, E = L21 Z */
+        for (int u = 0; u < nc; u++) {
+            Zr[4 * u + c] /= L[u + (size_t)nr * u];
+            for (int t = u + 1; t < nc; t++) Zr[4 * t + c] -= L[t + (size_t)nr * u] * Zr[4 * u + c];
+        }
+        for (int i = 0; i < m; i++) {
+            Er[4 * i + c] = 0;
+            for (int u = 0; u < nc; u++) Er[4 * i + c] += L[nc + i + (size_t)nr * u] * Zr[4 * u + c];
+        }
+    }
+    double worst = 0;
+    for (int i = 0; i < 4 * nc; i++) worst = fmax(worst, fabs(Z[i] - Zr[i]) / (1 + fabs(Zr[i])));
+    for (int i = 0; i < 4 * m; i++) worst = fmax(worst, fabs(E[i] - Er[i]) / (1 + fabs(Er[i])));
+    CHECK_MSG(worst <= 1e-14, "%s forward nr %d nc %d: differs by %.3g", copy, nr, nc, worst);
+    for (int i = 0; i < 4 * m; i++) E[i] = Er[i] = sin(0.91 * i);
+    k->backward(L, nr, nc, Z, E);
+    for (int c = 0; c < 4; c++)                                     /* plain: Z = L11' \ (Z - L21' E) */
+        for (int u = nc - 1; u >= 0; u--) {
+            double s = Zr[4 * u + c];
+            for (int t = u + 1; t < nr; t++) s -= L[t + (size_t)nr * u] * (t < nc ? Zr[4 * t + c] : Er[4 * (t - nc) + c]);
+            Zr[4 * u + c] = s / L[u + (size_t)nr * u];
+        }
+    worst = 0;
+    for (int i = 0; i < 4 * nc; i++) worst = fmax(worst, fabs(Z[i] - Zr[i]) / (1 + fabs(Zr[i])));
+    CHECK_MSG(worst <= 1e-14, "%s backward nr %d nc %d: differs by %.3g", copy, nr, nc, worst);
+    free(L);
+    free(Z);
+    free(Zr);
+    free(E);
+    free(Er);
+}
+
+static void kernels(void)
+{
+    ctn_ps4_kernels k[2] = { { ctn_ps4_forward_base, ctn_ps4_backward_base } };
+    const char *name[2] = { "baseline", "avx2" };
+    int copies = 1;
+#if CTN_PS4_AVX2
+    if (__builtin_cpu_supports("avx2")) k[copies++] = (ctn_ps4_kernels){ ctn_ps4_forward_avx2, ctn_ps4_backward_avx2 };
+#endif
+    const int shapes[][2] = { { 1, 1 }, { 3, 3 }, { 4, 4 }, { 9, 4 }, { 5, 5 }, { 20, 8 }, { 40, 13 }, { 7, 2 } };
+    for (int c = 0; c < copies; c++)
+        for (size_t s = 0; s < sizeof shapes / sizeof *shapes; s++) kernel_case(&k[c], name[c], shapes[s][0], shapes[s][1]);
+    ctn_ps4_kernels chosen;
+    ctn_ps4_choose(&chosen);
+    CHECK(chosen.forward == k[copies - 1].forward && chosen.backward == k[copies - 1].backward);
+    printf("4-column sweeps: %d cop%s checked (%s chosen)\n", copies, copies > 1 ? "ies" : "y", name[copies - 1]);
+}
+
 int main(void)
 {
     ctn_threads_saved saved;
@@ -348,6 +414,7 @@ int main(void)
         alloc_failures(A[0], &cm);
     }
     backend(&cm);
+    kernels();
     for (int i = 0; i < 4; i++) cholmod_l_free_sparse(&A[i], &cm);
     cholmod_l_finish(&cm);
     ctn_threads_pop(&saved);

@@ -5,8 +5,9 @@
  * (blanczos_orth.c); T = V^T B OP V is kept, its eigenpairs (LAPACK dsyev) are the Ritz
  * pairs, and OP V = V T + W_new R e_last^T gives each Ritz pair's residual |R s_last|
  * without forming it. When V is full, the nkeep best Ritz vectors and the pending block
- * start it again (T then diagonal plus the block's column). docs/theory.md, "Modal
- * analysis". */
+ * start it again (T then diagonal plus the block's column). B V is not kept: B is
+ * sparse and cheap beside the solves, and a second basis of that size would double the
+ * memory that the process writes for the first time. docs/theory.md, "Modal analysis". */
 #include "linalg/blanczos.h"
 #include "linalg/lapack.h"
 #include "linalg/linsolve.h"
@@ -38,8 +39,8 @@ static double nrm2(const double *x, int n)
 
 static void blz_free(ctn_blz *z)
 {
-    double *p[] = { z->V, z->MV, z->W, z->MW, z->X, z->T, z->S, z->theta, z->H, z->Y, z->R, z->Rb, z->est, z->work,
-                    z->AX, z->BX, z->C, z->lam0, z->Cpart };
+    double *p[] = { z->V, z->W, z->MW, z->X, z->T, z->S, z->theta, z->H, z->Y, z->R, z->Rb, z->est, z->work,
+                    z->C, z->lam0, z->Cpart };
     for (size_t i = 0; i < sizeof p / sizeof *p; i++) ctn_free(p[i]);
     ctn_free(z->order);
 }
@@ -51,7 +52,6 @@ static int blz_alloc(ctn_blz *z)
     size_t nx = (size_t)(z->nkeep > z->nev ? z->nkeep : z->nev);
     z->lwork = 66 * z->mcap;
     z->V = ctn_malloc(c, n * m, sizeof(double));
-    z->MV = ctn_malloc(c, n * m, sizeof(double));
     z->W = ctn_malloc(c, n * ws, sizeof(double));
     z->MW = ctn_malloc(c, n * ws, sizeof(double));
     z->X = ctn_malloc(c, n * nx, sizeof(double));
@@ -65,23 +65,21 @@ static int blz_alloc(ctn_blz *z)
     z->Rb = ctn_calloc(c, b * b, sizeof(double));
     z->work = ctn_malloc(c, (size_t)z->lwork, sizeof(double));
     z->order = ctn_malloc(c, m, sizeof(int));
-    z->AX = ctn_malloc(c, n * nx, sizeof(double));
-    z->BX = ctn_malloc(c, n * nx, sizeof(double));
     z->C = ctn_malloc(c, nx * nx, sizeof(double));
     z->lam0 = ctn_malloc(c, (size_t)z->nev, sizeof(double));
     z->Cpart = ctn_malloc(c, m * m, sizeof(double));
-    return z->V && z->MV && z->W && z->MW && z->X && z->T && z->S && z->Y && z->theta && z->est && z->H && z->R &&
-           z->Rb && z->work && z->order && z->AX && z->BX && z->C && z->lam0 && z->Cpart ? CTN_OK : CTN_ERR_NOMEM;
+    return z->V && z->W && z->MW && z->X && z->T && z->S && z->Y && z->theta && z->est && z->H && z->R &&
+           z->Rb && z->work && z->order && z->C && z->lam0 && z->Cpart ? CTN_OK : CTN_ERR_NOMEM;
 }
 
-/* Append the new block (W[:, 0:q], B W) to the basis (its pages populated first). */
+/* Append the new block W[:, 0:q] to the basis (its pages populated first). */
 static void append(ctn_blz *z, int q)
 {
     size_t n = (size_t)z->n, j = (size_t)z->j;
     ctn_blz_populate_wait(z, z->j + q);
     ctn_blz_copy(z, z->V + n * j, z->W, n * (size_t)q);
-    ctn_blz_copy(z, z->MV + n * j, z->MW, n * (size_t)q);
     z->j += q;
+    z->mw_pending = 1;                  /* B W, from the orthonormalization: B V_pending */
 }
 
 /* A new block: OP applied to random vectors (in OP's range, as B may be singular),
@@ -104,7 +102,8 @@ static int start(ctn_blz *z)
 static int expand(ctn_blz *z)
 {
     const int n = z->n, w = z->j - z->ne, ld = z->mcap;
-    int q = 0, rc = z->ops->solve_block(z->ops->ud, z->MV + (size_t)n * (size_t)z->ne, z->W, w);
+    if (!z->mw_pending) ctn_blz_apply(z, z->ops->bmul, z->V + (size_t)n * (size_t)z->ne, z->MW, w);
+    int q = 0, rc = z->ops->solve_block(z->ops->ud, z->MW, z->W, w);
     z->info->block_solves++;
     z->info->ops += w;
     if (rc) return rc;
@@ -205,7 +204,7 @@ static int ritz(ctn_blz *z, int *nconv)
     return CTN_OK;
 }
 
-/* X = V[:, 0:ne] S[:, order[0:k]]: the k best Ritz vectors (from base: V or B V). */
+/* X = V[:, 0:ne] S[:, order[0:k]]: the k best Ritz vectors. */
 static void ritz_vectors(ctn_blz *z, const double *base, int k)
 {
     const int ne = z->ne, ld = z->mcap;
@@ -214,25 +213,29 @@ static void ritz_vectors(ctn_blz *z, const double *base, int k)
     ctn_blz_gemm_n(z, ne, k, 1, base, z->Y, ld, 0, z->X);
 }
 
-/* The final Rayleigh-Ritz: X = the nev + b best Ritz vectors (B X = B V times theirs: no
- * product with B), the pencil (X^T A X, X^T B X) solved by LAPACK (dsygv), the nev
- * eigenvalues nearest sigma kept (lambda ascending, C B-orthonormal), so that the pairs
- * come from A and B themselves, not from T (whose entries carry the rounding of the
- * solves); the b more vectors complete a cluster of close eigenvalues that the nev-th
- * would cut. */
+/* The final Rayleigh-Ritz: X = the nev + b best Ritz vectors, the pencil (X^T A X,
+ * X^T B X) solved by LAPACK (dsygv), the nev eigenvalues nearest sigma kept (lambda
+ * ascending, C B-orthonormal), so that the pairs come from A and B themselves, not from
+ * T (whose entries carry the rounding of the solves); the b more vectors complete a
+ * cluster of close eigenvalues that the nev-th would cut. A X and B X are formed ws
+ * columns at a time in W and B W (not kept: fresh memory costs more than the products). */
 static int rayleigh_ritz(ctn_blz *z, double *lambda)
 {
-    const int n = z->n, k = z->nev + z->b < z->ne ? z->nev + z->b : z->ne, one_i = 1;
+    const int k = z->nev + z->b < z->ne ? z->nev + z->b : z->ne, one_i = 1;
+    const size_t n = (size_t)z->n;
     double *G = z->Y, *F = z->Y + (size_t)k * (size_t)k;          /* k x k each */
     int info = 0;
     z->p = k;
     ctn_blz_populate_wait(z, CTN_BLZ_ALL);
-    ritz_vectors(z, z->MV, k);                                      /* B X */
-    ctn_blz_copy(z, z->BX, z->X, (size_t)n * (size_t)k);
     ritz_vectors(z, z->V, k);
-    ctn_blz_apply(z, z->ops->amul, z->X, z->AX, k);
-    ctn_blz_gemm_t(z, k, k, z->X, z->AX, G, k);                     /* X^T A X */
-    ctn_blz_gemm_t(z, k, k, z->X, z->BX, F, k);                     /* X^T B X */
+    z->mw_pending = 0;                  /* W and B W: scratch from here */
+    for (int c0 = 0; c0 < k; c0 += z->ws) {
+        const int mc = k - c0 < z->ws ? k - c0 : z->ws;
+        ctn_blz_apply(z, z->ops->amul, z->X + n * (size_t)c0, z->W, mc);
+        ctn_blz_gemm_t(z, k, mc, z->X, z->W, G + (size_t)k * (size_t)c0, k);     /* X^T A X */
+        ctn_blz_apply(z, z->ops->bmul, z->X + n * (size_t)c0, z->MW, mc);
+        ctn_blz_gemm_t(z, k, mc, z->X, z->MW, F + (size_t)k * (size_t)c0, k);    /* X^T B X */
+    }
     dsygv_(&one_i, "V", "U", &k, G, &k, F, &k, z->est, z->work, &z->lwork, &info, 1, 1);
     if (info) return ctn_error(z->ctx, CTN_ERR_LINALG, "block eigen-solver: LAPACK dsygv failed (info %d)", info);
     int lo = 0;                                     /* the nev nearest sigma: a window */
@@ -244,19 +247,21 @@ static int rayleigh_ritz(ctn_blz *z, double *lambda)
 
 /* The largest true residual |A x - lambda B x| / |A x| of the pairs (lambda, X C) that
  * are above 1e-10 and more than 10 times their rounding bound (0 if none: converged);
- * the largest of all in info->max_residual. By chunks of ws / 2 pairs: A X C and B X C
- * into W, then X C and the rounding bounds (absmul) of those above 1e-10 into B W. */
+ * the largest of all in info->max_residual. By chunks of ws / 2 pairs: X C into B W, A
+ * and B times it into W, then the rounding bounds (absmul) of those above 1e-10 into the
+ * rest of B W (their columns of X C moved to the front). */
 static double residuals(ctn_blz *z, const double *lambda)
 {
     const int n = z->n, k = z->p, m = z->ws / 2;
-    double open = 0, lam[CTN_BLZ_BMAX], den[CTN_BLZ_BMAX], res[CTN_BLZ_BMAX], *Y = z->Y;
+    double open = 0, lam[CTN_BLZ_BMAX], den[CTN_BLZ_BMAX], res[CTN_BLZ_BMAX];
     z->info->max_residual = 0;
     for (int c0 = 0; c0 < z->nev; c0 += m) {
         int mc = z->nev - c0 < m ? z->nev - c0 : m, cnt = 0;
         const double *C = z->C + (size_t)k * (size_t)c0;
         double *Ax = z->W, *Bx = z->W + (size_t)n * (size_t)m, *x = z->MW, *abs = z->MW + (size_t)n * (size_t)m;
-        ctn_blz_gemm_n(z, k, mc, 1, z->AX, C, k, 0, Ax);
-        ctn_blz_gemm_n(z, k, mc, 1, z->BX, C, k, 0, Bx);
+        ctn_blz_gemm_n(z, k, mc, 1, z->X, C, k, 0, x);
+        ctn_blz_apply(z, z->ops->amul, x, Ax, mc);
+        ctn_blz_apply(z, z->ops->bmul, x, Bx, mc);
         for (int c = 0; c < mc; c++) {
             double *ax = Ax + (size_t)n * (size_t)c, *bx = Bx + (size_t)n * (size_t)c;
             double an = nrm2(ax, n), bn = nrm2(bx, n), d = fmax(an, fabs(z->sigma) * bn);
@@ -264,13 +269,12 @@ static double residuals(ctn_blz *z, const double *lambda)
             double r = d > 0 ? nrm2(ax, n) / d : 0;
             z->info->max_residual = fmax(z->info->max_residual, r);
             if (r <= BLZ_RESID) continue;
-            memcpy(Y + (size_t)k * (size_t)cnt, C + (size_t)k * (size_t)c, (size_t)k * sizeof(double));
+            if (cnt < c) memcpy(x + (size_t)n * (size_t)cnt, x + (size_t)n * (size_t)c, (size_t)n * sizeof(double));
             lam[cnt] = lambda[c0 + c];
             den[cnt] = d;
             res[cnt++] = r;
         }
         if (!cnt) continue;
-        ctn_blz_gemm_n(z, k, cnt, 1, z->X, Y, k, 0, x);
         ctn_blz_apply_abs(z, x, lam, abs, cnt);
         for (int c = 0; c < cnt; c++) {
             double fl = DBL_EPSILON * nrm2(abs + (size_t)n * (size_t)c, n) / den[c];   /* rounding of the residual */
@@ -281,7 +285,7 @@ static double residuals(ctn_blz *z, const double *lambda)
     return open;
 }
 
-/* Thick restart: the keep best Ritz vectors (and B times them) and, if pending, the
+/* Thick restart: the keep best Ritz vectors and, if pending, the
  * pending block become the basis; T = diag(theta) until the block's column is
  * computed. */
 static void restart(ctn_blz *z, int keep, int pending)
@@ -290,10 +294,7 @@ static void restart(ctn_blz *z, int keep, int pending)
     ctn_blz_populate_wait(z, CTN_BLZ_ALL);
     ritz_vectors(z, z->V, keep);
     ctn_blz_copy(z, z->V, z->X, n * k);
-    ritz_vectors(z, z->MV, keep);
-    ctn_blz_copy(z, z->MV, z->X, n * k);
     memmove(z->V + n * k, z->V + n * (size_t)z->ne, n * q * sizeof(double));
-    memmove(z->MV + n * k, z->MV + n * (size_t)z->ne, n * q * sizeof(double));
     memset(z->T, 0, ld * ld * sizeof(double));
     for (size_t i = 0; i < k; i++) z->T[i + ld * i] = z->theta[z->order[i]];
     z->ne = (int)k;

@@ -26,12 +26,12 @@ typedef struct ctn_blz {
     int n, nev, b, mcap;       /* order, wanted pairs, block width, most basis columns */
     int nkeep;                 /* Ritz vectors kept by a restart */
     double sigma;
-    double *V, *MV;            /* n x mcap: the basis (B-orthonormal) and B V */
-    double *W, *MW;            /* n x ws: a new block and B times it (the columns from b:
-                                  the residuals' scratch) */
+    double *V;                 /* n x mcap: the basis (B-orthonormal) */
+    double *W, *MW;            /* n x ws: a new block and B times it (MW: also B times the
+                                  block a solve or a projection works on; the columns
+                                  from b: the residuals' scratch) */
     int ws;                    /* max(2 b, 8) */
     double *X;                 /* n x max(nkeep, nev): restart and Ritz vectors */
-    double *AX, *BX;           /* n x (nev + b): A and B times the Ritz vectors */
     double *C;                 /* p x nev: the final Rayleigh-Ritz's eigenvectors */
     int p;                     /* its Ritz vectors, min(nev + b, ne) */
     double *lam0;              /* nev: the eigenvalues of the round before */
@@ -50,6 +50,7 @@ typedef struct ctn_blz {
     int j, ne;                 /* basis columns, expanded columns */
     int w;                     /* width of the last expanded block (columns of R) */
     int q;                     /* columns of the new block (rows of R) */
+    int mw_pending;            /* MW[:, 0:j - ne] holds B times the pending block */
     unsigned long long seed;   /* random replacements of dependent columns */
     int threads;               /* 1, or 2: the dense work split between two (blanczos_par.c) */
     double *Cpart;             /* mcap x mcap: the helper thread's half of a product A^T B */
@@ -62,8 +63,8 @@ typedef struct ctn_blz {
     pthread_cond_t pf_done;
 } ctn_blz;
 
-/* W (w columns) -= V[:, 0:j] (V^T B W), twice (classical Gram-Schmidt, BLAS-3); the sum
- * of the coefficients into H (j x w). */
+/* W (w columns) -= V[:, 0:j] (V^T B W), twice (classical Gram-Schmidt, BLAS-3; B W
+ * formed in MW for each pass); the sum of the coefficients into H (j x w). */
 void ctn_blz_project(ctn_blz *z, int w);
 /* B-orthonormalize W (w columns, already projected; B W in MW): the new block's columns
  * into W[:, 0:q] (B W into MW), q <= room, and R (q x w) with W_in = V H + W_new R.
@@ -93,9 +94,9 @@ void ctn_blz_copy(ctn_blz *z, double *dst, const double *src, size_t count);
 void ctn_blz_apply(ctn_blz *z, void (*op)(void *ud, const double *x, double *y), const double *X, double *Y, int k);
 /* Y[:, c] = ops->absmul(X[:, c], lambda[c]) (Y zeroed first) for the k columns. */
 void ctn_blz_apply_abs(ctn_blz *z, const double *X, const double *lambda, double *Y, int k);
-/* The helper thread that populates V and B V ahead of the process, then X, A X and B X
- * (two threads only); wait: V's and B V's columns 0 .. upto - 1 populated (the caller
- * populates those not yet claimed), upto = CTN_BLZ_ALL: X, A X and B X as well; stop:
+/* The helper thread that populates V ahead of the process, then X
+ * (two threads only); wait: V's columns 0 .. upto - 1 populated (the caller
+ * populates those not yet claimed), upto = CTN_BLZ_ALL: X and W's scratch as well; stop:
  * the thread ended (before anything is written that was not waited for). */
 #define CTN_BLZ_ALL 0x7fffffff
 void ctn_blz_populate_start(ctn_blz *z);

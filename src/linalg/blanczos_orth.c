@@ -1,8 +1,8 @@
 /* The block Lanczos solver's B-orthogonal bases: a new block projected against the basis
  * by classical Gram-Schmidt twice (BLAS-3), then B-orthonormalized in itself by Cholesky
  * QR twice; a block whose columns are (nearly) linearly dependent goes column by column
- * with deflation instead. Every inner product is x^T (B y) with B y kept beside y, so no
- * product with B is repeated. */
+ * with deflation instead. Every inner product is x^T (B y); B y is formed for the few
+ * columns of the block (the basis's B V is not kept: blanczos.c). */
 #include "linalg/blanczos.h"
 #include "linalg/lapack.h"
 
@@ -24,10 +24,11 @@ void ctn_blz_random(ctn_blz *z, double *x)
     }
 }
 
-/* Wp (w columns, B Wp in MWp when MWp != NULL) -= V (V^T B Wp), twice; coefficients
- * summed into H (ld mcap). Both passes go over the whole basis: a first pass over the
- * last blocks only (where OP V_last lies in exact arithmetic) was measured to leave
- * residuals of 2e-10 to 5e-10 that two full passes bring below 1e-10. */
+/* Wp (w columns) -= V (V^T B Wp), twice (B Wp formed into the scratch MWp for each
+ * pass); coefficients summed into H (ld mcap). Both passes go over the whole basis: a
+ * first pass over the last blocks only (where OP V_last lies in exact arithmetic) was
+ * measured to leave residuals of 2e-10 to 5e-10 that two full passes bring below
+ * 1e-10, and one pass alone stalls the process. */
 static void project(ctn_blz *z, double *Wp, double *MWp, int w, double *H)
 {
     const int ld = z->mcap, j = z->j;
@@ -35,9 +36,9 @@ static void project(ctn_blz *z, double *Wp, double *MWp, int w, double *H)
     memset(H, 0, (size_t)ld * (size_t)w * sizeof(double));
     if (j == 0 || w == 0) return;
     for (int pass = 0; pass < 2; pass++) {
-        ctn_blz_gemm_t(z, j, w, z->MV, Wp, H2, ld);                     /* H2 = V^T B W */
+        ctn_blz_apply(z, z->ops->bmul, Wp, MWp, w);
+        ctn_blz_gemm_t(z, j, w, z->V, MWp, H2, ld);                     /* H2 = V^T B W */
         ctn_blz_gemm_n(z, j, w, -1, z->V, H2, ld, 1, Wp);               /* W -= V H2 */
-        if (MWp) ctn_blz_gemm_n(z, j, w, -1, z->MV, H2, ld, 1, MWp);
         for (int c = 0; c < w; c++)
             for (int r = 0; r < j; r++) H[r + (size_t)ld * (size_t)c] += H2[r + (size_t)ld * (size_t)c];
     }
@@ -45,7 +46,7 @@ static void project(ctn_blz *z, double *Wp, double *MWp, int w, double *H)
 
 void ctn_blz_project(ctn_blz *z, int w)
 {
-    project(z, z->W, NULL, w, z->H);
+    project(z, z->W, z->MW, w, z->H);
 }
 
 /* v -= W[:, 0:q] (W^T B v), twice (B v kept in Mv); coefficients added to coef[0:q];
@@ -87,7 +88,7 @@ static int replacement(ctn_blz *z, int q)
     z->ops->bmul(z->ops->ud, x, mx);
     double *H = z->H + (size_t)z->mcap * (size_t)(2 * z->b - 1);        /* a scratch column */
     memset(coef, 0, sizeof coef);
-    project(z, x, NULL, 1, H);
+    project(z, x, mx, 1, H);
     z->ops->bmul(z->ops->ud, x, mx);                                /* afresh: x shrank */
     double nrm = gs_column(z, x, mx, q, coef, HUGE_VAL);
     for (int k = 0; k < n; k++) {
@@ -140,14 +141,15 @@ static void compose(ctn_blz *z, const double *A, int q, int w)
 }
 
 /* One Cholesky QR step on W (w columns): G = W^T B W = U^T U, W = W U^-1, B W likewise,
- * R = U R. 1 when G is not numerically definite or (first, n0 given) a column keeps less
- * than CTN_BLZ_CHOLQR of its norm n0 out of the span of the earlier ones (then nothing
- * is changed). */
-static int cholqr(ctn_blz *z, int w, const double *n0)
+ * R = U R. 1 when G is not numerically definite or (first, n0 given: the columns' B-norms
+ * from G's diagonal into it) a column keeps less than CTN_BLZ_CHOLQR of its norm out of
+ * the span of the earlier ones (then nothing is changed). */
+static int cholqr(ctn_blz *z, int w, double *n0)
 {
     const int b = z->b;
     int info = 0;
     ctn_blz_gemm_t(z, w, w, z->W, z->MW, z->Rb, b);                   /* G = W^T B W */
+    for (int c = 0; n0 && c < w; c++) n0[c] = sqrt(fmax(z->Rb[c + b * c], 0));
     dpotrf_("U", &w, z->Rb, &b, &info, 1);
     for (int c = 0; !info && n0 && c < w; c++) info = !(z->Rb[c + b * c] > CTN_BLZ_CHOLQR * n0[c]);
     if (info) return 1;
@@ -164,15 +166,15 @@ int ctn_blz_orthonormalize(ctn_blz *z, int w, int room, int *q)
     const int n = z->n, b = z->b;
     double n0[CTN_BLZ_BMAX] = { 0 };
     ctn_blz_apply(z, z->ops->bmul, z->W, z->MW, w);
-    for (int c = 0; c < w; c++) {
-        double *v = z->W + (size_t)n * (size_t)c, *mv = z->MW + (size_t)n * (size_t)c;
-        n0[c] = sqrt(fmax(dot(v, mv, n), 0));                 /* |column| */
-    }
     memset(z->R, 0, (size_t)b * (size_t)b * sizeof(double));
     for (int c = 0; c < w; c++) z->R[c + b * c] = 1;
     if (w <= room && !cholqr(z, w, n0) && !cholqr(z, w, NULL)) {
         *q = w;
         return CTN_OK;
+    }
+    for (int c = 0; w > room && c < w; c++) {                  /* |column| (else from G) */
+        double *v = z->W + (size_t)n * (size_t)c, *mv = z->MW + (size_t)n * (size_t)c;
+        n0[c] = sqrt(fmax(dot(v, mv, n), 0));
     }
     int rc = gs_block(z, w, room, n0, q);                       /* R = Rb R */
     if (!rc) {

@@ -14,6 +14,7 @@
  * solved on two threads: only rows of their common ancestors (the top) are written by
  * both, forward, and those updates go to each thread's own buffer, summed after. */
 #include "linalg/psolve.h"
+#include "linalg/psolve_k4.h"
 #include "linalg/chol.h"
 #include "linalg/lapack.h"
 #include "linalg/linsolve.h"
@@ -44,6 +45,7 @@ struct ctn_psolve {
     double *Y;                   /* n x kcap: the permuted solution, by rows (Y[r k + c]) */
     double *E[2];                /* maxoff x kcap: a supernode's update, per thread, by rows */
     double *T[2];                /* ntop x kcap: updates to top rows, per thread, by rows */
+    ctn_ps4_kernels k4;          /* a supernode's sweeps for 4 columns */
 };
 
 /* ---- the plan ---- */
@@ -214,6 +216,7 @@ int ctn_psolve_create(ctn_ctx *ctx, const cholmod_factor *L, ctn_psolve **out)
     if (!rc) {
         p->ctx = ctx;
         p->n = (int)L->n;
+        ctn_ps4_choose(&p->k4);
         choose(&t, tmp, p->work);
         rc = lists(p, L, &t);
     }
@@ -293,11 +296,12 @@ static void forward(const job *j, long s)
     const int nc = (int)(Super[s + 1] - k1), nr = (int)(Lpi[s + 1] - Lpi[s]), m = nr - nc;
     const double *L11 = Lx + Lpx[s];
     double *Y = j->p->Y, *Z = Y + (size_t)k1 * (size_t)k;
-    if (k == 1) dtrsv_("L", "N", "N", &nc, L11, &nr, Z, &k, 1, 1, 1);                   /* Y1 = L11 \ Y1 */
+    if (k == 4) j->p->k4.forward(L11, nr, nc, Z, j->E);                               /* both, by hand */
+    else if (k == 1) dtrsv_("L", "N", "N", &nc, L11, &nr, Z, &k, 1, 1, 1);             /* Y1 = L11 \ Y1 */
     else dtrsm_("R", "L", "T", "N", &k, &nc, &one, L11, &nr, Z, &k, 1, 1, 1, 1);   /* Y1' = Y1' L11'^-1 */
     if (m <= 0) return;
     if (k == 1) dgemv_("N", &m, &nc, &one, L11 + nc, &nr, Z, &k, &zero, j->E, &k, 1);    /* E = L21 Y1 */
-    else dgemm_("N", "T", &k, &m, &nc, &one, Z, &k, L11 + nc, &nr, &zero, j->E, &k, 1, 1);   /* E' = Y1' L21' */
+    else if (k != 4) dgemm_("N", "T", &k, &m, &nc, &one, Z, &k, L11 + nc, &nr, &zero, j->E, &k, 1, 1);   /* E' = Y1' L21' */
     const SuiteSparse_long *rows = Ls + Lpi[s] + nc;
     const long *top = j->p->toprow, first = j->T ? j->p->first[s] : LONG_MAX;
     const double *e = j->E;
@@ -326,8 +330,15 @@ static void backward(const job *j, long s)
             const double *y = Y + (size_t)rows[i] * (size_t)k;
             for (int c = 0; c < k; c++) e[c] = y[c];
         }
+        if (k == 4) {
+            j->p->k4.backward(L11, nr, nc, Z, j->E);                                  /* both, by hand */
+            return;
+        }
         if (k == 1) dgemv_("T", &m, &nc, &minus, L11 + nc, &nr, j->E, &k, &one, Z, &k, 1);      /* Y1 -= L21' E */
         else dgemm_("N", "N", &k, &nc, &m, &minus, j->E, &k, L11 + nc, &nr, &one, Z, &k, 1, 1);   /* Y1' -= E' L21 */
+    } else if (k == 4) {
+        j->p->k4.backward(L11, nr, nc, Z, j->E);
+        return;
     }
     if (k == 1) dtrsv_("L", "T", "N", &nc, L11, &nr, Z, &k, 1, 1, 1);                   /* Y1 = L11' \ Y1 */
     else dtrsm_("R", "L", "N", "N", &k, &nc, &one, L11, &nr, Z, &k, 1, 1, 1, 1);   /* Y1' = Y1' L11^-1 */

@@ -11,6 +11,8 @@ typedef struct ctn_modal {
     ctn_problem *p;
     const ctn_modal_options *opt;
     double *Mx, *Ax;          /* nnz: mass and K - sigma M values, pattern order */
+    int *mcol, *mrow;         /* M's own upper pattern: its nonzeros only (ndof + 1, mnz) */
+    double *mval;             /* mnz: their values */
     double *d;                /* state: the solution's displacements */
     double *diag;             /* ndof: the lumped mass diagonal */
     double *w0, *w1;          /* ndof scratch */
@@ -25,6 +27,8 @@ typedef struct ctn_modal {
 /* Count and mass checks of a modal analysis (before a solve, too): the lumped diagonal
  * into diag (ndof) and the moving mass into tot; CTN_ERR_MODEL at the `modes` line. */
 int ctn_modal_check(ctn_problem *p, const ctn_modal_options *o, double *diag, double tot[3]);
+/* y = M x, on M's own pattern. */
+void ctn_modal_mass(const ctn_modal *md, const double *x, double *y);
 /* Store the modes (the first count columns of V, n each) in res (modes_post.c). */
 void ctn_modes_fill(ctn_modal *md, double *V, ctn_modes *res);
 
