@@ -140,6 +140,10 @@ static void test_pcg(void)
         double r = 0, bn = 0, e = 0, xn = 0;
         for (int i = 0; i < N; i++) { r += (y[i] - b[i]) * (y[i] - b[i]); bn += b[i] * b[i]; }
         CHECK_MSG(sqrt(r) <= 1e-13 * sqrt(bn), "A x_direct - b: %g", sqrt(r));
+        double y0[N], y1[N], y2[N];                        /* two at once: the same bits */
+        ctn_sym_matvec(&pat, A, b, y2);
+        ctn_sym_matvec2(&pat, A, xd, b, y0, y1);
+        CHECK(!memcmp(y0, y, sizeof y) && !memcmp(y1, y2, sizeof y2));
         op o = { &pat, A, near };
         ctn_pcg g = { .apply = op_apply, .precond = op_precond, .data = &o };
         ctn_pcg_init(&g, N, work);

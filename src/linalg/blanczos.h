@@ -31,7 +31,9 @@ typedef struct ctn_blz {
                                   block a solve or a projection works on; the columns
                                   from b: the residuals' scratch) */
     int ws;                    /* max(2 b, 8) */
-    double *X;                 /* n x max(nkeep, nev): restart and Ritz vectors */
+    int nx;                    /* columns of X: nev + b */
+    double *X;                 /* n x nx: the final Rayleigh-Ritz's Ritz vectors */
+    double *Rot;               /* 2 x CTN_BLZ_ROWS x mcap: ctn_blz_rotate's rows, per thread */
     double *C;                 /* p x nev: the final Rayleigh-Ritz's eigenvectors */
     int p;                     /* its Ritz vectors, min(nev + b, ne) */
     double *lam0;              /* nev: the eigenvalues of the round before */
@@ -87,6 +89,10 @@ void ctn_blz_gemm_n(ctn_blz *z, int k, int w, double alpha, const double *A, con
                     double *C);
 /* X (n x w) = X U^-1, U w x w upper triangular (ld ldu). */
 void ctn_blz_trsm(ctn_blz *z, int w, const double *U, int ldu, double *X);
+/* V[:, 0:k] = V[:, 0:ne] Y (Y ne x k, ld ldy; k <= ne), in place: by chunks of
+ * CTN_BLZ_ROWS rows, each formed in Rot and copied back. */
+#define CTN_BLZ_ROWS 256
+void ctn_blz_rotate(ctn_blz *z, int ne, int k, const double *Y, int ldy);
 /* dst[0:count] = src[0:count] (no overlap). */
 void ctn_blz_copy(ctn_blz *z, double *dst, const double *src, size_t count);
 /* Y[:, c] = op(X[:, c]) for the k columns (op: ops->bmul or ops->amul), half of them on

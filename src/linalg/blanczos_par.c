@@ -142,6 +142,32 @@ void ctn_blz_trsm(ctn_blz *z, int w, const double *U, int ldu, double *X)
     split(z, trsm_half, z->n, &t);
 }
 
+typedef struct rotate_args {
+    int ne, k, ldy;
+    const double *Y;
+} rotate_args;
+
+static void rotate_half(const half *h)
+{
+    const rotate_args *a = h->args;
+    const int n = h->z->n;
+    const double one = 1, zero = 0;
+    double *tmp = h->z->Rot + (size_t)h->part * CTN_BLZ_ROWS * (size_t)h->z->mcap;
+    for (int r0 = h->r0; r0 < h->r1; r0 += CTN_BLZ_ROWS) {
+        int m = h->r1 - r0 < CTN_BLZ_ROWS ? h->r1 - r0 : CTN_BLZ_ROWS;
+        double *v = h->z->V + r0;
+        dgemm_("N", "N", &m, &a->k, &a->ne, &one, v, &n, a->Y, &a->ldy, &zero, tmp, &m, 1, 1);
+        for (int c = 0; c < a->k; c++)
+            memcpy(v + (size_t)n * (size_t)c, tmp + (size_t)m * (size_t)c, (size_t)m * sizeof(double));
+    }
+}
+
+void ctn_blz_rotate(ctn_blz *z, int ne, int k, const double *Y, int ldy)
+{
+    rotate_args a = { ne, k, ldy, Y };
+    if (k > 0 && ne > 0) split(z, rotate_half, z->n, &a);
+}
+
 typedef struct copy_args {
     double *dst;
     const double *src;
@@ -171,11 +197,19 @@ typedef struct cols_args {
     double *Y;
 } cols_args;
 
+/* The columns by pairs where the operator has a two-column form (one pass over its
+ * matrix for both), the odd one alone. */
 static void cols_half(const half *h)
 {
     const cols_args *a = h->args;
+    const ctn_eigen_ops *ops = h->z->ops;
     const size_t n = (size_t)h->z->n;
-    for (int c = h->r0; c < h->r1; c++) a->op(h->z->ops->ud, a->X + n * (size_t)c, a->Y + n * (size_t)c);
+    void (*op2)(void *, const double *, const double *, double *, double *) =
+        a->op == ops->bmul ? ops->bmul2 : a->op == ops->amul ? ops->amul2 : NULL;
+    int c = h->r0;
+    for (; op2 && c + 1 < h->r1; c += 2)
+        op2(ops->ud, a->X + n * (size_t)c, a->X + n * (size_t)(c + 1), a->Y + n * (size_t)c, a->Y + n * (size_t)(c + 1));
+    for (; c < h->r1; c++) a->op(ops->ud, a->X + n * (size_t)c, a->Y + n * (size_t)c);
 }
 
 void ctn_blz_apply(ctn_blz *z, void (*op)(void *ud, const double *x, double *y), const double *X, double *Y, int k)
@@ -220,7 +254,7 @@ static void populate(const ctn_blz *z, double *x, size_t count)
     for (uintptr_t p = a; p < b; p += page) *(volatile char *)p = 0;
 }
 
-static int nx(const ctn_blz *z) { return z->nkeep > z->nev ? z->nkeep : z->nev; }
+static int nx(const ctn_blz *z) { return z->nx; }
 
 /* Unit u: below mcap column u of V, then the columns of X (the Ritz vectors, first
  * written by the first restart or the final Rayleigh-Ritz), then those of W and B W from

@@ -29,6 +29,10 @@ typedef struct ctn_eigen_ops {
     /* y = |A| |x| + |lambda| |B| |x| (entrywise absolute values): eps times it bounds the
      * rounding of the residual A x - lambda B x itself. */
     void (*absmul)(void *ud, const double *x, double lambda, double *y);
+    /* Optional (NULL: bmul or amul twice): y0 = B x0, y1 = B x1, or with A, in one pass
+     * over the matrix (the block solver's products go by pairs of columns). */
+    void (*bmul2)(void *ud, const double *x0, const double *x1, double *y0, double *y1);
+    void (*amul2)(void *ud, const double *x0, const double *x1, double *y0, double *y1);
     /* Block solver: its threads for the dense work over the basis. 0: two from 50 000
      * unknowns on a machine of two CPUs or more, else one; 1: one; 2: two. With two,
      * bmul, amul and absmul are called from two threads at once (on different

@@ -72,6 +72,27 @@ void ctn_sym_matvec(const ctn_pattern *p, const double *Ax, const double *x, dou
     }
 }
 
+void ctn_sym_matvec2(const ctn_pattern *p, const double *Ax, const double *x0, const double *x1, double *y0,
+                     double *y1)
+{
+    memset(y0, 0, p->n * sizeof *y0);
+    memset(y1, 0, p->n * sizeof *y1);
+    for (size_t j = 0; j < p->n; j++) {
+        double a0 = x0[j], a1 = x1[j], s0 = 0, s1 = 0;
+        for (int k = p->colptr[j]; k < p->colptr[j + 1]; k++) {
+            size_t i = (size_t)p->rowind[k];
+            y0[i] += Ax[k] * a0;
+            y1[i] += Ax[k] * a1;
+            if (i != j) {
+                s0 += Ax[k] * x0[i];
+                s1 += Ax[k] * x1[i];
+            }
+        }
+        y0[j] += s0;
+        y1[j] += s1;
+    }
+}
+
 void ctn_sym_matvec_abs(const ctn_pattern *p, const double *Ax, const double *x, double *y)
 {
     for (size_t j = 0; j < p->n; j++)

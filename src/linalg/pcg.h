@@ -26,6 +26,10 @@ int ctn_pcg_solve(ctn_pcg *g, const double *b, double *x, double target, int max
                   int *iters, int *posdef);
 /* y = A x, A symmetric given by the upper triangle on pattern p with values Ax. */
 void ctn_sym_matvec(const ctn_pattern *p, const double *Ax, const double *x, double *y);
+/* y0 = A x0 and y1 = A x1 in one pass over A (each entry read once for both; the
+ * same arithmetic as two ctn_sym_matvec). */
+void ctn_sym_matvec2(const ctn_pattern *p, const double *Ax, const double *x0, const double *x1, double *y0,
+                     double *y1);
 /* y += |A| |x| (entrywise absolute values; the rounding bound of A x). */
 void ctn_sym_matvec_abs(const ctn_pattern *p, const double *Ax, const double *x, double *y);
 /* y += |A| |x| + s |B| |x| (s >= 0), A and B on the same pattern: one pass over both. */

@@ -17,9 +17,22 @@ typedef double v4u __attribute__((vector_size(32), aligned(8), may_alias));   /*
 #define ST(p, v) (*(v4u *)(p) = (v))
 #define BC(x) ((v4){ (x), (x), (x), (x) })
 
+/* The block's first 64 KB asked for at once: most supernodes are a few KB, too short for
+ * the hardware's stream prefetchers, and 4 columns read side by side waited for each line
+ * in turn (the 4-column solve of the K = 400 net: 15-20 % faster). */
+#define CTN_PS4_PREFETCH 65536
+static inline void prefetch_block(const double *L11, int nr, int nc)
+{
+    const char *b = (const char *)L11;
+    size_t bytes = (size_t)nr * (size_t)nc * sizeof(double);
+    if (bytes > CTN_PS4_PREFETCH) bytes = CTN_PS4_PREFETCH;
+    for (size_t at = 0; at < bytes; at += 64) __builtin_prefetch(b + at);
+}
+
 void CTN_PS4(forward)(const double *L11, int nr, int nc, double *Z, double *E)
 {
     const size_t ld_ = (size_t)nr;
+    prefetch_block(L11, nr, nc);
     const int m = nr - nc;
     memset(E, 0, (size_t)(m > 0 ? m : 0) * 4 * sizeof(double));
     int u = 0;
@@ -74,6 +87,7 @@ static inline void dots(const double *p0, const double *p1, const double *p2, co
 void CTN_PS4(backward)(const double *L11, int nr, int nc, double *Z, const double *E)
 {
     const size_t ld_ = (size_t)nr;
+    prefetch_block(L11, nr, nc);
     int u = nc;
     while (u > 0) {
         const int k = u >= 4 ? 4 : u, u0 = u - k;          /* columns u0 .. u - 1 */

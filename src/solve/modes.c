@@ -129,6 +129,20 @@ void ctn_modal_mass(const ctn_modal *md, const double *x, double *y)
 
 static void op_mass(void *ud, const double *x, double *y) { ctn_modal_mass(ud, x, y); }
 
+static void op_mass2(void *ud, const double *x0, const double *x1, double *y0, double *y1)
+{
+    const ctn_modal *md = ud;
+    ctn_pattern pat = { md->p->ndof, md->mcol, md->mrow };
+    ctn_sym_matvec2(&pat, md->mval, x0, x1, y0, y1);
+}
+
+static void op_stiffness2(void *ud, const double *x0, const double *x1, double *y0, double *y1)
+{
+    const ctn_modal *md = ud;
+    ctn_pattern pat = { md->p->ndof, md->p->a->colptr, md->p->a->rowind };
+    ctn_sym_matvec2(&pat, md->p->Kx, x0, x1, y0, y1);
+}
+
 /* M's nonzeros apart from K's pattern: a cable's consistent mass couples a DOF only to
  * the same direction at the element's other node (lumped: none), so M holds 3 to 5 times
  * fewer entries than K, and the eigen-solver multiplies by it once a column. */
@@ -186,6 +200,7 @@ static int eigenpairs(ctn_modal *md, double *lambda, double **V)
     int n = (int)p->ndof, count = md->opt->count, nev = count < n || block ? count : n - 1;
     ctn_eigen_ops ops = { .ud = md, .solve = op_solve, .bmul = op_mass, .work = md->w0,
                           .solve_block = op_solve_block, .amul = op_stiffness, .absmul = op_abs,
+                          .bmul2 = op_mass2, .amul2 = op_stiffness2,
                           .threads = p->opt.threads == 1 ? 1 : 0 };
     ctn_eigen_info info;
     memset(&info, 0, sizeof info);
