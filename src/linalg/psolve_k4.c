@@ -10,6 +10,7 @@ void ctn_ps4_choose(ctn_ps4_kernels *k)
     k->forward = ctn_ps4_forward_base;
     k->backward = ctn_ps4_backward_base;
 #if CTN_PS4_AVX2
+    __builtin_cpu_init();                          /* idempotent; safe before any constructor ran */
     if (__builtin_cpu_supports("avx2")) {
         k->forward = ctn_ps4_forward_avx2;
         k->backward = ctn_ps4_backward_avx2;
