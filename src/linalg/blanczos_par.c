@@ -254,11 +254,9 @@ static void populate(const ctn_blz *z, double *x, size_t count)
     for (uintptr_t p = a; p < b; p += page) *(volatile char *)p = 0;
 }
 
-static int nx(const ctn_blz *z) { return z->nx; }
-
 /* Unit u: below mcap column u of V, then the columns of X (the Ritz vectors, first
- * written by the first restart or the final Rayleigh-Ritz), then those of W and B W from
- * b (the scratch of the Rayleigh-Ritz and the residuals). */
+ * written by the final Rayleigh-Ritz), then those of W and B W from b (the scratch of the
+ * Rayleigh-Ritz and the residuals). */
 static void populate_unit(const ctn_blz *z, int u)
 {
     const size_t n = (size_t)z->n;
@@ -267,11 +265,11 @@ static void populate_unit(const ctn_blz *z, int u)
         return;
     }
     u -= z->mcap;
-    if (u < nx(z)) {
+    if (u < z->nx) {
         populate(z, z->X + n * (size_t)u, n);
         return;
     }
-    u -= nx(z) - z->b;
+    u -= z->nx - z->b;
     populate(z, z->W + n * (size_t)u, n);
     populate(z, z->MW + n * (size_t)u, n);
 }
@@ -299,7 +297,7 @@ void ctn_blz_populate_start(ctn_blz *z)
     if (z->threads < 2) return;
     long page = sysconf(_SC_PAGESIZE);
     z->page = page > 0 ? page : 4096;
-    z->pf_units = z->mcap + nx(z) + z->ws - z->b;
+    z->pf_units = z->mcap + z->nx + z->ws - z->b;
     z->pf_next = 0;
     z->pf_busy = -1;
     z->pf_stop = 0;

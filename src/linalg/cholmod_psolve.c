@@ -330,16 +330,13 @@ static void backward(const job *j, long s)
             const double *y = Y + (size_t)rows[i] * (size_t)k;
             for (int c = 0; c < k; c++) e[c] = y[c];
         }
-        if (k == 4) {
-            j->p->k4.backward(L11, nr, nc, Z, j->E);                                  /* both, by hand */
-            return;
-        }
-        if (k == 1) dgemv_("T", &m, &nc, &minus, L11 + nc, &nr, j->E, &k, &one, Z, &k, 1);      /* Y1 -= L21' E */
-        else dgemm_("N", "N", &k, &nc, &m, &minus, j->E, &k, L11 + nc, &nr, &one, Z, &k, 1, 1);   /* Y1' -= E' L21 */
-    } else if (k == 4) {
-        j->p->k4.backward(L11, nr, nc, Z, j->E);
+    }
+    if (k == 4) {
+        j->p->k4.backward(L11, nr, nc, Z, j->E);                                      /* both, by hand */
         return;
     }
+    if (m > 0 && k == 1) dgemv_("T", &m, &nc, &minus, L11 + nc, &nr, j->E, &k, &one, Z, &k, 1);   /* Y1 -= L21' E */
+    else if (m > 0) dgemm_("N", "N", &k, &nc, &m, &minus, j->E, &k, L11 + nc, &nr, &one, Z, &k, 1, 1);   /* Y1' -= E' L21 */
     if (k == 1) dtrsv_("L", "T", "N", &nc, L11, &nr, Z, &k, 1, 1, 1);                   /* Y1 = L11' \ Y1 */
     else dtrsm_("R", "L", "N", "N", &k, &nc, &one, L11, &nr, Z, &k, 1, 1, 1, 1);   /* Y1' = Y1' L11^-1 */
 }
