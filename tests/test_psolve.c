@@ -285,9 +285,11 @@ static void alloc_failures(cholmod_sparse *A, cholmod_common *cm)
     cholmod_l_free_factor(&L, cm);
 }
 
-/* The linear solver's block solve takes the two-thread path from 50 000 rows (not under
- * threads=1): against single solves of the same factor, within rounding (two backward
- * stable solves differ by a few eps times the condition number). */
+/* The linear solver's solves, block and single, take the two-thread path from 50 000
+ * rows (not under threads=1): block against single solves of the same factor, and the
+ * single solves on two threads against CHOLMOD's (threads=1), within rounding (two
+ * backward stable solves differ by a few eps times the condition number); a single
+ * solve in place (x = b) gives the bits of one out of place. */
 static void backend(cholmod_common *cm)
 {
     cholmod_sparse *A = net(132, cm);                   /* 3 x 130^2 = 50 700 rows */
@@ -295,10 +297,11 @@ static void backend(cholmod_common *cm)
     size_t n = A->nrow, nnz = (size_t)((SuiteSparse_long *)A->p)[n];
     int *colptr = malloc((n + 1) * sizeof *colptr), *rowind = malloc(nnz * sizeof *rowind);
     double *B = malloc(4 * n * sizeof *B), *X = malloc(4 * n * sizeof *X), *S = malloc(4 * n * sizeof *S);
+    double *S2 = malloc(n * sizeof *S2), *T = malloc(n * sizeof *T);
     ctn_ctx *ctx = NULL;
     ctn_linsolve *ls = NULL;
     ctn_factor_info info = { 0, -1 };
-    CHECK(colptr && rowind && B && X && S && ctn_ctx_create(&ctx) == CTN_OK);
+    CHECK(colptr && rowind && B && X && S && S2 && T && ctn_ctx_create(&ctx) == CTN_OK);
     for (size_t j = 0; colptr && rowind && j <= n; j++) colptr[j] = (int)((SuiteSparse_long *)A->p)[j];
     for (size_t q = 0; colptr && rowind && q < nnz; q++) rowind[q] = (int)((SuiteSparse_long *)A->i)[q];
     for (size_t i = 0; B && i < 4 * n; i++) B[i] = cos(0.3 * (double)i);
@@ -306,7 +309,7 @@ static void backend(cholmod_common *cm)
     cholmod_factor *L = factor(A, 1, cm);
     double kappa = L ? condition(A, L, cm, 30) : INFINITY;
     cholmod_l_free_factor(&L, cm);
-    if (ctx && colptr && rowind && B && X && S) {
+    if (ctx && colptr && rowind && B && X && S && S2 && T) {
         CHECK(ctn_linsolve_create(ctx, "cholmod", &pat, CTN_ORDER_METIS, &ls) == CTN_OK);
         if (ls) CHECK(ctn_linsolve_factor(ls, A->x, 0, &info) == CTN_OK && info.ok);
         for (int threads = 0; ls && info.ok && threads < 2; threads++) {
@@ -321,6 +324,16 @@ static void backend(cholmod_common *cm)
                       threads, d, x, kappa);
             printf("backend  n %6zu, threads=%d: block solve against single solves %.2g (kappa %.2g)\n", n, threads,
                    d / x, kappa);
+            memcpy(T, B, n * sizeof *T);
+            CHECK(ctn_linsolve_solve(ls, T, T) == CTN_OK);
+            CHECK_MSG(!memcmp(T, S, n * sizeof *T), "threads=%d: a solve in place differs from one out of place", threads);
+            if (!threads) memcpy(S2, S, n * sizeof *S2);
+            else {
+                double e = 0;
+                for (size_t i = 0; i < n; i++) e = fmax(e, fabs(S2[i] - S[i]));
+                CHECK_MSG(e <= 64 * EPS * kappa * x, "single solves on two threads and CHOLMOD's differ by %.3g", e);
+                printf("backend  n %6zu: single solve on two threads against CHOLMOD's %.2g\n", n, e / x);
+            }
         }
     }
     ctn_linsolve_destroy(&ls);
@@ -330,6 +343,8 @@ static void backend(cholmod_common *cm)
     free(B);
     free(X);
     free(S);
+    free(S2);
+    free(T);
     cholmod_l_free_sparse(&A, cm);
 }
 

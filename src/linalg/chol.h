@@ -40,7 +40,7 @@ int ctn_chol_analyze(chol *c, ctn_ordering ord);
  * first factorization (cholmod_touch.c); nothing for small factors, one CPU or
  * c->helpers = 0. */
 void ctn_chol_touch(chol *c);
-/* Plan the block solves on two threads (cholmod_psolve.c) once, at the first block solve
+/* Plan the solves on two threads (cholmod_psolve.c) once, at the first solve
  * of a supernodal LL' factor of order CTN_PSOLVE_MIN or more on a machine of 2 CPUs or
  * more, unless c->helpers is 0 (threads=1): c->ps, or NULL (cholmod_l_solve2 then). */
 #define CTN_PSOLVE_MIN 50000
@@ -66,5 +66,11 @@ typedef struct ctn_chol_quot {
 int ctn_chol_quotient(chol *c, ctn_chol_quot *q);
 void ctn_chol_quotient_expand(const ctn_chol_quot *q, const SuiteSparse_long *sperm, SuiteSparse_long *perm);
 void ctn_chol_quotient_free(chol *c, ctn_chol_quot *q);
+/* The symbolic analysis (c->L; c->cm.fl and c->cm.lnz) for the ordering sperm of q->G,
+ * given the elimination tree sparent and column counts scount of G(sperm, sperm) (from
+ * cholmod_l_analyze_ordering), without permuting the full pattern (cholmod_symbolic.c):
+ * the factor cholmod_l_analyze_p gives for sperm postordered and expanded. */
+int ctn_chol_symbolic(chol *c, const ctn_chol_quot *q, const SuiteSparse_long *sperm,
+                      const SuiteSparse_long *sparent, const SuiteSparse_long *scount);
 
 #endif

@@ -7,8 +7,9 @@
  * kept, natural on ties within 10 % (it keeps memory access local). METIS's ordering is
  * not postordered here: the final analysis postorders the one kept. An ordering whose
  * analysis fails (METIS out of memory, say) is skipped; only when every one fails is it
- * an error, with CHOLMOD's status in words. The supernodal analysis is then done once,
- * for the ordering kept, with its permutation. */
+ * an error, with CHOLMOD's status in words. The symbolic analysis is then done once,
+ * for the ordering kept: from the node graph (cholmod_symbolic.c) when nodes were
+ * merged, else by cholmod_l_analyze_p. */
 #include "linalg/chol.h"
 
 #include <pthread.h>
@@ -59,7 +60,7 @@ typedef struct cand {
     cholmod_common own, *cm;
     SuiteSparse_long *a[ARRAYS];
     double fl, lnz;
-    int ok, status;
+    int ok, status, counted;
 } cand;
 
 static int cand_alloc(cand *k, chol *c, const ctn_chol_quot *q)
@@ -101,6 +102,17 @@ static void estimate(cand *k)
     k->lnz = lnz;
 }
 
+/* Count the factor of H in k's ordering (its elimination tree, column counts, flops). */
+static void cand_count(cand *k)
+{
+    SuiteSparse_long **a = k->a;
+    k->ok = cholmod_l_analyze_ordering(k->H, cholmod_method(k->o), a[PERM], NULL, 0, a[PARENT], a[POST], a[COUNT],
+                                       a[FIRST], a[LEVEL], k->cm) && k->cm->status == CHOLMOD_OK;
+    k->status = k->cm->status;
+    k->counted = k->ok;
+    if (k->ok) estimate(k);
+}
+
 /* Order H by o (natural: the identity) and, if analyse, count its factor. */
 static void cand_run(cand *k, ctn_ordering o, int analyse)
 {
@@ -108,16 +120,14 @@ static void cand_run(cand *k, ctn_ordering o, int analyse)
     size_t m = k->H->ncol;
     int ok = 1;
     k->o = o;
+    k->counted = 0;
     if (o == CTN_ORDER_NATURAL)
         for (size_t j = 0; j < m; j++) a[PERM][j] = (SuiteSparse_long)j;
     else if (o == CTN_ORDER_AMD) ok = cholmod_l_amd(k->H, NULL, 0, a[PERM], k->cm);
     else ok = cholmod_l_metis(k->H, NULL, 0, 0, a[PERM], k->cm);
-    if (ok && analyse)
-        ok = cholmod_l_analyze_ordering(k->H, cholmod_method(o), a[PERM], NULL, 0, a[PARENT], a[POST], a[COUNT],
-                                        a[FIRST], a[LEVEL], k->cm);
     k->status = k->cm->status;
     k->ok = ok && k->status == CHOLMOD_OK;
-    if (k->ok && analyse) estimate(k);
+    if (k->ok && analyse) cand_count(k);
 }
 
 /* A candidate on a second thread, with a CHOLMOD common of its own (the library is
@@ -198,33 +208,36 @@ int ctn_chol_analyze(chol *c, ctn_ordering ord)
     ctn_chol_quot q;
     memset(k, 0, sizeof k);
     memset(&q, 0, sizeof q);
-    size_t n = c->A->ncol;
-    SuiteSparse_long *perm = NULL;
     int rc = CTN_OK, status = CHOLMOD_OK;
     if (ord != CTN_ORDER_NATURAL) rc = ctn_chol_quotient(c, &q);
     for (int i = 0; !rc && i < 2; i++) rc = cand_alloc(&k[i], c, &q);
-    if (!rc && q.G && !(perm = ctn_malloc(c->ctx, n ? n : 1, sizeof *perm))) rc = CTN_ERR_NOMEM;
     int best = rc ? -1 : pick(c, ord, k, &status);
     if (!rc && best < 0) {
         c->cm.status = status;
         rc = ctn_chol_error(c, ord == CTN_ORDER_AUTO ? "analysis (every ordering)" : "analysis");
     }
     if (!rc) {
-        ctn_ordering kept = k[best].o;
-        if (q.G) ctn_chol_quotient_expand(&q, k[best].a[PERM], perm);
-        c->cm.nmethods = 1;
-        c->cm.method[0].ordering = kept == CTN_ORDER_NATURAL ? CHOLMOD_NATURAL : CHOLMOD_GIVEN;
-        c->cm.postorder = kept != CTN_ORDER_NATURAL;
-        c->lnz = k[best].lnz;              /* counted: what a failure below says it needs */
-        c->L = cholmod_l_analyze_p(c->A, kept == CTN_ORDER_NATURAL ? NULL : q.G ? perm : k[best].a[PERM], NULL, 0,
-                                   &c->cm);
-        if (!c->L) rc = ctn_chol_error(c, "analysis");
-        c->ordering = kept;
+        cand *b = &k[best];
+        c->ordering = b->o;
+        c->lnz = b->lnz;                   /* counted: what a failure below says it needs */
+        if (q.G && b->o != CTN_ORDER_NATURAL) {         /* from the node graph */
+            if (!b->counted) cand_count(b);           /* an ordering asked for */
+            if (b->ok) rc = ctn_chol_symbolic(c, &q, b->a[PERM], b->a[PARENT], b->a[COUNT]);
+            else {
+                c->cm.status = b->status;
+                rc = ctn_chol_error(c, "analysis");
+            }
+        } else {
+            c->cm.nmethods = 1;
+            c->cm.method[0].ordering = b->o == CTN_ORDER_NATURAL ? CHOLMOD_NATURAL : CHOLMOD_GIVEN;
+            c->cm.postorder = b->o != CTN_ORDER_NATURAL;
+            c->L = cholmod_l_analyze_p(c->A, b->o == CTN_ORDER_NATURAL ? NULL : b->a[PERM], NULL, 0, &c->cm);
+            if (!c->L) rc = ctn_chol_error(c, "analysis");
+        }
         c->fl = c->cm.fl;
         c->lnz = c->cm.lnz;
     }
     for (int i = 0; i < 2; i++) cand_free(&k[i]);
-    ctn_free(perm);
     ctn_chol_quotient_free(c, &q);
     return rc;
 }

@@ -23,7 +23,8 @@ typedef struct ctn_psolve ctn_psolve;
 int ctn_psolve_create(ctn_ctx *ctx, const cholmod_factor *L, ctn_psolve **out);
 void ctn_psolve_destroy(ctn_psolve **p);
 /* X = A \ B for the n x k block B (columns, leading dimension n) with L L' = P A P'
- * (CHOLMOD's factor of A, numerically valid): X and B may not alias. threads: 2 runs
+ * (CHOLMOD's factor of A, numerically valid): X may be B (all of B is read before X is
+written). threads: 2 runs
  * the subtree sets on two threads, 1 one after the other (the same arithmetic: the
  * results are identical). Workspace grows with k (CTN_ERR_NOMEM if it cannot). */
 int ctn_psolve_solve(ctn_psolve *p, const cholmod_factor *L, const double *B, double *X, size_t k, int threads);
