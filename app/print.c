@@ -141,8 +141,9 @@ void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s)
             ctn_reason_name(sum.reason), sum.iterations, sum.residual, sum.fext_norm, sum.ndof,
             ctn_ordering_name(sum.ordering));
     fprintf(out, "time: setup %.3f s, assembly %.3f s, factorization %.3f s (%d; CPU %.3f s, %d thread%s), "
-                 "solves %.3f s (%d)\n", sum.t_setup, sum.t_assemble, sum.t_factor, sum.factorizations,
-            sum.t_factor_cpu, sum.threads, sum.threads == 1 ? "" : "s", sum.t_solve, sum.solves);
+                 "solves %.3f s (%d%s)\n", sum.t_setup, sum.t_assemble, sum.t_factor, sum.factorizations,
+            sum.t_factor_cpu, sum.threads, sum.threads == 1 ? "" : "s", sum.t_solve, sum.solves,
+            sum.solve_threads > 1 ? "; 2 threads" : "");
     fprintf(out, "factor: %zu non-zeros, %.3g flops; BLAS %s\n", sum.nnz_factor, sum.flops_factor, sum.blas);
     if (sum.reason == CTN_DIVERGED_INDEFINITE)
         fprintf(out, "the tangent has a non-positive pivot at node %d, direction %c: a compressed "

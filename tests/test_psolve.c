@@ -15,6 +15,8 @@
 
 #include <catena.h>
 #include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
 
 #define EPS 2.220446049250313e-16
 
@@ -324,6 +326,9 @@ static void backend(cholmod_common *cm)
                       threads, d, x, kappa);
             printf("backend  n %6zu, threads=%d: block solve against single solves %.2g (kappa %.2g)\n", n, threads,
                    d / x, kappa);
+            int two = !threads && sysconf(_SC_NPROCESSORS_ONLN) >= 2;
+            CHECK_MSG(ctn_linsolve_solve_threads(ls) == (two ? 2 : 1), "threads=%d: solves on %d threads", threads,
+                      ctn_linsolve_solve_threads(ls));
             memcpy(T, B, n * sizeof *T);
             CHECK(ctn_linsolve_solve(ls, T, T) == CTN_OK);
             CHECK_MSG(!memcmp(T, S, n * sizeof *T), "threads=%d: a solve in place differs from one out of place", threads);

@@ -244,6 +244,7 @@ static void ref_summary(cJSON *root, const ctn_model *m, const ctn_solution *s, 
     ref_num(root, "factor_flops", sum.flops_factor, finite);
     cJSON_AddStringToObject(root, "blas", sum.blas);
     ref_num(root, "threads", sum.threads, finite);
+    ref_num(root, "solve_threads", sum.solve_threads, finite);
     cJSON *u = cJSON_AddObjectToObject(root, "units");
     cJSON_AddStringToObject(u, "force", ctn_model_force_unit(m));
     cJSON_AddStringToObject(u, "length", ctn_model_length_unit(m));

@@ -218,6 +218,9 @@ typedef struct ctn_solve_summary {
     int threads;          /* threads of the last numeric factorization */
     char blas[64];        /* the BLAS loaded, e.g. "OpenBLAS 0.3.21 (OpenMP)" */
     int reused;           /* iterations that reused the last factorization (cg steps) */
+    int solve_threads;    /* threads of the triangular solves: 2 for a supernodal factor
+                             of 50 000 DOFs or more on a machine of two CPUs or more
+                             (not under threads=1), else 1 */
 } ctn_solve_summary;
 
 /* Element state at the solution. */

@@ -67,6 +67,7 @@ static void put_summary(json_writer *jw, const ctn_solution *s)
     ctn_jw_number(j, "factor_flops", sum.flops_factor);
     ctn_jw_string(j, "blas", sum.blas);
     ctn_jw_number(j, "threads", sum.threads);
+    ctn_jw_number(j, "solve_threads", sum.solve_threads);
     ctn_jw_object(j, "units");
     ctn_jw_string(j, "force", ctn_model_force_unit(jw->w.m));
     ctn_jw_string(j, "length", ctn_model_length_unit(jw->w.m));

@@ -202,6 +202,12 @@ static ctn_ordering chol_ordering(const void *impl) { return ((const chol *)impl
 
 static void chol_helpers(void *impl, int allowed) { ((chol *)impl)->helpers = allowed; }
 
+static int chol_solve_threads(const void *impl)
+{
+    const chol *c = impl;
+    return c->ps && c->helpers ? 2 : 1;
+}
+
 static size_t chol_factor_nnz(const void *impl) { return (size_t)((const chol *)impl)->lnz; }
 
 static double chol_flops(const void *impl) { return ((const chol *)impl)->fl; }
@@ -211,6 +217,7 @@ const ctn_linsolve_ops ctn_cholmod_ll_ops = {
     .factor = chol_factor, .solve = chol_solve, .inertia = NULL, .ordering = chol_ordering,
     .factor_nnz = chol_factor_nnz, .flops = chol_flops, .solve_block = chol_solve_block,
     .helpers = chol_helpers, .feedable = chol_feedable, .factor_feed = chol_factor_feed,
+    .solve_threads = chol_solve_threads,
 };
 
 const ctn_linsolve_ops ctn_cholmod_ldl_ops = {
@@ -218,4 +225,5 @@ const ctn_linsolve_ops ctn_cholmod_ldl_ops = {
     .factor = chol_factor, .solve = chol_solve, .inertia = ldl_inertia, .ordering = chol_ordering,
     .factor_nnz = chol_factor_nnz, .flops = chol_flops, .solve_block = chol_solve_block,
     .helpers = chol_helpers, .feedable = chol_feedable, .factor_feed = chol_factor_feed,
+    .solve_threads = chol_solve_threads,
 };

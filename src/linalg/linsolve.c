@@ -139,6 +139,11 @@ void ctn_linsolve_set_threads(ctn_linsolve *s, int n)
 
 int ctn_linsolve_threads(const ctn_linsolve *s) { return s->used ? s->used : 1; }
 
+int ctn_linsolve_solve_threads(const ctn_linsolve *s)
+{
+    return s->ops->solve_threads ? s->ops->solve_threads(s->impl) : 1;
+}
+
 double ctn_linsolve_cpu(const ctn_linsolve *s) { return s->cpu; }
 
 size_t ctn_linsolve_order(const ctn_linsolve *s) { return s->n; }

@@ -56,6 +56,8 @@ typedef struct ctn_linsolve_ops {
      * is stopped. The same factor as factor. */
     int (*feedable)(const void *impl);
     int (*factor_feed)(void *impl, const double *Kx, double shift, ctn_feed *feed, ctn_factor_info *info);
+    /* Optional (NULL: one): the threads of the last solve. */
+    int (*solve_threads)(const void *impl);
 } ctn_linsolve_ops;
 
 typedef struct ctn_linsolve ctn_linsolve;
@@ -94,6 +96,8 @@ double ctn_linsolve_flops(const ctn_linsolve *s);
  * CPU seconds. */
 void ctn_linsolve_set_threads(ctn_linsolve *s, int n);
 int ctn_linsolve_threads(const ctn_linsolve *s);
+/* The threads of the last triangular solve (1 before any). */
+int ctn_linsolve_solve_threads(const ctn_linsolve *s);
 double ctn_linsolve_cpu(const ctn_linsolve *s);
 /* The order of the matrix. */
 size_t ctn_linsolve_order(const ctn_linsolve *s);

@@ -192,6 +192,7 @@ int ctn_problem_solve(ctn_problem *p, ctn_solution **out)
         s->sum.ndof = p->ndof;
         s->sum.nnz_factor = p->ls ? ctn_linsolve_factor_nnz(p->ls) : 0;
         s->sum.flops_factor = p->ls ? ctn_linsolve_flops(p->ls) : 0;
+        s->sum.solve_threads = p->ls ? ctn_linsolve_solve_threads(p->ls) : 1;
         ctn_blas_name(s->sum.blas, sizeof s->sum.blas);
     }
     ctn_free(d);
