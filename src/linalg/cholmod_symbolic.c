@@ -209,9 +209,7 @@ int ctn_chol_symbolic(chol *c, const ctn_chol_quot *q, const SuiteSparse_long *s
     if (!rc && !uniform(&o) && !(Ln = node_factor(&o, Sn, o.count, cm))) rc = ctn_chol_error(c, "analysis (the node factor)");
     if (!rc && !(L = cholmod_l_allocate_factor(n, cm))) rc = ctn_chol_error(c, "analysis");
     if (!rc) {
-        SuiteSparse_long *perm = L->Perm;
-        for (size_t k = 0, j = 0; k < o.m; k++)
-            for (SuiteSparse_long d = q->first[o.Q[k]]; d < q->first[o.Q[k] + 1]; d++) perm[j++] = d;
+        ctn_chol_quotient_expand(q, o.Q, L->Perm);
         L->ordering = CHOLMOD_GIVEN;
         counts(&o, Ln, L->ColCount, cm);
         tree(&o, parent);
