@@ -133,12 +133,11 @@ static int uniform(const order *o)
 
 /* The node factor's supernodal pattern with no relaxed amalgamation (supernodes merge
  * only where no zero is added): each column's pattern is its supernode's rows from it on. */
-static cholmod_factor *node_factor(const order *o, cholmod_sparse *Sn, const SuiteSparse_long *ncount,
-                                   cholmod_common *cm)
+static cholmod_factor *node_factor(const order *o, cholmod_sparse *Sn, cholmod_common *cm)
 {
     cholmod_factor *Ln = cholmod_l_allocate_factor(o->m, cm);
     if (!Ln) return NULL;
-    memcpy(Ln->ColCount, ncount, o->m * sizeof *ncount);
+    memcpy(Ln->ColCount, o->count, o->m * sizeof *o->count);
     double zrelax[3];
     size_t nrelax[3];
     memcpy(zrelax, cm->zrelax, sizeof zrelax);
@@ -206,7 +205,7 @@ int ctn_chol_symbolic(chol *c, const ctn_chol_quot *q, const SuiteSparse_long *s
     int rc = order_make(c, q, sperm, sparent, scount, &o);
     if (!rc && !(parent = ctn_malloc(c->ctx, n ? n : 1, sizeof *parent))) rc = CTN_ERR_NOMEM;
     if (!rc && !(Sn = node_pattern(q, &o, cm))) rc = ctn_chol_error(c, "analysis (permuting the node graph)");
-    if (!rc && !uniform(&o) && !(Ln = node_factor(&o, Sn, o.count, cm))) rc = ctn_chol_error(c, "analysis (the node factor)");
+    if (!rc && !uniform(&o) && !(Ln = node_factor(&o, Sn, cm))) rc = ctn_chol_error(c, "analysis (the node factor)");
     if (!rc && !(L = cholmod_l_allocate_factor(n, cm))) rc = ctn_chol_error(c, "analysis");
     if (!rc) {
         ctn_chol_quotient_expand(q, o.Q, L->Perm);
