@@ -51,6 +51,13 @@ static void monitor(void *data, const ctn_iterate *it)
 static int emit(ctn_ctx *ctx, const ctn_model_args *a, const ctn_model *m, const ctn_solution *s,
                 ctn_app_progress *progress)
 {
+    /* A result the writers would refuse is refused in every output mode alike: the
+     * same message, naming the model, and the same exit code (3: the solve failed). */
+    if (ctn_result_check(ctx, m, s)) {
+        ctn_app_progress_done(progress);
+        ctn_app_fail_model(ctx, CTN_ERR_INVALID, a->model);
+        return CTN_EXIT_NOCONV;
+    }
     ctn_app_progress_phase(progress, "writing");
     int rc = a->outdir ? ctn_write_results(ctx, a->outdir, m, s) : CTN_OK;
     ctn_app_progress_done(progress);

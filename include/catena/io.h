@@ -62,6 +62,13 @@ int ctn_write_json(ctn_ctx *ctx, FILE *out, const ctn_model *m, const ctn_soluti
 int ctn_write_results(ctn_ctx *ctx, const char *dir, const ctn_model *m,
                       const ctn_solution *s);
 
+/* CTN_OK when every number the writers would print (summary, histories, the model's
+ * coordinates and lengths, every step's displacements, reactions and element states,
+ * the modes) is finite; else CTN_ERR_INVALID, recorded as "the result holds a NaN or
+ * Inf; not written". The writers above make this check first; a program that prints
+ * its own summary makes it too, so that its verdict does not depend on the output. */
+int ctn_result_check(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s);
+
 /* Write len bytes atomically to path (temporary file + rename). */
 int ctn_write_file_atomic(ctn_ctx *ctx, const char *path, const char *data, size_t len);
 

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
+#include <sys/stat.h>
 
 int ctn_ctx_create(ctn_ctx **out)
 {
@@ -52,6 +53,22 @@ void ctn_ctx_set_progress(ctn_ctx *ctx, ctn_progress_fn fn, void *data)
     if (!ctx) return;
     ctx->progress = fn;
     ctx->progress_data = data;
+}
+
+void ctn_ctx_note_input(ctn_ctx *ctx, int fd)
+{
+    struct stat st;
+    if (!ctx || ctx->ninputs >= CTN_INPUTS_MAX || fstat(fd, &st)) return;
+    if (ctn_ctx_is_input(ctx, (unsigned long long)st.st_dev, (unsigned long long)st.st_ino)) return;
+    ctx->input_dev[ctx->ninputs] = (unsigned long long)st.st_dev;
+    ctx->input_ino[ctx->ninputs++] = (unsigned long long)st.st_ino;
+}
+
+int ctn_ctx_is_input(const ctn_ctx *ctx, unsigned long long dev, unsigned long long ino)
+{
+    for (int i = 0; ctx && i < ctx->ninputs; i++)
+        if (ctx->input_dev[i] == dev && ctx->input_ino[i] == ino) return 1;
+    return 0;
 }
 
 void ctn_progress(ctn_ctx *ctx, const char *what, double done, double total)

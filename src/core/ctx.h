@@ -7,6 +7,7 @@
 #include <stdarg.h>
 
 #define CTN_MSG_MAX 1024
+#define CTN_INPUTS_MAX 8
 
 struct ctn_ctx {
     int code;                /* last error code, CTN_OK if none */
@@ -16,7 +17,15 @@ struct ctn_ctx {
     long model_limit;        /* most nodes / elements in a model, 0 = no limit */
     ctn_progress_fn progress;/* ctn_ctx_set_progress: NULL = none */
     void *progress_data;
+    int ninputs;             /* the files read through this context, that no output */
+    unsigned long long input_dev[CTN_INPUTS_MAX], input_ino[CTN_INPUTS_MAX]; /* replaces */
 };
+
+/* Remember the file open as fd as an input of this context (the first CTN_INPUTS_MAX):
+ * the atomic writers refuse to replace it. */
+void ctn_ctx_note_input(ctn_ctx *ctx, int fd);
+/* 1 if (dev, ino) is a file noted as an input. */
+int ctn_ctx_is_input(const ctn_ctx *ctx, unsigned long long dev, unsigned long long ino);
 
 /* Report progress through the context's callback, if any. */
 void ctn_progress(ctn_ctx *ctx, const char *what, double done, double total);

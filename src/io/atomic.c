@@ -1,7 +1,9 @@
 /* Atomic file output: a temporary file beside the target, written through a sink,
  * synced, then renamed. */
+#define _DEFAULT_SOURCE                  /* realpath, lstat */
 #include "io/atomic.h"
 #include "catena/io.h"
+#include "core/ctx.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -17,27 +19,66 @@ static void release(ctn_atomic_file *f)
     *f = (ctn_atomic_file)CTN_ATOMIC_FILE_INIT;
 }
 
+/* The file a write to path must replace: path itself when nothing is there or a regular
+ * file is, the file a symbolic link leads to (written through, not replaced), never a
+ * device, a directory, a pipe or a socket, nor a file this context has read. *target is
+ * allocated (path's copy or the link's resolution). */
+static int resolve_target(ctn_ctx *ctx, const char *path, char **target)
+{
+    struct stat st;
+    char *real = NULL;
+    const char *t = path;
+    if (lstat(path, &st)) {
+        if (errno != ENOENT) return ctn_error(ctx, CTN_ERR_IO, "%s: cannot write: %s", path, strerror(errno));
+    } else {
+        if (S_ISLNK(st.st_mode)) {
+            real = realpath(path, NULL);
+            if (!real || stat(real, &st)) {
+                int rc = ctn_error(ctx, CTN_ERR_IO, "%s: a symbolic link to a missing file; not written", path);
+                free(real);
+                return rc;
+            }
+            t = real;
+        }
+        int rc = CTN_OK;
+        if (!S_ISREG(st.st_mode))
+            rc = ctn_error(ctx, CTN_ERR_IO, "%s: not a regular file (a device, directory, pipe or socket); "
+                           "catena replaces only regular files", path);
+        else if (ctn_ctx_is_input(ctx, (unsigned long long)st.st_dev, (unsigned long long)st.st_ino))
+            rc = ctn_error(ctx, CTN_ERR_IO, "%s: is the input being read; write the output elsewhere", path);
+        if (rc) {
+            free(real);
+            return rc;
+        }
+    }
+    size_t n = strlen(t) + 1;
+    *target = ctn_malloc(ctx, n, 1);
+    if (*target) memcpy(*target, t, n);
+    free(real);
+    return *target ? CTN_OK : CTN_ERR_NOMEM;
+}
+
 int ctn_atomic_open(ctn_ctx *ctx, const char *path, ctn_atomic_file *f)
 {
-    size_t pl = strlen(path);
     *f = (ctn_atomic_file)CTN_ATOMIC_FILE_INIT;
     f->ctx = ctx;
-    f->path = ctn_malloc(ctx, pl + 1, 1);
-    f->tmp = f->path ? ctn_malloc(ctx, pl + 16, 1) : NULL;
+    int rc = resolve_target(ctx, path, &f->path);
+    if (rc) return rc;
+    size_t pl = strlen(f->path);
+    f->tmp = ctn_malloc(ctx, pl + 16, 1);
     if (!f->tmp) {
         release(f);
         return CTN_ERR_NOMEM;
     }
-    memcpy(f->path, path, pl + 1);
-    snprintf(f->tmp, pl + 16, "%s.tmp.XXXXXX", path);
+    snprintf(f->tmp, pl + 16, "%s.tmp.XXXXXX", f->path);
     f->fd = mkstemp(f->tmp);
     if (f->fd < 0) {
-        int rc = ctn_error(ctx, CTN_ERR_IO, "%s: cannot create: %s", path, strerror(errno));
+        rc = ctn_error(ctx, CTN_ERR_IO, "%s: cannot create: %s", path, strerror(errno));
         release(f);
         return rc;
     }
     if (!fchmod(f->fd, 0644)) return CTN_OK;
-    int rc = ctn_error(ctx, CTN_ERR_IO, "%s: chmod failed: %s", path, strerror(errno));
+    rc = ctn_error(ctx, CTN_ERR_IO, "%s: chmod failed: %s", path, strerror(errno));
     ctn_atomic_abort(f);
     return rc;
 }

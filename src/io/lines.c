@@ -28,6 +28,7 @@ int ctn_read_all(ctn_ctx *ctx, const char *path, char **data, size_t *len)
 {
     FILE *f = fopen(path, "rb");
     if (!f) return ctn_error(ctx, CTN_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
+    ctn_ctx_note_input(ctx, fileno(f));
     size_t cap = 1 << 16, n = 0;
     char *buf = ctn_malloc(ctx, cap, 1);
     int rc = buf ? CTN_OK : CTN_ERR_NOMEM;

@@ -132,6 +132,7 @@ int ctn_read_file(ctn_ctx *ctx, const char *path, ctn_model **out, ctn_solve_opt
     *out = NULL;
     FILE *f = fopen(path, "rb");
     if (!f) return ctn_error(ctx, CTN_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
+    ctn_ctx_note_input(ctx, fileno(f));
     source src = { NULL, 0, f, path };
     int rc = read_model(ctx, path, &src, out, opt);
     fclose(f);

@@ -58,7 +58,5 @@ int ctn_writer_run(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, ctn_sink
 /* The same with the writer's step (ctn_writer.step) set to k < the step count. */
 int ctn_writer_run_step(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, size_t k, ctn_sink *sink,
                         const ctn_model *m, const ctn_solution *s);
-/* CTN_OK if every number the writers print is finite, else CTN_ERR_INVALID recorded. */
-int ctn_result_check(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s);
 
 #endif

@@ -40,12 +40,18 @@ static int run_step(ctn_problem *p, ctn_solution *s, size_t k, double *d, double
 }
 
 /* |f_ext| on the free DOFs at the end of the step being solved (f1). */
+static double step_load(const void *ud, size_t i)
+{
+    const ctn_problem *p = ud;
+    return p->a->map.eq[i] >= 0 ? p->f1[i] : 0;
+}
+
 static double step_load_norm(const ctn_problem *p)
 {
     double s = 0;
     for (size_t i = 0; i < p->ns; i++)
         if (p->a->map.eq[i] >= 0) s += p->f1[i] * p->f1[i];
-    return sqrt(s);
+    return ctn_norm_from_ss(s, p->ns, step_load, p);
 }
 
 /* The load-step strategies (auto, newton). */

@@ -232,6 +232,21 @@ int ctn_problem_residual(ctn_problem *p, const double *d, int with_K, double *rn
     return CTN_OK;
 }
 
+/* f_ext on a free DOF (with the follower loads), or 0. */
+static double free_load(const void *ud, size_t i)
+{
+    const ctn_problem *p = ud;
+    const double *fh = p->fl ? ctn_follow_loads(p->fl) : NULL;
+    return p->a->map.eq[i] < 0 ? 0 : fh ? p->fext[i] + fh[i] : p->fext[i];
+}
+
+/* f_int on a supported DOF, or 0. */
+static double support_force(const void *ud, size_t i)
+{
+    const ctn_problem *p = ud;
+    return p->a->map.eq[i] < 0 ? p->fint[i] : 0;
+}
+
 double ctn_problem_fref(const ctn_problem *p)
 {
     double ff = 0, fr = 0;
@@ -242,7 +257,8 @@ double ctn_problem_fref(const ctn_problem *p)
         if (eq[i] >= 0) ff += fe * fe;
         else fr += p->fint[i] * p->fint[i];
     }
-    return ff > 0 ? sqrt(ff) : fr > 0 ? sqrt(fr) : 1.0;
+    if (ff > 0) return ctn_norm_from_ss(ff, p->ns, free_load, p);
+    return fr > 0 ? ctn_norm_from_ss(fr, p->ns, support_force, p) : 1.0;
 }
 
 void ctn_problem_settle(ctn_problem *p)

@@ -174,7 +174,12 @@ int ctn_problem_stable_by_tension(ctn_problem *p, const ctn_solution *s, int *ok
 void ctn_problem_symv(const ctn_problem *p, const double *Ax, const double *x, double *y);
 
 /* Small vector helpers (vec.c). */
-double ctn_vec_norm(const double *v, size_t n);
+double ctn_vec_norm(const double *v, size_t n);      /* 2-norm, without overflow */
+/* One entry of a vector that is not stored as one (0 where it does not count). */
+typedef double (*ctn_entry_fn)(const void *ud, size_t i);
+/* sqrt(ss) for ss the plain sum of the entries' squares, recomputed scaled when that
+ * overflowed or underflowed. */
+double ctn_norm_from_ss(double ss, size_t n, ctn_entry_fn entry, const void *ud);
 double ctn_vec_dot(const double *a, const double *b, size_t n);
 /* Monotonic wall clock in seconds. */
 double ctn_clock(void);

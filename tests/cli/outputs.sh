@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# tests/cli/outputs.sh CATENA: what catena may and may not replace when it writes, and an
+# exit code that does not depend on the output mode.
+#   - `formfind -o` onto the model it reads, onto a device, through a dangling link: exit
+#     4, a message naming the path, the file (or device) untouched;
+#   - `formfind -o LINK`: written through the link (the link stays a link);
+#   - `solve -o DIR` where DIR/result.json is a link to the model: exit 4, model untouched,
+#     nothing staged left;
+#   - a load of 1e300: exit 3 with the summary, with --json and with -o alike.
+# Prints "N passed, N failed"; exit 1 on any failure.
+set -u
+
+. "$(dirname "$0")/lib/common.sh"
+cli_init outputs "${1:-}"
+
+cp examples/formfind/hypar_net.cable "$T/net.cable"
+sum0=$(cksum <"$T/net.cable")
+
+# expect_refusal CASE PATH SUBSTRING: the last run exited 4 and named PATH with SUBSTRING.
+expect_refusal() {
+    [ "$rc" -eq 4 ] || WHY+=("exit $rc, expected 4")
+    grep -qF "$2: $3" "$T/err" || WHY+=("stderr lacks '$2: $3': $(cat "$T/err")")
+    [ "$(cksum <"$T/net.cable")" = "$sum0" ] || WHY+=("the model file changed")
+    ls "$T" "$T/out" 2>/dev/null | grep -q '\.tmp\.' && WHY+=("a staging file was left")
+    finish "$1"
+}
+
+"$BIN" formfind "$T/net.cable" -o "$T/net.cable" >/dev/null 2>"$T/err"; rc=$?
+expect_refusal formfind_onto_its_model "$T/net.cable" "is the input being read"
+
+ln "$T/net.cable" "$T/hard.cable"
+"$BIN" formfind "$T/hard.cable" -o "$T/net.cable" >/dev/null 2>"$T/err"; rc=$?
+expect_refusal formfind_onto_a_hard_link_of_its_model "$T/net.cable" "is the input being read"
+
+if mknod "$T/dev" c 1 3 2>/dev/null; then
+    "$BIN" formfind "$T/net.cable" -o "$T/dev" >/dev/null 2>"$T/err"; rc=$?
+    [ -c "$T/dev" ] || WHY+=("the device was replaced")
+    expect_refusal formfind_onto_a_device "$T/dev" "not a regular file"
+fi
+mkfifo "$T/fifo"
+"$BIN" formfind "$T/net.cable" -o "$T/fifo" >/dev/null 2>"$T/err"; rc=$?
+[ -p "$T/fifo" ] || WHY+=("the pipe was replaced")
+expect_refusal formfind_onto_a_pipe "$T/fifo" "not a regular file"
+
+ln -s "$T/nowhere/x.cable" "$T/dangling.cable"
+"$BIN" formfind "$T/net.cable" -o "$T/dangling.cable" >/dev/null 2>"$T/err"; rc=$?
+expect_refusal formfind_through_a_dangling_link "$T/dangling.cable" "a symbolic link to a missing file"
+
+echo old >"$T/found.cable"
+ln -s found.cable "$T/link.cable"
+"$BIN" formfind "$T/net.cable" -o "$T/link.cable" >/dev/null 2>"$T/err"; rc=$?
+[ "$rc" -eq 0 ] || WHY+=("exit $rc: $(cat "$T/err")")
+[ -L "$T/link.cable" ] || WHY+=("the link was replaced by a file")
+grep -q '^# catena formfind' "$T/found.cable" || WHY+=("the link's target does not hold the found model")
+finish formfind_through_a_link
+
+mkdir "$T/out"
+ln -s ../net.cable "$T/out/result.json"
+"$BIN" solve "$T/net.cable" -q -o "$T/out" 2>"$T/err"; rc=$?
+[ -L "$T/out/result.json" ] || WHY+=("the link was replaced")
+[ -e "$T/out/nodes.csv" ] && WHY+=("part of the set was written")
+expect_refusal solve_results_onto_its_model "$T/out/result.json" "is the input being read"
+rm -rf "$T/out"
+
+# A load of 1e300: the same exit code and message whatever the output.
+awk 'NR > 2' tests/errors/load_overflow.cable >"$T/huge.cable"
+"$BIN" solve "$T/huge.cable" >/dev/null 2>"$T/e1"; r1=$?
+"$BIN" solve "$T/huge.cable" --json >"$T/j" 2>"$T/e2"; r2=$?
+"$BIN" solve "$T/huge.cable" -q -o "$T/o" 2>"$T/e3"; r3=$?
+[ "$r1$r2$r3" = 333 ] || WHY+=("exit codes summary $r1, --json $r2, -o $r3; expected 3 each")
+for e in e1 e2 e3; do
+    grep -qF "$T/huge.cable: not converged" "$T/$e" || WHY+=("$e does not name the model: $(cat "$T/$e")")
+done
+grep -q '"converged":[[:space:]]*false' "$T/j" || WHY+=("--json does not say converged false")
+grep -q '"external_force_norm":[[:space:]]*1e+300' "$T/j" || WHY+=("|f_ext| is not 1e300")
+finish huge_load_same_exit_code_every_output
+
+cli_summary
