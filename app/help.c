@@ -31,7 +31,8 @@ static const ctn_app_command commands[] = {
       "\n"
       "exit codes: 0 converged, 1 usage, 2 bad model (the message names file:line),\n"
       "            3 not converged (the last converged state is still written) or the\n"
-      "            eigen-solver did not converge, 4 I/O or other error\n" },
+      "            eigen-solver did not converge, 4 I/O or other error,\n"
+      "            130/143 interrupted by SIGINT/SIGTERM (no output replaced)\n" },
     { "compare", ctn_cmd_compare, "MODEL [--json] [-o DIR] [-q]", "MODEL [--json] [-o DIR] [-q]", "FEA of a single span against the closed forms",
       "Solve a single-span model (a `cable` directive or a chain of elements between two\n"
       "fully fixed nodes) with its own solver options and compare the FEA with the closed\n"

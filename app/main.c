@@ -14,6 +14,10 @@
 int ctn_app_fail(ctn_ctx *ctx, int status)
 {
     const char *msg = ctn_ctx_message(ctx);
+    if (status == CTN_ERR_INTERRUPTED) {
+        fprintf(stderr, "catena: interrupted; no output was replaced\n");
+        return ctn_app_interrupt_code();
+    }
     fprintf(stderr, "catena: %s\n", *msg ? msg : ctn_strerror(status));
     if (status == CTN_ERR_MODEL) return CTN_EXIT_MODEL;
     if (status == CTN_ERR_NOCONV) return CTN_EXIT_NOCONV;     /* the eigen-solver */
@@ -41,7 +45,7 @@ int ctn_app_fail_model(ctn_ctx *ctx, int status, const char *path)
 {
     const char *msg = ctn_ctx_message(ctx);
     size_t n = strlen(path);
-    if (!strncmp(msg, path, n) && msg[n] == ':') return ctn_app_fail(ctx, status);
+    if (status == CTN_ERR_INTERRUPTED || (!strncmp(msg, path, n) && msg[n] == ':')) return ctn_app_fail(ctx, status);
     fprintf(stderr, "catena: %s: %s\n", path, *msg ? msg : ctn_strerror(status));
     if (status == CTN_ERR_MODEL) return CTN_EXIT_MODEL;
     if (status == CTN_ERR_NOCONV) return CTN_EXIT_NOCONV;     /* the eigen-solver */
@@ -159,6 +163,7 @@ static void huge_heap(void)
 
 int main(int argc, char **argv)
 {
+    ctn_app_signals_install();
     keep_heap();
     huge_pages();
     huge_heap();

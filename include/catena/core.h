@@ -27,7 +27,8 @@ typedef enum ctn_status {
     CTN_ERR_IO = 4,      /* a file could not be read or written */
     CTN_ERR_LINALG = 5,  /* the sparse linear algebra backend failed */
     CTN_ERR_NOCONV = 6,  /* a root finder of the analytic module did not converge */
-    CTN_ERR_DOMAIN = 7   /* no solution exists for these inputs (e.g. cable shorter than chord) */
+    CTN_ERR_DOMAIN = 7,  /* no solution exists for these inputs (e.g. cable shorter than chord) */
+    CTN_ERR_INTERRUPTED = 8 /* the context's interrupt callback asked to stop */
 } ctn_status;
 
 /* Name of a status code, e.g. "out of memory". Never NULL. */
@@ -61,6 +62,17 @@ long ctn_ctx_model_limit(const ctn_ctx *ctx);
  * fn NULL (the default) stops the calls. The callback must not use this context. */
 typedef void (*ctn_progress_fn)(void *data, const char *what, double done, double total);
 void ctn_ctx_set_progress(ctn_ctx *ctx, ctn_progress_fn fn, void *data);
+
+/* Interruption, for a program that lets its user stop a long run (Ctrl-C): the library
+ * calls fn(data) at safe points (between Newton iterations, between chunks of a model
+ * file read and of result files written) and, when it returns non-zero, stops there
+ * with CTN_ERR_INTERRUPTED ("interrupted"): a result set being written is abandoned
+ * whole (its temporaries removed, older files untouched), never half replaced. fn must
+ * be cheap and thread-safe (it may be called from the library's second thread); it is
+ * typically a read of a flag that the program's signal handler sets. The library
+ * installs no signal handler of its own. fn NULL (the default) stops the calls. */
+typedef int (*ctn_interrupt_fn)(void *data);
+void ctn_ctx_set_interrupt(ctn_ctx *ctx, ctn_interrupt_fn fn, void *data);
 
 /* Testing hook: make the n-th allocation from now on (1-based) fail, 0 disables.
  * Lets tests check that every allocation failure gives CTN_ERR_NOMEM and no leak. */

@@ -71,6 +71,19 @@ int ctn_ctx_is_input(const ctn_ctx *ctx, unsigned long long dev, unsigned long l
     return 0;
 }
 
+void ctn_ctx_set_interrupt(ctn_ctx *ctx, ctn_interrupt_fn fn, void *data)
+{
+    if (!ctx) return;
+    ctx->interrupt = fn;
+    ctx->interrupt_data = data;
+}
+
+int ctn_interrupted(ctn_ctx *ctx)
+{
+    if (!ctx || !ctx->interrupt || !ctx->interrupt(ctx->interrupt_data)) return CTN_OK;
+    return ctn_error(ctx, CTN_ERR_INTERRUPTED, "interrupted");
+}
+
 void ctn_progress(ctn_ctx *ctx, const char *what, double done, double total)
 {
     if (ctx && ctx->progress) ctx->progress(ctx->progress_data, what, done, total);

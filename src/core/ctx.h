@@ -17,6 +17,8 @@ struct ctn_ctx {
     long model_limit;        /* most nodes / elements in a model, 0 = no limit */
     ctn_progress_fn progress;/* ctn_ctx_set_progress: NULL = none */
     void *progress_data;
+    ctn_interrupt_fn interrupt; /* ctn_ctx_set_interrupt: NULL = none */
+    void *interrupt_data;
     int ninputs;             /* the files read through this context, that no output */
     unsigned long long input_dev[CTN_INPUTS_MAX], input_ino[CTN_INPUTS_MAX]; /* replaces */
 };
@@ -29,6 +31,10 @@ int ctn_ctx_is_input(const ctn_ctx *ctx, unsigned long long dev, unsigned long l
 
 /* Report progress through the context's callback, if any. */
 void ctn_progress(ctn_ctx *ctx, const char *what, double done, double total);
+
+/* CTN_ERR_INTERRUPTED, recorded, when the context's interrupt callback asks to stop;
+ * else CTN_OK. Called at the library's safe points. */
+int ctn_interrupted(ctn_ctx *ctx);
 
 /* Record an error and return its code. printf-style message. */
 int ctn_error(ctn_ctx *ctx, int code, const char *fmt, ...)

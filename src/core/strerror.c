@@ -12,6 +12,7 @@ const char *ctn_strerror(int status)
     case CTN_ERR_LINALG: return "sparse linear algebra failure";
     case CTN_ERR_NOCONV: return "root finder did not converge";
     case CTN_ERR_DOMAIN: return "no solution exists for these inputs";
+    case CTN_ERR_INTERRUPTED: return "interrupted";
     default: return "unknown status";
     }
 }

@@ -64,6 +64,7 @@ static int feed_file(ctn_line *l, const source *src)
     for (int first = 1; !rc && !final; first = 0) {
         if ((rc = fill(ctx, src, buf, cap, &n, &total, &final))) break;
         ctn_progress(ctx, "reading", (double)total, size);
+        if ((rc = ctn_interrupted(ctx))) break;
         if (first) skip = bom(buf, n);
         buf[n] = '\0';
         size_t done = final ? n : ctn_parse_complete(buf, n);

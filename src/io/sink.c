@@ -15,7 +15,8 @@ int ctn_wbuf_open(ctn_wbuf *b, ctn_ctx *ctx, ctn_sink *sink)
 int ctn_wbuf_flush(ctn_wbuf *b)
 {
     if (!b->err && b->n) {
-        b->err = b->sink->write(b->sink->ud, b->p, b->n);
+        b->err = ctn_interrupted(b->ctx);
+        if (!b->err) b->err = b->sink->write(b->sink->ud, b->p, b->n);
         if (!b->err) b->total += b->n;
         if (!b->err) ctn_progress(b->ctx, "writing", (double)b->total, 0);
     }

@@ -12,7 +12,8 @@ int ctn_problem_record(ctn_problem *p, ctn_solution *s, double rnorm, double dno
 int ctn_problem_record_ex(ctn_problem *p, ctn_solution *s, double rnorm, double dnorm, int rejected,
                           double shift)
 {
-    int rc = ctn_solution_push_residual(s, rnorm);
+    int rc = ctn_interrupted(p->ctx);
+    if (!rc) rc = ctn_solution_push_residual(s, rnorm);
     if (!rc) rc = ctn_solution_push_increment(s, rejected ? 0.0 : dnorm);
     if (rc) return rc;
     s->sum.iterations++;

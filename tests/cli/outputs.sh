@@ -6,7 +6,10 @@
 #   - `formfind -o LINK`: written through the link (the link stays a link);
 #   - `solve -o DIR` where DIR/result.json is a link to the model: exit 4, model untouched,
 #     nothing staged left;
-#   - a load of 1e300: exit 3 with the summary, with --json and with -o alike.
+#   - a load of 1e300: exit 3 with the summary, with --json and with -o alike;
+#   - SIGINT or SIGTERM at several moments of a solve writing -o DIR over an older set:
+#     exit 130 / 143 with the older set whole, or 0 with the new set whole; never a
+#     temporary left, never a mix.
 # Prints "N passed, N failed"; exit 1 on any failure.
 set -u
 
@@ -74,5 +77,45 @@ done
 grep -q '"converged":[[:space:]]*false' "$T/j" || WHY+=("--json does not say converged false")
 grep -q '"external_force_norm":[[:space:]]*1e+300' "$T/j" || WHY+=("|f_ext| is not 1e300")
 finish huge_load_same_exit_code_every_output
+
+# Signals: a 50 000-element cable solved and written over the set of a lighter one.
+cable() {   # cable W: the cable with self-weight W
+    printf 'units kN m\nmaterial steel E=2.0e8\nsection strand material=steel A=3.14e-4 w=%s\n' "$1"
+    printf 'gravity 0 -1 0\nnode 1 0 0 0 fix=xyz\nnode 2 200 0 0 fix=xyz\n'
+    printf 'cable 1 2 section=strand n=50000 length=201.3545\n'
+}
+cable 0.1 >"$T/light.cable"
+cable 0.2 >"$T/heavy.cable"
+"$BIN" solve "$T/heavy.cable" -q -o "$T/new" 2>/dev/null || WHY+=("the heavy cable does not solve")
+"$BIN" solve "$T/light.cable" -q -o "$T/set" 2>/dev/null || WHY+=("the light cable does not solve")
+sums() { (cd "$1" && cksum result.json nodes.csv elements.csv result.vtu 2>&1 | awk '{ print $1, $2 }'); }
+old_sums=$(sums "$T/set")
+new_sums=$(sums "$T/new")
+[ "$old_sums" != "$new_sums" ] || WHY+=("the two sets are alike")
+finish signal_setup
+seen=""
+for sig in INT TERM; do
+    for delay in 0.05 0.15 0.3 0.6 1.0; do
+        "$BIN" solve "$T/heavy.cable" -q -o "$T/set" 2>"$T/err" &
+        pid=$!
+        sleep "$delay"
+        kill -s "$sig" "$pid" 2>/dev/null
+        wait "$pid"; rc=$?
+        want=130; [ "$sig" = TERM ] && want=143
+        now=$(sums "$T/set")
+        case $rc in
+        0) [ "$now" = "$new_sums" ] || WHY+=("SIG$sig at $delay s: exit 0 without the new set") ;;
+        "$want") [ "$now" = "$old_sums" ] || WHY+=("SIG$sig at $delay s: exit $rc, the older set changed")
+                 grep -q "interrupted" "$T/err" || WHY+=("SIG$sig at $delay s: no message: $(cat "$T/err")") ;;
+        *) WHY+=("SIG$sig at $delay s: exit $rc: $(cat "$T/err")") ;;
+        esac
+        seen="$seen $rc"
+        ls "$T/set" | grep -q '\.tmp\.' && WHY+=("SIG$sig at $delay s: a temporary was left")
+        [ "$rc" = 0 ] && "$BIN" solve "$T/light.cable" -q -o "$T/set" 2>/dev/null   # the older set again
+    done
+done
+case $seen in *130*) ;; *) WHY+=("no run was interrupted by SIGINT (exit codes:$seen)") ;; esac
+echo "signals: exit codes$seen"
+finish signals_leave_one_whole_set
 
 cli_summary
