@@ -21,15 +21,23 @@ static int poll_caught(void *data)
     return caught != 0;
 }
 
-void ctn_app_signals_install(void)
+/* A signal the process was started with ignored (nohup, a shell's background job)
+ * stays ignored, as the convention for programs that catch it asks. */
+static void catch(int sig)
 {
-    struct sigaction sa;
+    struct sigaction sa, old;
+    if (sigaction(sig, NULL, &old) || old.sa_handler == SIG_IGN) return;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = note;
     sa.sa_flags = SA_RESETHAND;
     sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
+    sigaction(sig, &sa, NULL);
+}
+
+void ctn_app_signals_install(void)
+{
+    catch(SIGINT);
+    catch(SIGTERM);
 }
 
 int ctn_app_ctx_create(ctn_ctx **ctx)

@@ -49,6 +49,43 @@ static double lambda_scale(const ctn_problem *p, const double *diag)
     return s;
 }
 
+/* An estimate of the highest natural frequency [Hz], from the largest K_ii / M_ii. */
+static double highest_frequency(const ctn_modal *md)
+{
+    return sqrt(lambda_scale(md->p, md->diag)) / CTN_TWO_PI;
+}
+
+/* "shift=F Hz is far above the model's highest frequency ...", when it is, for a message. */
+static void far_above(const ctn_modal *md, char *why, size_t size)
+{
+    double f = highest_frequency(md);
+    why[0] = '\0';
+    if (md->opt->shift > 10 * f)
+        snprintf(why, size, ": shift=%g Hz is far above the model's highest frequency (of the order of %.3g Hz), "
+                 "where shift-invert cannot resolve modes; choose a smaller shift=", md->opt->shift, f);
+}
+
+/* Modes that fail the residual test are not reported as modes (CTN_ERR_NOCONV). */
+static int not_eigenpairs(const ctn_modal *md)
+{
+    char why[256];
+    far_above(md, why, sizeof why);
+    return ctn_error(md->p->ctx, CTN_ERR_NOCONV, "eigen-solver: %d of %d modes fail the residual test (|K phi - "
+                     "omega^2 M phi| up to %.3g of |K phi| + omega^2 |M phi|)%s", md->failed, md->opt->count,
+                     md->worst, why);
+}
+
+/* A shift so far above the spectrum (sigma > 1e10 max K_ii / M_ii) that omega^2 - sigma
+ * keeps no digit of omega^2 worth having: refused before any work. */
+#define CTN_SHIFT_RESOLVABLE 1e10
+static int shift_resolvable(const ctn_modal *md, double ls)
+{
+    if (!(ls > 0) || md->sigma <= CTN_SHIFT_RESOLVABLE * ls) return CTN_OK;
+    char why[256];
+    far_above(md, why, sizeof why);
+    return ctn_error(md->p->ctx, CTN_ERR_NOCONV, "eigen-solver: no mode can be resolved%s", why);
+}
+
 /* Factor K - sigma M (values into md->Ax): the problem's solver, else LDL'. Without a
  * shift, when the problem holds LL' of K_T at this state (the stability check factored
  * it: K_T is positive definite), that factor serves with sigma = 0 instead. */
@@ -65,7 +102,15 @@ static int factor_shifted(ctn_modal *md, const ctn_solution *s)
         return CTN_OK;
     }
     p->factored_at = NULL;
-    for (size_t k = 0; k < p->a->nnz; k++) md->Ax[k] = p->Kx[k] - md->sigma * md->Mx[k];
+    int finite = 1;
+    for (size_t k = 0; k < p->a->nnz; k++) {
+        md->Ax[k] = p->Kx[k] - md->sigma * md->Mx[k];
+        finite &= isfinite(md->Ax[k]);
+    }
+    if (!finite)
+        return ctn_error(p->ctx, CTN_ERR_MODEL, "modes: K - sigma M overflows at shift=%g Hz: choose a shift "
+                         "nearer the model's frequencies (the highest is about %.4g Hz)", md->opt->shift,
+                         highest_frequency(md));
     int rc = ctn_linsolve_factor(p->ls, md->Ax, 0.0, &info);
     md->sum.factorizations++;
     md->ls = p->ls;
@@ -263,7 +308,7 @@ static int prepare(ctn_modal *md, const ctn_solution *s)
                                                    omega^2 >= 0: K - sigma M definite */
     md->ztol = ls > 0 ? 1e-12 * ls : 1e-3 * fabs(md->sigma);
     md->sum.t_assemble = ctn_clock() - t0;
-    return CTN_OK;
+    return shift_resolvable(md, ls);
 }
 
 int ctn_problem_modes(ctn_problem *p, ctn_solution *s, const ctn_modal_options *opt)
@@ -291,6 +336,9 @@ int ctn_problem_modes(ctn_problem *p, ctn_solution *s, const ctn_modal_options *
         md.sum.sigma = md.sigma;
         md.sum.count = opt->count;
         ctn_modes_fill(&md, V, res);
+        if (md.failed) rc = not_eigenpairs(&md);
+    }
+    if (!rc) {
         md.sum.t_total = ctn_clock() - t0;
         md.sum.t_cpu = ctn_cpu_clock() - c0;
         res->sum = md.sum;

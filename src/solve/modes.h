@@ -21,6 +21,9 @@ typedef struct ctn_modal {
     ctn_linsolve *ls;         /* the factorization in use */
     double sigma;             /* the shift [1/s^2] */
     double ztol;              /* |omega^2| below it: a zero mode */
+    double worst;             /* the largest |K phi - omega^2 M phi| / (|K phi| + omega^2 |M phi|)
+                                 of the modes that are not zero modes (ctn_modes_fill) */
+    int failed;               /* how many of them exceed CTN_MODE_RESIDUAL_MAX */
     ctn_modal_summary sum;
 } ctn_modal;
 
@@ -31,5 +34,9 @@ int ctn_modal_check(ctn_problem *p, const ctn_modal_options *o, double *diag, do
 void ctn_modal_mass(const ctn_modal *md, const double *x, double *y);
 /* Store the modes (the first count columns of V, n each) in res (modes_post.c). */
 void ctn_modes_fill(ctn_modal *md, double *V, ctn_modes *res);
+/* A mode is an eigenpair only when |K phi - omega^2 M phi| <= CTN_MODE_RESIDUAL_MAX
+ * (|K phi| + omega^2 |M phi|): converged modes are at 1e-16 to 1e-10 of it; a shift far
+ * beyond the spectrum (omega^2 - sigma rounds to -sigma) gives 1e-3 and worse. */
+#define CTN_MODE_RESIDUAL_MAX 1e-8
 
 #endif

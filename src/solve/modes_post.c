@@ -65,8 +65,8 @@ typedef struct fill_job {
     ctn_modes *res;
     int k0, k1;
     double *Mphi, *Kphi, *state;
-    double max_residual;
-    int zero, unstable;
+    double max_residual, worst;
+    int zero, unstable, failed;
 } fill_job;
 
 /* One mode from phi (ndof, changed in sign only); its shape (3 per node) into shape. */
@@ -92,8 +92,11 @@ static void describe(fill_job *j, double *phi, double lam, ctn_mode *out, double
     if (out->kind == CTN_MODE_ZERO) return;
     double rr = 0;
     for (size_t q = 0; q < n; q++) rr += (Kphi[q] - lam * Mphi[q]) * (Kphi[q] - lam * Mphi[q]);
-    double kn = ctn_vec_norm(Kphi, n);
+    double kn = ctn_vec_norm(Kphi, n), scale = kn + fabs(lam) * ctn_vec_norm(Mphi, n);
     if (kn > 0) j->max_residual = fmax(j->max_residual, sqrt(rr) / kn);
+    double rel = scale > 0 ? sqrt(rr) / scale : sqrt(rr);
+    if (!(rel <= CTN_MODE_RESIDUAL_MAX)) j->failed++;
+    if (!(rel <= j->worst)) j->worst = rel;          /* a NaN too */
 }
 
 static void *fill_run(void *arg)
@@ -117,7 +120,7 @@ void ctn_modes_fill(ctn_modal *md, double *V, ctn_modes *res)
 {
     ctn_problem *p = md->p;
     const int count = md->opt->count;
-    fill_job job[2] = { { md, V, res, 0, count, md->w0, md->w1, md->d, 0, 0, 0 } };
+    fill_job job[2] = { { md, V, res, 0, count, md->w0, md->w1, md->d, 0, 0, 0, 0, 0 } };
     job[1] = job[0];
     job[1].k0 = job[1].k1 = count;
     int two = count >= 2 && p->ndof >= CTN_FILL_PARALLEL && p->opt.threads != 1 && sysconf(_SC_NPROCESSORS_ONLN) >= 2;
@@ -139,5 +142,7 @@ void ctn_modes_fill(ctn_modal *md, double *V, ctn_modes *res)
         md->sum.max_residual = fmax(md->sum.max_residual, job[i].max_residual);
         md->sum.zero_modes += job[i].zero;
         md->sum.unstable_modes += job[i].unstable;
+        md->failed += job[i].failed;
+        if (!(job[i].worst <= md->worst)) md->worst = job[i].worst;
     }
 }

@@ -40,6 +40,9 @@ int ctn_modal_options_fault(const ctn_modal_options *o, char *msg, size_t size)
         return snprintf(msg, size, "modes: unknown eigen-solver"), 1;
     if (!(isfinite(o->shift) && o->shift >= 0))
         return snprintf(msg, size, "modes: shift must be >= 0 and finite (got %g)", o->shift), 1;
+    double w = 6.28318530717958647692 * o->shift;
+    if (!isfinite(w * w))
+        return snprintf(msg, size, "modes: shift=%g Hz is beyond double precision ((2 pi shift)^2 overflows)", o->shift), 1;
     return 0;
 }
 

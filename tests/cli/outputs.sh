@@ -96,7 +96,8 @@ finish signal_setup
 seen=""
 for sig in INT TERM; do
     for delay in 0.05 0.15 0.3 0.6 1.0; do
-        "$BIN" solve "$T/heavy.cable" -q -o "$T/set" 2>"$T/err" &
+        # (a background job starts with SIGINT ignored, which catena keeps: reset it)
+        env --default-signal=INT "$BIN" solve "$T/heavy.cable" -q -o "$T/set" 2>"$T/err" &
         pid=$!
         sleep "$delay"
         kill -s "$sig" "$pid" 2>/dev/null
@@ -106,7 +107,9 @@ for sig in INT TERM; do
         case $rc in
         0) [ "$now" = "$new_sums" ] || WHY+=("SIG$sig at $delay s: exit 0 without the new set") ;;
         "$want") [ "$now" = "$old_sums" ] || WHY+=("SIG$sig at $delay s: exit $rc, the older set changed")
-                 grep -q "interrupted" "$T/err" || WHY+=("SIG$sig at $delay s: no message: $(cat "$T/err")") ;;
+                 # (a signal before catena's handler is set kills it silently: not at 0.3 s on)
+                 case $delay in 0.0*|0.1*) ;; *) grep -q "interrupted" "$T/err" ||
+                     WHY+=("SIG$sig at $delay s: no message: $(cat "$T/err")") ;; esac ;;
         *) WHY+=("SIG$sig at $delay s: exit $rc: $(cat "$T/err")") ;;
         esac
         seen="$seen $rc"
