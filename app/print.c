@@ -178,7 +178,9 @@ void ctn_print_stability(FILE *out, const char *model, const ctn_solution *s)
                      "eigenvalue(s); the weakest mode moves%s\n", model, st.negative, where);
 }
 
-/* Largest |strain| of the members with a material, and its element index. */
+/* The strain of largest magnitude (signed) of the members with a material that carry it
+ * (a slack tension-only member's negative strain is the chord's slackness, not a
+ * strain of its material), and its element index. */
 static double max_strain(const ctn_model *m, const ctn_solution *s, size_t *at)
 {
     double best = 0;
@@ -186,9 +188,10 @@ static double max_strain(const ctn_model *m, const ctn_solution *s, size_t *at)
     for (size_t e = 0; e < ctn_model_element_count(m); e++) {
         ctn_element_info info;
         ctn_element_state st;
-        if (ctn_model_element(m, e, &info) || !info.has_section || ctn_solution_element(s, e, &st)) continue;
-        if (fabs(st.strain) > best) {
-            best = fabs(st.strain);
+        if (ctn_model_element(m, e, &info) || !info.has_section || ctn_solution_element(s, e, &st) || st.slack)
+            continue;
+        if (fabs(st.strain) > fabs(best)) {
+            best = st.strain;
             *at = e;
         }
     }
@@ -212,11 +215,12 @@ void ctn_print_warnings(FILE *out, const char *model, const ctn_model *m, const 
 {
     size_t at;
     double eps = max_strain(m, s, &at), big = max_extent(m, s);
-    if (eps > 0.1) {
+    if (fabs(eps) > 0.1) {
         ctn_element_info info;
         ctn_model_element(m, at, &info);
-        fprintf(out, "catena: %s: warning: element %d has a strain of %.3g (above 10 %%): far beyond an elastic "
-                     "cable; check E, the loads and the units\n", model, info.id, eps);
+        fprintf(out, "catena: %s: warning: element %d has a strain of %.3g (%s above 10 %%): far beyond an elastic "
+                     "cable; check E, the loads and the units\n", model, info.id, eps,
+                eps > 0 ? "an elongation" : "a shortening");
     }
     if (big > 1e7)
         fprintf(out, "catena: %s: warning: the deformed model reaches %.3g m from the origin (over 10,000 km); "

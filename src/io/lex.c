@@ -143,10 +143,44 @@ int ctn_parse_flag(ctn_line *l, int from, const char *flag)
     return 0;
 }
 
+/* The edit distance of a and b (n and m bytes), or 3 when it is more than 2. */
+static int near_edits(const char *a, size_t n, const char *b, size_t m)
+{
+    if (n > m + 2 || m > n + 2 || n > 30 || m > 30) return 3;
+    int d[32][32];
+    for (size_t i = 0; i <= n; i++) d[i][0] = (int)i;
+    for (size_t j = 0; j <= m; j++) d[0][j] = (int)j;
+    for (size_t i = 1; i <= n; i++)
+        for (size_t j = 1; j <= m; j++) {
+            int c = tolower((unsigned char)a[i - 1]) != tolower((unsigned char)b[j - 1]);
+            int v = d[i - 1][j - 1] + c;
+            if (d[i - 1][j] + 1 < v) v = d[i - 1][j] + 1;
+            if (d[i][j - 1] + 1 < v) v = d[i][j - 1] + 1;
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] && d[i - 2][j - 2] + 1 < v)
+                v = d[i - 2][j - 2] + 1;                               /* a transposition */
+            d[i][j] = v;
+        }
+    return d[n][m] < 3 ? d[n][m] : 3;
+}
+
+int ctn_parse_missing(const ctn_line *l, int from, const char *key, const char *more)
+{
+    size_t kl = strlen(key);
+    for (int i = from; i < l->ntok && i < 64; i++) {
+        const char *eq = strchr(l->tok[i], '=');
+        if ((l->used >> i & 1) || !eq || eq == l->tok[i]) continue;
+        size_t n = (size_t)(eq - l->tok[i]);
+        if (near_edits(l->tok[i], n, key, kl) < (kl == 1 ? 1 : kl == 2 ? 2 : 3))
+            return ctn_parse_error(l, "unknown key '%.*s' for directive '%s' (did you mean '%s='?)", (int)n,
+                                   l->tok[i], l->tok[0], key);
+    }
+    return ctn_parse_error(l, "%s: missing required key '%s='%s", l->tok[0], key, more ? more : "");
+}
+
 int ctn_parse_key_num(ctn_line *l, int from, const char *key, int required, double *out)
 {
     const char *v = ctn_parse_key(l, from, key);
-    if (!v) return required ? ctn_parse_error(l, "%s: missing required key '%s='", l->tok[0], key) : CTN_OK;
+    if (!v) return required ? ctn_parse_missing(l, from, key, NULL) : CTN_OK;
     char what[80];
     snprintf(what, sizeof what, "'%s'", key);
     return ctn_parse_num(l, what, v, out);

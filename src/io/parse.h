@@ -40,6 +40,12 @@ int ctn_parse_flag(ctn_line *l, int from, const char *flag);
 int ctn_parse_key_num(ctn_line *l, int from, const char *key, int required, double *out);
 /* After a handler took what it knows: any token left is an unknown key. */
 int ctn_parse_leftovers(const ctn_line *l, int from, const char *directive);
+/* The error for a required key that is missing: when an unused key of the line (from
+ * token `from`) is a misspelling of it (within two edits, or another case), the message
+ * names that unknown key and the one meant ("unknown key 'lenght' for directive 'cable'
+ * (did you mean 'length='?)"); else "DIRECTIVE: missing required key 'KEY='" and `more`
+ * (NULL, or a hint such as " (or a target H=, sag= or tension=)"). */
+int ctn_parse_missing(const ctn_line *l, int from, const char *key, const char *more);
 
 /* The reader's pieces (reader.c), shared with the form-finding writer, which walks the
  * same lines. Split one line (modified in place) into tokens; comments start with '#'. */

@@ -30,6 +30,10 @@ int ctn_model_set_gravity(ctn_model *m, const double g[3])
 {
     if (!m || !g) return CTN_ERR_INVALID;
     if (!finite3(g)) return ctn_model_error(m, CTN_ERR_MODEL, "gravity must be finite");
+    double g2 = g[0] * g[0] + g[1] * g[1] + g[2] * g[2], big = fmax(fmax(fabs(g[0]), fabs(g[1])), fabs(g[2]));
+    if (!isfinite(g2) || (big > 0 && !(g2 > 0x1p-1000)))      /* its length squared: every use */
+        return ctn_model_error(m, CTN_ERR_MODEL, "gravity (%g, %g, %g) is beyond double precision: its length "
+                               "squared %s; scale the units", g[0], g[1], g[2], isfinite(g2) ? "underflows" : "overflows");
     memcpy(m->gravity, g, sizeof m->gravity);
     m->gravity_line = m->line;
     return CTN_OK;

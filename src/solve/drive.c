@@ -106,9 +106,18 @@ static int check_start(ctn_problem *p, const double *d)
     start_check c = { p, (size_t)-1, 0 };
     size_t collapsed = 0;
     const ctn_model *m = p->m;
+    for (size_t i = 0; i < m->nodes.n; i++) {
+        const ctn_node *nd = &m->nodes.v[i];
+        for (int k = 0; k < 3; k++)
+            if (!isfinite(nd->X[k] + nd->guess[k]))
+                return ctn_error_at(p->ctx, CTN_ERR_MODEL, m->file, nd->line, "node %d: its start position is beyond "
+                                    "double precision (a start stretched by loads over a stiffness EA near 0: check "
+                                    "E, A, the loads and the units)", nd->id);
+    }
     if (ctn_asm_loop(p->a, d, 0, 0, start_visit, &c, &collapsed)) {
         const ctn_element *el = &m->elements.v[collapsed];
-        return ctn_error_at(p->ctx, CTN_ERR_MODEL, m->file, el->line, "element %d has zero length in the start state%s", el->id,
+        return ctn_error_at(p->ctx, CTN_ERR_MODEL, m->file, el->line, "element %d has a chord of zero length (or "
+                            "beyond double precision) in the start state%s", el->id,
                             ctn_element_family(el->type)->eval == ctn_catenary2_ops.eval ? " (or its catenary's forces overflow)" : "");
     }
     if (c.bad == (size_t)-1) return CTN_OK;
