@@ -92,7 +92,7 @@ static int make_record(ctn_model *m, const ctn_element_spec *s, int type, ctn_el
             return ctn_model_error(m, CTN_ERR_MODEL, "element %d: undefined section '%s'", s->id, s->section ? s->section : "");
     }
     e->l0 = s->l0 == CTN_L0_DEFAULT ? chord : s->l0;
-    e->k = s->k;
+    if (ops->params) ops->params(s, e->par);
     e->line = m->line;
     if ((rc = density(m, s, e))) return rc;
     if (s->prestress != CTN_PRESTRESS_NONE) {
@@ -136,6 +136,12 @@ int ctn_model_add_element_spec(ctn_model *m, const ctn_element_spec *spec)
     memcpy(m->conn.v + m->conn.n, idx, (size_t)e.nnodes * sizeof(int));
     m->conn.n += (size_t)e.nnodes;
     m->elements.v[m->elements.n++] = e;
+    for (int k = 0; k < e.nnodes; k++) {             /* a family of rotations: 6 DOFs */
+        ctn_node *p = &m->nodes.v[idx[k]];
+        if (p->ndof >= ctn_element_family(type)->ndof_node) continue;
+        p->ndof = ctn_element_family(type)->ndof_node;
+        m->rot_nodes++;
+    }
     if (s.target != CTN_TARGET_NONE) ctn_element_target_record(m, &s, m->elements.n - 1);
     if (s.id > m->max_element_id) m->max_element_id = s.id;
     return CTN_OK;

@@ -36,6 +36,7 @@ void ctn_model_destroy(ctn_model **m)
     ctn_free(p->elements.v);
     ctn_free(p->conn.v);
     ctn_free(p->ploads.v);
+    ctn_free(p->mloads.v);
     ctn_free(p->pdisps.v);
     ctn_free(p->steps.v);
     ctn_free(p->hloads.v);

@@ -7,6 +7,7 @@
 #include "model/idmap.h"
 
 #define CTN_NAME_MAX 64
+#define CTN_ELEM_NPAR 2  /* per-element parameters a family keeps in the model record */
 
 typedef struct ctn_node {
     int id;
@@ -15,6 +16,7 @@ typedef struct ctn_node {
     unsigned fix;
     int line;        /* defining line in the source, 0 if from the API */
     double mass;     /* lumped point mass [force s^2/length], 0 if none */
+    int ndof;        /* 3, or 6 once an element of a 6-DOF family reaches it */
 } ctn_node;
 
 typedef struct ctn_material {
@@ -23,6 +25,7 @@ typedef struct ctn_material {
     ctn_strain strain;
     int tension_only;
     double alpha;    /* coefficient of thermal expansion [1/K] */
+    double G;        /* shear modulus [force/length^2], 0 if not given */
 } ctn_material;
 
 typedef struct ctn_section {
@@ -33,6 +36,8 @@ typedef struct ctn_section {
     double mbl;      /* minimum breaking load [force], 0 if not given */
     double safety;   /* factor on mbl: capacity = mbl / safety */
     double mass;     /* per unit unstressed length; CTN_MASS_DEFAULT: w / g */
+    double Iy, Iz, J;   /* beams: second moments of area, torsion constant [length^4] */
+    double Asy, Asz;    /* beams: shear areas [length^2], 0 if not given */
 } ctn_section;
 
 typedef struct ctn_element {
@@ -42,7 +47,8 @@ typedef struct ctn_element {
     size_t conn;     /* its node indices are conn.v[conn .. conn + nnodes - 1] */
     int section;     /* section index, -1 for families without one */
     double l0;       /* unstressed (free) length */
-    double k;        /* spring stiffness [force/length], 0 for other families */
+    double par[CTN_ELEM_NPAR]; /* the family's own parameters, from the spec by its
+                                  params op (spring, rspring: par[0] = k), else 0 */
     int line;        /* defining line in the source, 0 if from the API */
     int group;       /* group index, -1 if none */
     double ff_q;     /* form finding: force density q = N / l [force/length], 0 if none */
@@ -75,14 +81,16 @@ typedef struct ctn_hload {
 
 typedef struct ctn_pload {
     int node;        /* node index */
-    double F[3];
+    double F[3];     /* a force, or (in mloads) a moment */
     int step;
+    int line;        /* defining line in the source, 0 if from the API */
 } ctn_pload;
 
 typedef struct ctn_pdisp {
     int node;        /* node index */
-    double u[3];     /* increments of prescribed displacement on fixed DOFs */
+    double u[3];     /* increments of prescribed displacement (or rotation) on fixed DOFs */
     int step;
+    int rot;         /* 1: rotations about x, y, z (u in rad) */
 } ctn_pdisp;
 
 typedef struct ctn_step {
@@ -121,6 +129,8 @@ struct ctn_model {
     CTN_ARRAY(ctn_element) elements;
     CTN_ARRAY(int) conn;            /* element connectivity (node indices) */
     CTN_ARRAY(ctn_pload) ploads;
+    CTN_ARRAY(ctn_pload) mloads;    /* nodal moments */
+    size_t rot_nodes;               /* nodes with 6 DOFs */
     CTN_ARRAY(ctn_pdisp) pdisps;
     CTN_ARRAY(ctn_hload) hloads;
     CTN_ARRAY(ctn_step) steps;      /* empty: one implicit step */
