@@ -8,9 +8,12 @@
  * - the writers add rotations and moments (JSON, CSV, VTU) only for such a model;
  * - model errors: fix=rz and a moment on a node without rotations (file:line), modal
  *   analysis refused;
+ * - a section's beam constants (Iy, Iz, J, Asy, Asz) and a material's G are read and
+ *   kept; a negative one and an unknown key are errors;
  * - every allocation of read + solve failed in turn: a clean error, no leak. */
 #include "catena.h"
 #include "check.h"
+#include "model/model.h"
 #include "run_text.h"
 
 
@@ -138,6 +141,27 @@ static void test_errors(void)
                  "modal analysis of a model with rotations");
 }
 
+static void test_section_keys(void)
+{
+    const char *text = "material m E=2e8 G=8e7\n"
+                       "section s material=m A=1e-2 Iy=2e-5 Iz=3e-5 J=4e-5 Asy=5e-3 Asz=6e-3\n";
+    ctn_ctx *ctx = NULL;
+    ctn_model *m = NULL;
+    ctn_solve_options opt;
+    ctn_ctx_create(&ctx);
+    CHECK(ctn_read_string(ctx, "s.cable", text, strlen(text), &m, &opt) == CTN_OK);
+    if (m) {
+        const ctn_section *sc = &m->sections.v[0];
+        CHECK(sc->Iy == 2e-5 && sc->Iz == 3e-5 && sc->J == 4e-5 && sc->Asy == 5e-3 && sc->Asz == 6e-3);
+        CHECK(m->materials.v[0].G == 8e7);
+    }
+    ctn_model_destroy(&m);
+    ctn_ctx_destroy(&ctx);
+    expect_error("material m E=2e8\nsection s material=m A=1 Iz=-1\n", "bad.cable:2: section 's': Iz must be >= 0 and finite (got -1)");
+    expect_error("material m E=2e8\nsection s material=m A=1 Ix=1\n", "bad.cable:2: unknown key 'Ix'");
+    expect_error("material m E=2e8 G=-1\n", "bad.cable:1: material 'm': G must be >= 0");
+}
+
 static void test_alloc_failures(void)
 {
     int nomem = 0, ok = 0;
@@ -168,6 +192,7 @@ int main(void)
     test_mixed();
     test_writers();
     test_errors();
+    test_section_keys();
     test_alloc_failures();
     CHECK_DONE();
 }

@@ -203,15 +203,33 @@ static int d_element(ctn_line *l)
     return rc ? rc : ctn_model_add_element_spec(l->m, &spec);
 }
 
+int ctn_parse_add_element(ctn_line *l, int rc, int from, const char *type, int id, int nnodes, const int *nodes,
+                          ctn_element_spec *spec)
+{
+    if (!rc) rc = ctn_parse_leftovers(l, from, type);
+    spec->type = type;
+    spec->id = id;
+    spec->nnodes = nnodes;
+    spec->nodes = nodes;
+    return rc ? rc : ctn_model_add_element_spec(l->m, spec);
+}
+
+/* The start of a spring's line (spring, rspring): ID NODE1 NODE2 k=STIFFNESS. */
+static int spring_head(ctn_line *l, const char *usage, int *id, int nodes[2], ctn_element_spec *spec)
+{
+    ctn_element_spec_init(spec);
+    int rc = ctn_parse_positional(l, 3, usage);
+    if (!rc) rc = ctn_parse_int(l, "the element id", l->tok[1], id);
+    for (int k = 0; k < 2 && !rc; k++) rc = ctn_parse_int(l, "a node id", l->tok[2 + k], &nodes[k]);
+    if (!rc) rc = ctn_parse_key_num(l, 4, "k", 1, &spec->k);
+    return rc;
+}
+
 static int d_spring(ctn_line *l)
 {
     int id = 0, nodes[2] = { 0, 0 };
     ctn_element_spec spec;
-    ctn_element_spec_init(&spec);
-    int rc = ctn_parse_positional(l, 3, "spring ID NODE1 NODE2 k=STIFFNESS [l0=LENGTH] [group=NAME]");
-    if (!rc) rc = ctn_parse_int(l, "the element id", l->tok[1], &id);
-    for (int k = 0; k < 2 && !rc; k++) rc = ctn_parse_int(l, "a node id", l->tok[2 + k], &nodes[k]);
-    if (!rc) rc = ctn_parse_key_num(l, 4, "k", 1, &spec.k);
+    int rc = spring_head(l, "spring ID NODE1 NODE2 k=STIFFNESS [l0=LENGTH] [group=NAME]", &id, nodes, &spec);
     char what[8 + CTN_FMT_MAX];
     memcpy(what, "spring ", 7);
     ctn_fmt_int(what + 7, id);
@@ -219,12 +237,7 @@ static int d_spring(ctn_line *l)
     if (!rc) rc = density_keys(l, 4, what, spec.l0 != CTN_L0_DEFAULT || spec.prestress, &spec.q, &spec.force);
     if (!rc && !(spec.k > 0)) return ctn_parse_error(l, "spring %d: k must be positive (found %g)", id, spec.k);
     spec.group = rc ? NULL : ctn_parse_key(l, 4, "group");
-    if (!rc) rc = ctn_parse_leftovers(l, 4, "spring");
-    spec.type = "spring";
-    spec.id = id;
-    spec.nnodes = 2;
-    spec.nodes = nodes;
-    return rc ? rc : ctn_model_add_element_spec(l->m, &spec);
+    return ctn_parse_add_element(l, rc, 4, "spring", id, 2, nodes, &spec);
 }
 
 /* rspring ID NODE1 NODE2 k=STIFFNESS [group=NAME]: a rotational spring (6 DOFs per node). */
@@ -232,19 +245,10 @@ static int d_rspring(ctn_line *l)
 {
     int id = 0, nodes[2] = { 0, 0 };
     ctn_element_spec spec;
-    ctn_element_spec_init(&spec);
-    int rc = ctn_parse_positional(l, 3, "rspring ID NODE1 NODE2 k=STIFFNESS [group=NAME]");
-    if (!rc) rc = ctn_parse_int(l, "the element id", l->tok[1], &id);
-    for (int k = 0; k < 2 && !rc; k++) rc = ctn_parse_int(l, "a node id", l->tok[2 + k], &nodes[k]);
-    if (!rc) rc = ctn_parse_key_num(l, 4, "k", 1, &spec.k);
+    int rc = spring_head(l, "rspring ID NODE1 NODE2 k=STIFFNESS [group=NAME]", &id, nodes, &spec);
     if (!rc && !(spec.k > 0)) return ctn_parse_error(l, "rspring %d: k must be positive (found %g)", id, spec.k);
     spec.group = rc ? NULL : ctn_parse_key(l, 4, "group");
-    if (!rc) rc = ctn_parse_leftovers(l, 4, "rspring");
-    spec.type = "rspring";
-    spec.id = id;
-    spec.nnodes = 2;
-    spec.nodes = nodes;
-    return rc ? rc : ctn_model_add_element_spec(l->m, &spec);
+    return ctn_parse_add_element(l, rc, 4, "rspring", id, 2, nodes, &spec);
 }
 
 static int cable_shape(ctn_line *l, ctn_cable_spec *spec)
