@@ -157,18 +157,21 @@ int ctn_model_add_section_spec(ctn_model *m, const ctn_section_spec *s);
  *            (H, sag, tension) that sets l0;
  *   "pulley" three or more nodes (ends, then pulleys in order; at most 64), section, the
  *            unstressed length l0 of the whole cable (default: the reference polyline):
- *            one tension along straight segments, tension-only. */
+ *            one tension along straight segments, tension-only;
+ *   "rspring" two nodes, rotational stiffness k > 0 [force length/rad]: the moment
+ *            k (theta2 - theta1) between the nodes' rotations (small rotations), no
+ *            section; it gives its nodes rotations (6 DOFs, ctn_model_node_dofs). */
 #define CTN_L0_DEFAULT (-1.0)
 typedef struct ctn_element_spec {
     size_t size;          /* sizeof(ctn_element_spec) (set by ctn_element_spec_init) */
     const char *type;     /* family name; NULL or "cable" (default), "spring", "catenary",
-                             "pulley" */
+                             "pulley", "rspring" */
     int id;               /* user id > 0, unique among elements */
     int nnodes;           /* number of entries of nodes (the family's node count) */
     const int *nodes;     /* user node ids (copied) */
     const char *section;  /* families with a section: its name */
     double l0;            /* unstressed / free length [length] (default CTN_L0_DEFAULT) */
-    double k;             /* spring: stiffness [force/length] */
+    double k;             /* spring: stiffness [force/length]; rspring: [force length/rad] */
     ctn_prestress prestress;  /* instead of l0 (then l0 must stay CTN_L0_DEFAULT) */
     double prestress_value;   /* its value N0, s0 or eps0 */
     const char *group;    /* the group it joins (created if new; NULL: none) */
@@ -296,7 +299,8 @@ typedef struct ctn_element_info {
     double w;        /* weight per unit unstressed length [force/length] */
     ctn_strain strain;
     int tension_only;
-    double k;        /* spring stiffness [force/length]; 0 for other families */
+    double k;        /* spring stiffness [force/length], rspring's [force length/rad];
+                        0 for other families */
     const char *group;   /* its group's name, NULL if none */
     double capacity; /* mbl / safety of its section [force], 0 if no mbl */
     double alpha;    /* thermal expansion of its material [1/K] */
