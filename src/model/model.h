@@ -51,9 +51,14 @@ typedef struct ctn_element {
                                   params op (spring, rspring: par[0] = k), else 0 */
     int line;        /* defining line in the source, 0 if from the API */
     int group;       /* group index, -1 if none */
-    double ff_q;     /* form finding: force density q = N / l [force/length], 0 if none */
-    double ff_force; /* form finding: target force [force], 0 if none */
 } ctn_element;
+
+/* Form finding: the force density or target force of a member (density.c). */
+typedef struct ctn_density {
+    size_t e;        /* element index */
+    double q;        /* force density q = N / l [force/length], 0 if none */
+    double force;    /* target force [force], 0 if none */
+} ctn_density;
 
 typedef struct ctn_group {
     char name[CTN_NAME_MAX];
@@ -139,6 +144,8 @@ struct ctn_model {
     CTN_ARRAY(ctn_tload) tloads;
     ctn_idmap node_ids, element_ids;
     int max_node_id, max_element_id;
+    CTN_ARRAY(ctn_density) densities; /* form finding: the members given q= or force=, by
+                                       increasing element index */
     CTN_ARRAY(ctn_cable) etargets;  /* catenary elements set by a target, each as the
                                        record of a one-element cable (first = the element
                                        index, count = 1), by increasing element index */
@@ -199,5 +206,9 @@ double ctn_model_element_temperature(const ctn_model *m, size_t k, size_t e);
  * weight but no mass= (mass.c). */
 double ctn_model_section_mass(const ctn_model *m, int i);
 int ctn_model_find_material(const ctn_model *m, const char *name);
+/* The form-finding record of element e, NULL if it has none (density.c). */
+const ctn_density *ctn_model_density_of(const ctn_model *m, size_t e);
+/* Set it (inserted in order; CTN_ERR_NOMEM unless there is room: reserve first). */
+int ctn_model_put_density(ctn_model *m, size_t e, double q, double force);
 
 #endif
