@@ -146,12 +146,12 @@ void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s)
             sum.solve_threads > 1 ? "; 2 threads" : "");
     fprintf(out, "factor: %zu non-zeros, %.3g flops; BLAS %s\n", sum.nnz_factor, sum.flops_factor, sum.blas);
     if (sum.reason == CTN_DIVERGED_INDEFINITE)
-        fprintf(out, "the tangent has a non-positive pivot at node %d, direction %c: a compressed "
-                     "or unrestrained degree of freedom\n", sum.fail_node, "xyz"[sum.fail_dir]);
+        fprintf(out, "the tangent has a non-positive pivot at node %d, direction %s: a compressed "
+                     "or unrestrained degree of freedom\n", sum.fail_node, ctn_dof_name(sum.fail_dir));
     if (sum.reason == CTN_DIVERGED_MECHANISM)
-        fprintf(out, "the loads move node %d without bound along %c: nothing restrains that motion, so the model "
+        fprintf(out, "the loads move node %d without bound along %s: nothing restrains that motion, so the model "
                      "has no equilibrium (check the supports' fix= and the members at that node)\n",
-                sum.fail_node, "xyz"[sum.fail_dir]);
+                sum.fail_node, ctn_dof_name(sum.fail_dir));
     print_notes(out, m, &sum);
     print_steps(out, m, s);
     size_t imax, imin;
@@ -169,7 +169,7 @@ void ctn_print_stability(FILE *out, const char *model, const ctn_solution *s)
     ctn_stability st;
     if (ctn_solution_stability(s, &st) || st.stable) return;
     char where[64] = "";
-    if (st.node) snprintf(where, sizeof where, " at node %d, direction %c", st.node, "xyz"[st.dir < 3 ? st.dir : 0]);
+    if (st.node) snprintf(where, sizeof where, " at node %d, direction %s", st.node, ctn_dof_name(st.dir));
     if (st.semidefinite)
         fprintf(out, "catena: %s: warning: the equilibrium is not stable: the tangent stiffness is singular "
                      "(semi-definite)%s: a node held only by slack members, or a mechanism\n", model, where);

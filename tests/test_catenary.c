@@ -11,6 +11,7 @@
 #include "check.h"
 #include "catena/analytic.h"
 #include "element/catenary.h"
+#include "element/pulley.h"
 
 #include <stdlib.h>
 

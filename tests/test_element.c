@@ -8,10 +8,15 @@
  * - self-equilibrium: the nodal forces sum to zero.
  * Families with any node count (pulley) are sampled with three nodes. The catenary's
  * weight breaks objectivity; these samples have none (tests/test_catenary.c has it).
+ * Families of 6 DOFs per node (rspring) are sampled with random rotations too; their
+ * objectivity is that of the translations (the rigid motion moves the nodes, the
+ * rotation DOFs stay: rspring is a small-rotation family), and their moments sum to
+ * zero with the forces.
  * Then the closed-form laws of each family: the cable's two strain measures and
  * tension-only slack, the spring's N = k (l - l0). */
 #include "check.h"
-#include "element/element.h"
+#include "element/cable2.h"
+#include "element/spring2.h"
 
 #include <stdlib.h>
 
@@ -43,7 +48,7 @@ static int make_sample(sample *s, int type, int variant, unsigned *seed)
     memset(s, 0, sizeof *s);
     s->ops = ops;
     s->nn = ops->nnodes ? ops->nnodes : 3;
-    CHECK(ops->props_size <= sizeof s->props && s->nn <= MAXN && ops->ndof_node == 3);
+    CHECK(ops->props_size <= sizeof s->props && s->nn <= MAXN && (ops->ndof_node == 3 || ops->ndof_node == 6));
     for (int k = 0; k < 3 * s->nn; k++) s->X[k] = urand(seed, -10, 10);
     int rc = ctn_ctx_create(&s->ctx) || ctn_model_create(s->ctx, &s->m);
     for (int a = 0; a < s->nn; a++) rc = rc || ctn_model_add_node(s->m, a + 1, s->X + 3 * a, 0);
@@ -86,11 +91,12 @@ static double tangent_error(const sample *s, const double *u)
 {
     int n = s->nn * s->ops->ndof_node;
     double f[MAXD], P[MAXD * (MAXD + 1) / 2], K[MAXD * MAXD], kmax = 0, emax = 0;
+    int ndn = s->ops->ndof_node;
     s->ops->eval(s->props, 0, s->X, u, f, P, NULL);
     unpack(n, P, K);
     for (int j = 0; j < n; j++) {
         double up[MAXD], um[MAXD], fp[MAXD], fm[MAXD];
-        double h = 1e-6 * (1.0 + fabs(s->X[j]));
+        double h = 1e-6 * (1.0 + (j % ndn < 3 ? fabs(s->X[3 * (j / ndn) + j % ndn]) : 0));
         for (int k = 0; k < n; k++) up[k] = um[k] = u[k];
         up[j] += h;
         um[j] -= h;
@@ -112,7 +118,7 @@ static void test_tangent_fd(int type)
         sample s;
         if (make_sample(&s, type, trial % 2, &seed)) return;   /* both strain measures */
         double u[MAXD];
-        for (int k = 0; k < 3 * s.nn; k++) u[k] = urand(&seed, -0.5, 0.5);
+        for (int k = 0; k < s.nn * s.ops->ndof_node; k++) u[k] = urand(&seed, -0.5, 0.5);
         double err = tangent_error(&s, u);
         CHECK_MSG(err < 1e-6, "%s trial %d: relative tangent error %.3g", s.ops->name, trial, err);
         free_sample(&s);
@@ -137,8 +143,8 @@ static void test_objectivity(int type)
         sample s;
         if (make_sample(&s, type, trial % 2, &seed)) return;
         double u[MAXD], f[MAXD], ur[MAXD], fr[MAXD], R[9], n[3], t[3];
-        int nd = 3 * s.nn;
-        for (int k = 0; k < nd; k++) u[k] = urand(&seed, -0.3, 0.3);
+        int ndn = s.ops->ndof_node, nd = ndn * s.nn;
+        for (int k = 0; k < nd; k++) u[k] = ur[k] = urand(&seed, -0.3, 0.3);
         for (int k = 0; k < 3; k++) { n[k] = urand(&seed, -1, 1); t[k] = urand(&seed, -100, 100); }
         double nn = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         for (int k = 0; k < 3; k++) n[k] /= nn;
@@ -148,21 +154,27 @@ static void test_objectivity(int type)
         for (int a = 0; a < s.nn; a++)         /* x' = R x + t, as a displacement from X */
             for (int i = 0; i < 3; i++) {
                 double xr = t[i];
-                for (int j = 0; j < 3; j++) xr += R[3 * i + j] * (s.X[3 * a + j] + u[3 * a + j]);
-                ur[3 * a + i] = xr - s.X[3 * a + i];
+                for (int j = 0; j < 3; j++) xr += R[3 * i + j] * (s.X[3 * a + j] + u[ndn * a + j]);
+                ur[ndn * a + i] = xr - s.X[3 * a + i];
             }
         s.ops->eval(s.props, 0, s.X, ur, fr, NULL, &s1);
         CHECK_CLOSE(s1.N, s0.N, 1e-9, 1e-9 * s.ops->stiffness(s.props));
         for (int a = 0; a < s.nn; a++)
             for (int i = 0; i < 3; i++) {
                 double rf = 0;
-                for (int j = 0; j < 3; j++) rf += R[3 * i + j] * f[3 * a + j];
-                CHECK_CLOSE(fr[3 * a + i], rf, 1e-8, 1e-9 * fabs(s0.N) + 1e-9 * s.ops->stiffness(s.props));
+                for (int j = 0; j < 3; j++) rf += R[3 * i + j] * f[ndn * a + j];
+                CHECK_CLOSE(fr[ndn * a + i], rf, 1e-8, 1e-9 * fabs(s0.N) + 1e-9 * s.ops->stiffness(s.props));
             }
-        for (int i = 0; i < 3; i++) {
+        for (int i = 0; i < ndn; i++) {                 /* forces, and moments about the origin */
             double sum = 0;
-            for (int a = 0; a < s.nn; a++) sum += f[3 * a + i];
-            CHECK(fabs(sum) <= 1e-12 * (fabs(s0.N) + 1));
+            for (int a = 0; a < s.nn; a++) {
+                sum += f[ndn * a + i];
+                if (i < 3) continue;
+                const double *x = s.X + 3 * a, *fa = f + ndn * a;
+                int p = (i + 1) % 3, q = (i + 2) % 3;       /* (x cross f)_i, x the current position */
+                sum += (x[p] + u[ndn * a + p]) * fa[q] - (x[q] + u[ndn * a + q]) * fa[p];
+            }
+            CHECK(fabs(sum) <= 1e-12 * (fabs(s0.N) + 1) * (i < 3 ? 1 : 100));
         }
         free_sample(&s);
     }
@@ -176,7 +188,7 @@ static void test_energy_gradient(int type)
         sample s;
         if (make_sample(&s, type, trial % 4, &seed)) return;
         double u[MAXD], f[MAXD];
-        int nd = 3 * s.nn;
+        int nd = s.ops->ndof_node * s.nn;
         ctn_elem_state st, sp, sm;
         for (int k = 0; k < nd; k++) u[k] = urand(&seed, -0.5, 0.5);
         s.ops->eval(s.props, 0, s.X, u, f, NULL, &st);

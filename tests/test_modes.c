@@ -15,6 +15,7 @@
  * - a node held only by slack members: three zero modes naming it;
  * - errors: count out of range, no mass, a weight without units (file:line); every
  *   allocation failure: CTN_ERR_NOMEM and no leak. */
+#include "element/cable2.h"
 #include "solve/modes.h"
 #include "catena.h"
 #include "check.h"

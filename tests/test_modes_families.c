@@ -12,7 +12,7 @@
  *   is m_mid for either matrix (the consistent one couples part of the mass to the
  *   supports, where it does not move). */
 #include "element/catenary.h"
-#include "element/element.h"
+#include "element/pulley.h"
 #include "catena.h"
 #include "check.h"
 #include "run_text.h"

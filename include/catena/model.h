@@ -21,6 +21,10 @@ typedef struct ctn_model ctn_model;
 
 /* Fixed-DOF flags of a node (bitwise or). */
 enum { CTN_FIX_X = 1, CTN_FIX_Y = 2, CTN_FIX_Z = 4, CTN_FIX_ALL = 7 };
+/* Fixed rotations (bitwise or with the above): only on a node that has rotations (a
+ * family of 6 DOFs per node reaches it, ctn_model_node_dofs); else the model is refused
+ * when it is solved (ctn_model_validate). CTN_FIX_ALL stays the three translations. */
+enum { CTN_FIX_RX = 8, CTN_FIX_RY = 16, CTN_FIX_RZ = 32, CTN_FIX_ROT = 56, CTN_FIX_ALL6 = 63 };
 
 /* Strain measure of a material (shared/THEORY.md). */
 typedef enum ctn_strain {
@@ -113,6 +117,8 @@ typedef struct ctn_material_spec {
     ctn_strain strain;    /* strain measure (default CTN_STRAIN_GREEN_LAGRANGE) */
     int tension_only;     /* 1: members carry no compression (default 0) */
     double alpha;         /* coefficient of thermal expansion [1/K] (default 0) */
+    double G;             /* shear modulus >= 0 [force/length^2], for beams (default 0: not
+                             given) */
 } ctn_material_spec;
 void ctn_material_spec_init(ctn_material_spec *s);
 int ctn_model_add_material_spec(ctn_model *m, const ctn_material_spec *s);
@@ -130,6 +136,11 @@ typedef struct ctn_section_spec {
                              consistent unit: t/m for kN and m, kg/m for N and m, t/mm for
                              N and mm] (default CTN_MASS_DEFAULT: w / g, g = 9.80665 m/s^2
                              in the model's length unit; see ctn_model_set_node_mass) */
+    /* Beam properties (for families with rotations; cables ignore them), each >= 0,
+     * default 0 (not given): */
+    double Iy, Iz;        /* second moments of area about the section's y and z axes [length^4] */
+    double J;             /* torsion constant [length^4] */
+    double Asy, Asz;      /* shear areas along y and z [length^2] (0: no shear deformation) */
 } ctn_section_spec;
 #define CTN_MASS_DEFAULT (-1.0)
 void ctn_section_spec_init(ctn_section_spec *s);
@@ -146,18 +157,21 @@ int ctn_model_add_section_spec(ctn_model *m, const ctn_section_spec *s);
  *            (H, sag, tension) that sets l0;
  *   "pulley" three or more nodes (ends, then pulleys in order; at most 64), section, the
  *            unstressed length l0 of the whole cable (default: the reference polyline):
- *            one tension along straight segments, tension-only. */
+ *            one tension along straight segments, tension-only;
+ *   "rspring" two nodes, rotational stiffness k > 0 [force length/rad]: the moment
+ *            k (theta2 - theta1) between the nodes' rotations (small rotations), no
+ *            section; it gives its nodes rotations (6 DOFs, ctn_model_node_dofs). */
 #define CTN_L0_DEFAULT (-1.0)
 typedef struct ctn_element_spec {
     size_t size;          /* sizeof(ctn_element_spec) (set by ctn_element_spec_init) */
     const char *type;     /* family name; NULL or "cable" (default), "spring", "catenary",
-                             "pulley" */
+                             "pulley", "rspring" */
     int id;               /* user id > 0, unique among elements */
     int nnodes;           /* number of entries of nodes (the family's node count) */
     const int *nodes;     /* user node ids (copied) */
     const char *section;  /* families with a section: its name */
     double l0;            /* unstressed / free length [length] (default CTN_L0_DEFAULT) */
-    double k;             /* spring: stiffness [force/length] */
+    double k;             /* spring: stiffness [force/length]; rspring: [force length/rad] */
     ctn_prestress prestress;  /* instead of l0 (then l0 must stay CTN_L0_DEFAULT) */
     double prestress_value;   /* its value N0, s0 or eps0 */
     const char *group;    /* the group it joins (created if new; NULL: none) */
@@ -209,6 +223,14 @@ int ctn_model_add_load(ctn_model *m, int node, const double F[3]);
 /* Prescribed displacement u of a node's fixed DOFs named in `dofs` (CTN_FIX_*; each
  * must be fixed). Like loads, increments add up over the steps. */
 int ctn_model_add_displacement(ctn_model *m, int node, unsigned dofs, const double u[3]);
+/* Concentrated moment M [force length] about x, y, z at a node (summed with earlier
+ * ones; belongs to the current step). The node must have rotations by the time the model
+ * is solved (else ctn_model_validate names the moment's line). */
+int ctn_model_add_moment(ctn_model *m, int node, const double M[3]);
+/* Prescribed rotation r [rad] about x, y, z of a node's fixed rotations named in `dofs`
+ * (CTN_FIX_RX, _RY, _RZ; each must be fixed). Increments add up over the steps, as
+ * displacements do. */
+int ctn_model_add_rotation(ctn_model *m, int node, unsigned dofs, const double r[3]);
 /* Start a new load step named `name`: the loads, horizontal loads and displacements
  * added after it are its increments; step k is solved from the state of step k-1, in
  * `substeps` equal increments (0: the solve options' `steps`). Without any step the
@@ -221,6 +243,9 @@ int ctn_model_step_substeps(const ctn_model *m, size_t k);
 /* Totals at the end of step k (0-based): external nodal forces f and prescribed
  * displacements u, 3 per node each (either may be NULL). Self-weight is in every step. */
 int ctn_model_step_loads(const ctn_model *m, size_t k, double *f, double *u);
+/* The same for the rotations: nodal moments M and prescribed rotations r at the end of
+ * step k, 3 per node each (either may be NULL; zero on nodes without rotations). */
+int ctn_model_step_moments(const ctn_model *m, size_t k, double *M, double *r);
 /* Uniform load q [force/length] per unit horizontal projection (the plane normal to
  * gravity) on elements with ids first..last, along gravity's direction; half of each
  * element's share goes to each of its nodes. The projection is the element's current
@@ -274,7 +299,8 @@ typedef struct ctn_element_info {
     double w;        /* weight per unit unstressed length [force/length] */
     ctn_strain strain;
     int tension_only;
-    double k;        /* spring stiffness [force/length]; 0 for other families */
+    double k;        /* spring stiffness [force/length], rspring's [force length/rad];
+                        0 for other families */
     const char *group;   /* its group's name, NULL if none */
     double capacity; /* mbl / safety of its section [force], 0 if no mbl */
     double alpha;    /* thermal expansion of its material [1/K] */
@@ -306,6 +332,11 @@ int ctn_model_cable(const ctn_model *m, size_t i, ctn_cable_info *out);
  * out->target is CTN_TARGET_NONE for an element without a target. CTN_ERR_INVALID if i
  * is out of range. Logarithmic in the number of such elements. */
 int ctn_model_element_target(const ctn_model *m, size_t i, ctn_cable_info *out);
+/* Degrees of freedom of node i: 3 (translations x, y, z), or 6 (and rotations about x,
+ * y, z) when a family of 6 DOFs per node reaches it; 0 if i is out of range. */
+int ctn_model_node_dofs(const ctn_model *m, size_t i);
+/* Whether some node has rotations (6 DOFs). */
+int ctn_model_has_rotations(const ctn_model *m);
 /* Node index of a user id; CTN_ERR_INVALID if there is none. */
 int ctn_model_node_index(const ctn_model *m, int id, size_t *index);
 /* Gravity vector (zero if none). */

@@ -160,6 +160,9 @@ typedef enum ctn_reason {
 
 /* Name of a reason, e.g. "converged", "tangent not positive definite". */
 const char *ctn_reason_name(ctn_reason r);
+/* Name of a DOF direction (fail_dir, ctn_stability.dir): "x", "y", "z", and "rx", "ry",
+ * "rz" for the rotations of a 6-DOF node; "?" for anything else. */
+const char *ctn_dof_name(int dir);
 
 typedef struct ctn_solution ctn_solution;
 
@@ -172,7 +175,8 @@ typedef struct ctn_solve_summary {
     double fext_norm;     /* |f_ext| over free DOFs [force] */
     int fail_node;        /* CTN_DIVERGED_INDEFINITE: user id of the node whose DOF had
                              a non-positive pivot, else 0 */
-    int fail_dir;         /* its direction 0 = x, 1 = y, 2 = z, -1 if none */
+    int fail_dir;         /* its direction 0 = x, 1 = y, 2 = z, 3..5 = rx, ry, rz (a node
+                             with rotations; ctn_dof_name), -1 if none */
     ctn_ordering ordering;/* the ordering used (never AUTO) */
     size_t step;          /* index of the last load step attempted (0-based) */
     double load_factor;   /* t reached in that step: 1 when it converged, else the last
@@ -266,7 +270,7 @@ typedef struct ctn_stability {
     long negative;        /* negative eigenvalues of the tangent (0 when semidefinite
                              stopped the count) */
     int node;             /* not stable: user id of the node whose DOF failed first */
-    int dir;              /* its direction 0 = x, 1 = y, 2 = z, -1 if none */
+    int dir;              /* its direction 0 = x, 1 = y, 2 = z, 3..5 = rx, ry, rz, -1 if none */
     int by_tension;       /* stable, shown without a factorization: every member in
                              tension or slack and every free DOF tied to a support by
                              members in tension (docs/theory.md); 0: by LL' */
@@ -397,6 +401,17 @@ const double *ctn_solution_increment_history(const ctn_solution *s, size_t *n);
 const double *ctn_solution_displacements(const ctn_solution *s);
 /* Support reactions, 3 per node: f_int - f_ext on fixed DOFs, 0 on free ones. */
 const double *ctn_solution_reactions(const ctn_solution *s);
+/* Rotations [rad] about x, y, z, 3 per node in model node order (0 on a node without
+ * rotations), and the support reaction moments (f_int - f_ext on fixed rotations, 0 on
+ * free ones), of the last step; NULL when no node of the model has rotations
+ * (ctn_model_has_rotations). Owned by the solution. */
+const double *ctn_solution_rotations(const ctn_solution *s);
+const double *ctn_solution_reaction_moments(const ctn_solution *s);
+/* Whether the solution holds rotations (its model has a node with 6 DOFs). */
+int ctn_solution_has_rotations(const ctn_solution *s);
+/* The same at the end of step k (either out-pointer may be NULL; both get NULL when the
+ * model has no rotations); CTN_ERR_INVALID if k is out of range. */
+int ctn_solution_step_rotations(const ctn_solution *s, size_t k, const double **rot, const double **moment);
 /* State of element i (model element order). */
 int ctn_solution_element(const ctn_solution *s, size_t i, ctn_element_state *out);
 

@@ -54,18 +54,12 @@ static int build_props(ctn_ctx *ctx, ctn_asm *a)
     return CTN_OK;
 }
 
-/* Each node gets the most DOFs any family reaching it uses (3 at least). */
+/* Each node gets the DOFs the model gave it: the most any family reaching it uses. */
 static int build_dofmap(ctn_ctx *ctx, ctn_asm *a)
 {
     unsigned char *nd = ctn_malloc(ctx, a->nn ? a->nn : 1, 1);
     if (!nd) return CTN_ERR_NOMEM;
-    memset(nd, 3, a->nn);
-    for (size_t k = 0; k < a->nblocks; k++) {
-        const ctn_asm_block *b = &a->blocks[k];
-        const int *conn = ctn_elem_nodes(a->m, b->e0);
-        for (size_t i = 0; i < b->count * (size_t)b->nnodes; i++)
-            if (nd[conn[i]] < b->ops->ndof_node) nd[conn[i]] = (unsigned char)b->ops->ndof_node;
-    }
+    for (size_t i = 0; i < a->nn; i++) nd[i] = (unsigned char)a->m->nodes.v[i].ndof;
     int rc = ctn_dofmap_build(ctx, a->m, nd, &a->map);
     ctn_free(nd);
     a->ndof = a->map.ndof;

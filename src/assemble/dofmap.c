@@ -35,8 +35,10 @@ int ctn_dofmap_build(ctn_ctx *ctx, const ctn_model *m, const unsigned char *ndof
     for (size_t i = 0; i < map->nn; i++) {
         size_t s = ctn_dofmap_node(map, i);
         for (int k = 0; k < ctn_dofmap_count(map, i); k++)
-            map->eq[s + (size_t)k] = k < 3 && ((m->nodes.v[i].fix >> k) & 1u) ? -1 : (int)n++;
+            map->eq[s + (size_t)k] = (m->nodes.v[i].fix >> k) & 1u ? -1 : (int)n++;
+        map->rot += ctn_dofmap_count(map, i) == 6;
     }
+    map->rot_update = ctn_rot_update_add;
     map->ndof = n;
     map->dof_node = ctn_malloc(ctx, n ? n : 1, sizeof(int));
     map->dof_dir = ctn_malloc(ctx, n ? n : 1, sizeof(int));
@@ -81,4 +83,53 @@ void ctn_dofmap_to3(const ctn_dofmap *map, const double *state, double *v3)
     }
     for (size_t i = 0; i < map->nn; i++)
         memcpy(v3 + 3 * i, state + ctn_dofmap_node(map, i), 3 * sizeof(double));
+}
+
+void ctn_dofmap_rot_from3(const ctn_dofmap *map, const double *v3, double *state)
+{
+    for (size_t i = 0; map->rot && i < map->nn; i++)
+        if (ctn_dofmap_count(map, i) == 6) memcpy(state + ctn_dofmap_node(map, i) + 3, v3 + 3 * i, 3 * sizeof(double));
+}
+
+void ctn_dofmap_rot_to3(const ctn_dofmap *map, const double *state, double *v3)
+{
+    memset(v3, 0, 3 * map->nn * sizeof(double));
+    for (size_t i = 0; map->rot && i < map->nn; i++)
+        if (ctn_dofmap_count(map, i) == 6) memcpy(v3 + 3 * i, state + ctn_dofmap_node(map, i) + 3, 3 * sizeof(double));
+}
+
+void ctn_rot_update_add(double *theta, const double *dtheta)
+{
+    for (int j = 0; j < 3; j++) theta[j] += dtheta[j];
+}
+
+/* The update of a model with rotations: node by node, each node's kind. */
+static void update_nodes(const ctn_dofmap *map, double *d, double alpha, const double *v)
+{
+    for (size_t i = 0; i < map->nn; i++) {
+        size_t s = ctn_dofmap_node(map, i);
+        for (int k = 0; k < 3; k++)
+            if (map->eq[s + (size_t)k] >= 0) d[s + (size_t)k] += alpha * v[map->eq[s + (size_t)k]];
+        if (ctn_dofmap_count(map, i) != 6) continue;
+        double dt[3];
+        for (int k = 0; k < 3; k++) {
+            int q = map->eq[s + 3 + (size_t)k];
+            dt[k] = q >= 0 ? alpha * v[q] : 0.0;
+        }
+        map->rot_update(d + s + 3, dt);
+    }
+}
+
+void ctn_dofmap_axpy(const ctn_dofmap *map, double *d, double alpha, const double *v)
+{
+    for (size_t i = 0; i < map->nstate; i++) {
+        int q = map->eq[i];
+        if (q >= 0) d[i] += alpha * v[q];
+    }
+}
+
+void ctn_dofmap_update(const ctn_dofmap *map, double *d, double alpha, const double *v)
+{
+    if (map->rot) update_nodes(map, d, alpha, v);
+    else ctn_dofmap_axpy(map, d, alpha, v);                    /* translations only */
 }

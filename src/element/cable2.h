@@ -12,6 +12,19 @@
 
 #include "element/axial.h"
 
+/* Properties of a two-node cable (truss) element (cable2.c). */
+typedef struct ctn_cable_props {
+    double EA;          /* axial rigidity [force] */
+    double l0;          /* unstressed length [length] */
+    double A;           /* area [length^2], for the stress */
+    int strain;         /* ctn_strain */
+    int tension_only;   /* 1: N = max(N, 0) */
+    double l0_ref;      /* unstressed length at the reference temperature */
+    double alpha;       /* thermal expansion [1/K] */
+    double mass;        /* m' l0: the element's mass [force s^2/length]; NAN when the
+                           model cannot tell it (no units, a weight and no mass=) */
+} ctn_cable_props;
+
 /* Axial force and its derivative with respect to the current length. */
 static inline void ctn_cable_law(const ctn_cable_props *p, unsigned mode, double l, ctn_elem_state *st,
                                  double *dNdl)

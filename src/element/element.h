@@ -59,6 +59,9 @@ typedef struct ctn_element_ops {
     /* Check a new element record (nodes, section, parameters) before it is added:
      * CTN_OK or a model error (ctn_model_error) naming what is wrong. */
     int (*check)(const ctn_model *m, const ctn_element *e);
+    /* Optional: the family's own parameters of the spec into par (CTN_ELEM_NPAR, zeroed),
+     * kept in the element's record for check, setup and prestress_l0 (k= of a spring). */
+    void (*params)(const ctn_element_spec *s, double *par);
     /* Properties of element e of the model into props (props_size bytes). */
     void (*setup)(const ctn_model *m, size_t e, void *props);
     ctn_elem_eval_fn eval;
@@ -113,34 +116,9 @@ extern const ctn_element_ops ctn_cable2_ops;
 extern const ctn_element_ops ctn_spring2_ops;
 extern const ctn_element_ops ctn_catenary2_ops;   /* catenary2.c, props in catenary.h */
 extern const ctn_element_ops ctn_pulley_ops;      /* pulley.c */
+extern const ctn_element_ops ctn_rspring_ops;     /* rspring.c: 6 DOFs per node */
 
-/* Properties of a two-node cable (truss) element (cable2.c). */
-typedef struct ctn_cable_props {
-    double EA;          /* axial rigidity [force] */
-    double l0;          /* unstressed length [length] */
-    double A;           /* area [length^2], for the stress */
-    int strain;         /* ctn_strain */
-    int tension_only;   /* 1: N = max(N, 0) */
-    double l0_ref;      /* unstressed length at the reference temperature */
-    double alpha;       /* thermal expansion [1/K] */
-    double mass;        /* m' l0: the element's mass [force s^2/length]; NAN when the
-                           model cannot tell it (no units, a weight and no mass=) */
-} ctn_cable_props;
-
-/* Properties of a two-node axial spring (spring2.c). */
-typedef struct ctn_spring_props {
-    double k;           /* stiffness [force/length] */
-    double l0;          /* free length [length] */
-} ctn_spring_props;
-
-/* Properties of a cable running over frictionless pulleys (pulley.c): the cable law of
- * the whole length over its nnodes - 1 straight segments, tension-only. */
-typedef struct ctn_pulley_props {
-    ctn_cable_props cable;  /* EA, l0 (the whole unstressed length), A, strain law */
-    int nnodes;             /* nodes: the two ends and the pulleys between them */
-    int pad;
-    double l0_ref;          /* l0 at the reference temperature */
-    double alpha;           /* thermal expansion coefficient [1/K] */
-} ctn_pulley_props;
+/* Each family's properties are its own: cable2.h (ctn_cable_props, which the pulley's
+ * embed), spring2.h, pulley.h, catenary.h, rspring.c. */
 
 #endif

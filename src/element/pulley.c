@@ -6,7 +6,7 @@
  *   K = dN/dS g g^T + sum_j N / l_j (I - e_j e_j^T) on nodes (j, j+1) as a bar's block.
  * A pulley node is loaded by the resultant N (e_{i-1} - e_i) of the tension on its two
  * sides; the pulley's radius is not modelled (the cable passes through the node). */
-#include "element/axial.h"
+#include "element/pulley.h"
 
 #include <math.h>
 #include <string.h>

@@ -21,7 +21,7 @@ static int check_members(const ctn_ff *f)
         if (el->nnodes != 2 || !ops->prestress_l0)
             return member_error(f, e, "form finding takes members of two nodes whose unstressed length "
                                 "follows from their force (cable, spring)");
-        if (!(el->ff_q > 0) && !(el->ff_force > 0))
+        if (!ctn_model_density_of(f->m, e))
             return member_error(f, e, "form finding needs a force density q= or a target force force= on every member");
     }
     return CTN_OK;
@@ -113,7 +113,8 @@ int ctn_ff_check_targets(ctn_ff *f)
     }
     for (size_t e = 0; e < f->ne; e++) {
         const int *nd = ctn_elem_nodes(m, e);
-        double F = m->elements.v[e].ff_force;
+        const ctn_density *dn = ctn_model_density_of(m, e);
+        double F = dn ? dn->force : 0;
         for (int s = 0; s < 2; s++) {
             size_t i = (size_t)nd[s];
             sum[i] = F > 0 && isfinite(sum[i]) ? sum[i] + F : INFINITY;   /* a q member: any force */

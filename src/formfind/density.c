@@ -10,29 +10,26 @@ int ctn_model_set_force_density(ctn_model *m, int first, int last, double q, dou
     if (!isfinite(q) || !isfinite(force) || q < 0 || force < 0 || (q > 0) == (force > 0))
         return ctn_model_error(m, CTN_ERR_MODEL, "form finding: give one positive q or force (got q = %g, force = %g)", q, force);
     size_t hit = 0;
-    for (size_t e = 0; e < m->elements.n; e++) {
-        ctn_element *el = &m->elements.v[e];
-        if (el->id < first || el->id > last) continue;
-        el->ff_q = q;
-        el->ff_force = force;
-        hit++;
-    }
-    return hit ? CTN_OK : ctn_model_error(m, CTN_ERR_MODEL, "form finding: no element with id in %d-%d", first, last);
+    for (size_t e = 0; e < m->elements.n; e++) hit += m->elements.v[e].id >= first && m->elements.v[e].id <= last;
+    if (!hit) return ctn_model_error(m, CTN_ERR_MODEL, "form finding: no element with id in %d-%d", first, last);
+    int rc = CTN_ARRAY_RESERVE(m->ctx, m->densities, hit);        /* then nothing fails */
+    for (size_t e = 0; e < m->elements.n && !rc; e++)
+        if (m->elements.v[e].id >= first && m->elements.v[e].id <= last) rc = ctn_model_put_density(m, e, q, force);
+    return rc;
 }
 
 int ctn_model_force_density(const ctn_model *m, size_t i, double *q, double *force)
 {
     if (!m || i >= m->elements.n) return CTN_ERR_INVALID;
-    if (q) *q = m->elements.v[i].ff_q;
-    if (force) *force = m->elements.v[i].ff_force;
+    const ctn_density *d = ctn_model_density_of(m, i);
+    if (q) *q = d ? d->q : 0;
+    if (force) *force = d ? d->force : 0;
     return CTN_OK;
 }
 
 size_t ctn_model_force_density_count(const ctn_model *m)
 {
-    size_t n = 0;
-    for (size_t e = 0; m && e < m->elements.n; e++) n += m->elements.v[e].ff_q > 0 || m->elements.v[e].ff_force > 0;
-    return n;
+    return m ? m->densities.n : 0;
 }
 
 void ctn_formfind_options_init(ctn_formfind_options *o)

@@ -90,11 +90,11 @@ static double mismatch(const ctn_ff *f, size_t *worst)
 {
     double r = 0;
     *worst = 0;
-    for (size_t e = 0; e < f->ne; e++) {
-        double F = f->m->elements.v[e].ff_force;
-        if (!(F > 0)) continue;
-        double d = fabs(f->q[e] * f->len[e] - F) / F;
-        if (d > r) r = d, *worst = e;
+    for (size_t k = 0; k < f->m->densities.n; k++) {
+        const ctn_density *dn = &f->m->densities.v[k];
+        if (!(dn->force > 0)) continue;
+        double d = fabs(f->q[dn->e] * f->len[dn->e] - dn->force) / dn->force;
+        if (d > r) r = d, *worst = dn->e;
     }
     return r;
 }
@@ -102,10 +102,10 @@ static double mismatch(const ctn_ff *f, size_t *worst)
 /* q <- force / l for the targeted members; the factorizations are then stale. */
 static void update_densities(ctn_ff *f)
 {
-    for (size_t e = 0; e < f->ne; e++) {
-        double F = f->m->elements.v[e].ff_force;
-        if (F > 0) {
-            f->q[e] = F / f->len[e];
+    for (size_t k = 0; k < f->m->densities.n; k++) {
+        const ctn_density *dn = &f->m->densities.v[k];
+        if (dn->force > 0) {
+            f->q[dn->e] = dn->force / f->len[dn->e];
             f->factored = 0;
         }
     }
@@ -188,10 +188,10 @@ static int setup(ctn_ff *f, ctn_formfind_report *rep)
     if (rc) return rc;
     keep_model(f, 1);
     if ((rc = ctn_ff_check_model(f))) return rc;
-    for (size_t e = 0; e < f->ne; e++) {
-        const ctn_element *el = &f->m->elements.v[e];
-        f->q[e] = el->ff_q > 0 ? el->ff_q : el->ff_force / ctn_ff_length(f->m, e);
-        rep->targets += el->ff_force > 0;
+    for (size_t k = 0; k < f->m->densities.n; k++) {       /* every member has one (checked) */
+        const ctn_density *dn = &f->m->densities.v[k];
+        f->q[dn->e] = dn->q > 0 ? dn->q : dn->force / ctn_ff_length(f->m, dn->e);
+        rep->targets += dn->force > 0;
     }
     f->targets = rep->targets;
     ctn_model_step_loads(f->m, 0, f->p, NULL);

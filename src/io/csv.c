@@ -16,24 +16,38 @@ static void field(ctn_wbuf *b, double v)
     ctn_wbuf_putc(b, ',');
 }
 
+/* In a model with rotations, the rows go on with the rotations and reaction moments. */
 static int nodes_begin(void *p, const ctn_model *m, ctn_sink *sink)
 {
-    return csv_begin(p, m, sink, "id,x,y,z,ux,uy,uz,fix,rx,ry,rz\n");
+    return csv_begin(p, m, sink, ctn_model_has_rotations(m) ? "id,x,y,z,ux,uy,uz,fix,rx,ry,rz,thx,thy,thz,mx,my,mz\n"
+                                                           : "id,x,y,z,ux,uy,uz,fix,rx,ry,rz\n");
 }
 
-/* id,x,y,z,ux,uy,uz,fix,rx,ry,rz; fix spelled with the letters of the fixed DOFs. */
-static void node_row(ctn_wbuf *b, const ctn_node_info *p, const double *d, const double *r)
+/* ',' then each of the three values, comma-separated. */
+static void fields3(ctn_wbuf *b, const double *v)
 {
+    for (int k = 0; k < 3; k++) {
+        ctn_wbuf_putc(b, ',');
+        ctn_wbuf_g17(b, v[k]);
+    }
+}
+
+/* id,x,y,z,ux,uy,uz,fix,rx,ry,rz[,thx,thy,thz,mx,my,mz]; fix spelled with the letters of
+ * the fixed DOFs (rx, ry, rz for the rotations); rx, ry, rz the reaction forces, thx,
+ * thy, thz the rotations and mx, my, mz the reaction moments (th, m NULL: none). */
+static void node_row(ctn_wbuf *b, const ctn_node_info *p, const double *d, const double *r, const double *th,
+                     const double *m)
+{
+    static const char *const fix[6] = { "x", "y", "z", "rx", "ry", "rz" };
     ctn_wbuf_int(b, p->id);
     ctn_wbuf_putc(b, ',');
     for (int k = 0; k < 3; k++) field(b, p->X[k]);
     for (int k = 0; k < 3; k++) field(b, d[k]);
-    for (int k = 0; k < 3; k++)
-        if (p->fix & (1u << k)) ctn_wbuf_putc(b, "xyz"[k]);
-    for (int k = 0; k < 3; k++) {
-        ctn_wbuf_putc(b, ',');
-        ctn_wbuf_g17(b, r[k]);
-    }
+    for (int k = 0; k < 6; k++)
+        if (p->fix & (1u << k)) ctn_wbuf_puts(b, fix[k]);
+    fields3(b, r);
+    if (th) fields3(b, th);
+    if (m) fields3(b, m);
     ctn_wbuf_putc(b, '\n');
 }
 
@@ -41,12 +55,14 @@ static int nodes_step(void *p, const ctn_solution *s, size_t k)
 {
     ctn_writer *w = p;
     ctn_step_result st;
+    const double *th = NULL, *m = NULL;
     if (k + 1 < ctn_solution_step_count(s)) return CTN_OK;
-    if (ctn_solution_step(s, k, &st)) return ctn_writer_mismatch(w);
+    if (ctn_solution_step(s, k, &st) || ctn_solution_step_rotations(s, k, &th, &m)) return ctn_writer_mismatch(w);
+    if (!th != !ctn_model_has_rotations(w->m)) return ctn_writer_mismatch(w);
     for (size_t i = 0; i < ctn_model_node_count(w->m) && !w->out.err; i++) {
         ctn_node_info n;
         if (ctn_model_node(w->m, i, &n)) return ctn_writer_mismatch(w);
-        node_row(&w->out, &n, st.d + 3 * i, st.react + 3 * i);
+        node_row(&w->out, &n, st.d + 3 * i, st.react + 3 * i, th ? th + 3 * i : NULL, m ? m + 3 * i : NULL);
     }
     return w->out.err;
 }

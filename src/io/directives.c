@@ -58,8 +58,9 @@ static int d_material(ctn_line *l)
     ctn_material_spec spec;
     ctn_material_spec_init(&spec);
     ctn_strain strain = CTN_STRAIN_GREEN_LAGRANGE;
-    int rc = ctn_parse_positional(l, 1, "material NAME E=VALUE [strain=green-lagrange|engineering] [tension-only] [alpha=PER_KELVIN]");
+    int rc = ctn_parse_positional(l, 1, "material NAME E=VALUE [strain=green-lagrange|engineering] [tension-only] [alpha=PER_KELVIN] [G=VALUE]");
     if (!rc) rc = ctn_parse_key_num(l, 2, "E", 1, &spec.E);
+    if (!rc) rc = ctn_parse_key_num(l, 2, "G", 0, &spec.G);
     if (!rc) rc = ctn_parse_key_num(l, 2, "alpha", 0, &spec.alpha);
     const char *s = rc ? NULL : ctn_parse_key(l, 2, "strain");
     if (s && !strcmp(s, "engineering")) strain = CTN_STRAIN_ENGINEERING;
@@ -77,7 +78,7 @@ static int d_section(ctn_line *l)
 {
     ctn_section_spec spec;
     ctn_section_spec_init(&spec);
-    int rc = ctn_parse_positional(l, 1, "section NAME material=MATERIAL A=AREA [w=WEIGHT] [mass=MASS] [mbl=FORCE] [safety=FACTOR]");
+    int rc = ctn_parse_positional(l, 1, "section NAME material=MATERIAL A=AREA [w=WEIGHT] [mass=MASS] [mbl=FORCE] [safety=FACTOR] [Iy=] [Iz=] [J=] [Asy=] [Asz=]");
     const char *mat = rc ? NULL : ctn_parse_key(l, 2, "material");
     if (!rc && !mat) return ctn_parse_missing(l, 2, "material", NULL);
     if (!rc) rc = ctn_parse_key_num(l, 2, "A", 1, &spec.A);
@@ -88,6 +89,9 @@ static int d_section(ctn_line *l)
     }
     if (!rc) rc = ctn_parse_key_num(l, 2, "mbl", 0, &spec.mbl);
     if (!rc) rc = ctn_parse_key_num(l, 2, "safety", 0, &spec.safety);
+    double *beam[5] = { &spec.Iy, &spec.Iz, &spec.J, &spec.Asy, &spec.Asz };
+    static const char *const beam_key[5] = { "Iy", "Iz", "J", "Asy", "Asz" };
+    for (int k = 0; k < 5 && !rc; k++) rc = ctn_parse_key_num(l, 2, beam_key[k], 0, beam[k]);
     if (!rc && ctn_parse_key(l, 2, "mbl") && !(spec.mbl > 0))
         return ctn_parse_error(l, "section %s: mbl must be positive (found %g)", l->tok[1], spec.mbl);
     if (!rc && ctn_parse_key(l, 2, "safety") && !ctn_parse_key(l, 2, "mbl"))
@@ -98,13 +102,18 @@ static int d_section(ctn_line *l)
     return rc ? rc : ctn_model_add_section_spec(l->m, &spec);
 }
 
+/* fix=: the translations x, y, z and the rotations rx, ry, rz, each at most once. */
 static int parse_fix(ctn_line *l, unsigned *fix)
 {
     const char *f = ctn_parse_key(l, 5, "fix");
     *fix = 0;
     for (const char *p = f; p && *p; p++) {
+        int rot = *p == 'r';
+        p += rot;
         unsigned bit = *p == 'x' ? CTN_FIX_X : *p == 'y' ? CTN_FIX_Y : *p == 'z' ? CTN_FIX_Z : 0;
-        if (!bit || (*fix & bit)) return ctn_parse_error(l, "fix= takes the letters x, y, z, each once (found '%.40s')", f);
+        bit <<= rot ? 3 : 0;
+        if (!bit || (*fix & bit))
+            return ctn_parse_error(l, "fix= takes the letters x, y, z (and rx, ry, rz for rotations), each once (found '%.40s')", f);
         *fix |= bit;
     }
     return CTN_OK;
@@ -194,15 +203,33 @@ static int d_element(ctn_line *l)
     return rc ? rc : ctn_model_add_element_spec(l->m, &spec);
 }
 
+int ctn_parse_add_element(ctn_line *l, int rc, int from, const char *type, int id, int nnodes, const int *nodes,
+                          ctn_element_spec *spec)
+{
+    if (!rc) rc = ctn_parse_leftovers(l, from, type);
+    spec->type = type;
+    spec->id = id;
+    spec->nnodes = nnodes;
+    spec->nodes = nodes;
+    return rc ? rc : ctn_model_add_element_spec(l->m, spec);
+}
+
+/* The start of a spring's line (spring, rspring): ID NODE1 NODE2 k=STIFFNESS. */
+static int spring_head(ctn_line *l, const char *usage, int *id, int nodes[2], ctn_element_spec *spec)
+{
+    ctn_element_spec_init(spec);
+    int rc = ctn_parse_positional(l, 3, usage);
+    if (!rc) rc = ctn_parse_int(l, "the element id", l->tok[1], id);
+    for (int k = 0; k < 2 && !rc; k++) rc = ctn_parse_int(l, "a node id", l->tok[2 + k], &nodes[k]);
+    if (!rc) rc = ctn_parse_key_num(l, 4, "k", 1, &spec->k);
+    return rc;
+}
+
 static int d_spring(ctn_line *l)
 {
     int id = 0, nodes[2] = { 0, 0 };
     ctn_element_spec spec;
-    ctn_element_spec_init(&spec);
-    int rc = ctn_parse_positional(l, 3, "spring ID NODE1 NODE2 k=STIFFNESS [l0=LENGTH] [group=NAME]");
-    if (!rc) rc = ctn_parse_int(l, "the element id", l->tok[1], &id);
-    for (int k = 0; k < 2 && !rc; k++) rc = ctn_parse_int(l, "a node id", l->tok[2 + k], &nodes[k]);
-    if (!rc) rc = ctn_parse_key_num(l, 4, "k", 1, &spec.k);
+    int rc = spring_head(l, "spring ID NODE1 NODE2 k=STIFFNESS [l0=LENGTH] [group=NAME]", &id, nodes, &spec);
     char what[8 + CTN_FMT_MAX];
     memcpy(what, "spring ", 7);
     ctn_fmt_int(what + 7, id);
@@ -210,12 +237,18 @@ static int d_spring(ctn_line *l)
     if (!rc) rc = density_keys(l, 4, what, spec.l0 != CTN_L0_DEFAULT || spec.prestress, &spec.q, &spec.force);
     if (!rc && !(spec.k > 0)) return ctn_parse_error(l, "spring %d: k must be positive (found %g)", id, spec.k);
     spec.group = rc ? NULL : ctn_parse_key(l, 4, "group");
-    if (!rc) rc = ctn_parse_leftovers(l, 4, "spring");
-    spec.type = "spring";
-    spec.id = id;
-    spec.nnodes = 2;
-    spec.nodes = nodes;
-    return rc ? rc : ctn_model_add_element_spec(l->m, &spec);
+    return ctn_parse_add_element(l, rc, 4, "spring", id, 2, nodes, &spec);
+}
+
+/* rspring ID NODE1 NODE2 k=STIFFNESS [group=NAME]: a rotational spring (6 DOFs per node). */
+static int d_rspring(ctn_line *l)
+{
+    int id = 0, nodes[2] = { 0, 0 };
+    ctn_element_spec spec;
+    int rc = spring_head(l, "rspring ID NODE1 NODE2 k=STIFFNESS [group=NAME]", &id, nodes, &spec);
+    if (!rc && !(spec.k > 0)) return ctn_parse_error(l, "rspring %d: k must be positive (found %g)", id, spec.k);
+    spec.group = rc ? NULL : ctn_parse_key(l, 4, "group");
+    return ctn_parse_add_element(l, rc, 4, "rspring", id, 2, nodes, &spec);
 }
 
 static int cable_shape(ctn_line *l, ctn_cable_spec *spec)
@@ -278,16 +311,20 @@ static int d_cable(ctn_line *l)
     return rc || !(q > 0 || force > 0) ? rc : ctn_model_set_force_density(l->m, first, last, q, force);
 }
 
-static int d_load(ctn_line *l)
+/* load NODE FX FY FZ, moment NODE MX MY MZ: a nodal force or moment. */
+static int nodal(ctn_line *l, int moment)
 {
     int id = 0;
     double F[3];
-    int rc = ctn_parse_positional(l, 4, "load NODE FX FY FZ");
+    int rc = ctn_parse_positional(l, 4, moment ? "moment NODE MX MY MZ" : "load NODE FX FY FZ");
     if (!rc) rc = ctn_parse_int(l, "the node id", l->tok[1], &id);
-    for (int k = 0; k < 3 && !rc; k++) rc = ctn_parse_num(l, "a force component", l->tok[2 + k], &F[k]);
-    if (!rc) rc = ctn_parse_leftovers(l, 5, "load");
-    return rc ? rc : ctn_model_add_load(l->m, id, F);
+    for (int k = 0; k < 3 && !rc; k++) rc = ctn_parse_num(l, moment ? "a moment component" : "a force component", l->tok[2 + k], &F[k]);
+    if (!rc) rc = ctn_parse_leftovers(l, 5, moment ? "moment" : "load");
+    return rc ? rc : moment ? ctn_model_add_moment(l->m, id, F) : ctn_model_add_load(l->m, id, F);
 }
+
+static int d_load(ctn_line *l) { return nodal(l, 0); }
+static int d_moment(ctn_line *l) { return nodal(l, 1); }
 
 /* "A-B" or "A" or "all" into an inclusive id range. */
 static int parse_range(ctn_line *l, const char *s, int *first, int *last)
@@ -401,20 +438,22 @@ static int d_step(ctn_line *l)
 
 static int d_displace(ctn_line *l)
 {
-    static const char *const axes[] = { "x", "y", "z" };
+    static const char *const axes[6] = { "x", "y", "z", "rx", "ry", "rz" };
     int id = 0;
     unsigned dofs = 0;
-    double u[3] = { 0, 0, 0 };
-    int rc = ctn_parse_positional(l, 1, "displace NODE [x=DX] [y=DY] [z=DZ]");
+    double u[6] = { 0, 0, 0, 0, 0, 0 };
+    int rc = ctn_parse_positional(l, 1, "displace NODE [x=DX] [y=DY] [z=DZ] [rx=RX] [ry=RY] [rz=RZ]");
     if (!rc) rc = ctn_parse_int(l, "the node id", l->tok[1], &id);
-    for (int k = 0; k < 3 && !rc; k++) {
+    for (int k = 0; k < 6 && !rc; k++) {
         if (!ctn_parse_key(l, 2, axes[k])) continue;
         dofs |= 1u << k;
         rc = ctn_parse_key_num(l, 2, axes[k], 1, &u[k]);
     }
     if (!rc) rc = ctn_parse_leftovers(l, 2, "displace");
-    if (!rc && !dofs) return ctn_parse_error(l, "displace: give at least one of x=, y=, z=");
-    return rc ? rc : ctn_model_add_displacement(l->m, id, dofs, u);
+    if (!rc && !dofs) return ctn_parse_error(l, "displace: give at least one of x=, y=, z=, rx=, ry=, rz=");
+    if (!rc && (dofs & CTN_FIX_ALL)) rc = ctn_model_add_displacement(l->m, id, dofs & CTN_FIX_ALL, u);
+    if (!rc && (dofs & CTN_FIX_ROT)) rc = ctn_model_add_rotation(l->m, id, dofs & CTN_FIX_ROT, u + 3);
+    return rc;
 }
 
 /* group NAME ID|FIRST-LAST ... */
@@ -455,7 +494,8 @@ static const directive directives[] = {
     { "cable", d_cable },     { "load", d_load },       { "hload", d_hload },
     { "solve", d_solve },     { "step", d_step },       { "displace", d_displace },
     { "spring", d_spring },   { "group", d_group },     { "temperature", d_temperature },
-    { "modes", d_modes },     { "catenary", ctn_parse_catenary }, { "pulley", ctn_parse_pulley },
+    { "modes", d_modes },     { "moment", d_moment },   { "rspring", d_rspring },
+        { "catenary", ctn_parse_catenary }, { "pulley", ctn_parse_pulley },
 };
 
 int ctn_parse_directive(ctn_line *l)

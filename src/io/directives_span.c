@@ -58,12 +58,7 @@ int ctn_parse_catenary(ctn_line *l)
     snprintf(what, sizeof what, "catenary %d", id);
     if (!rc) rc = span_target(l, 4, what, &spec);
     if (!rc) rc = span_keys(l, 4, what, &spec);
-    if (!rc) rc = ctn_parse_leftovers(l, 4, "catenary");
-    spec.type = "catenary";
-    spec.id = id;
-    spec.nnodes = 2;
-    spec.nodes = nodes;
-    return rc ? rc : ctn_model_add_element_spec(l->m, &spec);
+    return ctn_parse_add_element(l, rc, 4, "catenary", id, 2, nodes, &spec);
 }
 
 int ctn_parse_pulley(ctn_line *l)
@@ -82,10 +77,5 @@ int ctn_parse_pulley(ctn_line *l)
     ctn_element_spec spec;
     ctn_element_spec_init(&spec);
     if (!rc) rc = span_keys(l, 2 + n, what, &spec);
-    if (!rc) rc = ctn_parse_leftovers(l, 2 + n, "pulley");
-    spec.type = "pulley";
-    spec.id = id;
-    spec.nnodes = n;
-    spec.nodes = nodes;
-    return rc ? rc : ctn_model_add_element_spec(l->m, &spec);
+    return ctn_parse_add_element(l, rc, 2 + n, "pulley", id, n, nodes, &spec);
 }

@@ -39,7 +39,7 @@ static void put_stability(ctn_jw *j, const ctn_solution *s)
     ctn_jw_string(j, "kind", st.semidefinite ? "semi-definite" : "unstable");
     ctn_jw_number(j, "negative_eigenvalues", (double)st.negative);
     if (st.node) ctn_jw_number(j, "node", st.node);
-    if (st.dir >= 0 && st.dir < 3) ctn_jw_string(j, "direction", xyz[st.dir]);
+    if (st.dir >= 0 && st.dir < 6) ctn_jw_string(j, "direction", ctn_dof_name(st.dir));
     ctn_jw_end(j);
 }
 
@@ -73,9 +73,9 @@ static void put_summary(json_writer *jw, const ctn_solution *s)
     ctn_jw_string(j, "length", ctn_model_length_unit(jw->w.m));
     ctn_jw_end(j);
     if ((sum.reason == CTN_DIVERGED_INDEFINITE || sum.reason == CTN_DIVERGED_MECHANISM) && sum.fail_dir >= 0 &&
-        sum.fail_dir < 3) {
+        sum.fail_dir < 6) {
         ctn_jw_number(j, "fail_node", sum.fail_node);
-        ctn_jw_string(j, "fail_direction", xyz[sum.fail_dir]);
+        ctn_jw_string(j, "fail_direction", ctn_dof_name(sum.fail_dir));
     }
     if (sum.reason != CTN_CONVERGED && sum.fail_element) ctn_jw_number(j, "fail_element", sum.fail_element);
     if ((sum.floor || sum.reason == CTN_DIVERGED_ROUNDOFF) && isfinite(sum.residual_floor) && isfinite(sum.force_scale)) {
@@ -85,19 +85,31 @@ static void put_summary(json_writer *jw, const ctn_solution *s)
     put_stability(j, s);
 }
 
-/* "nodes" (coordinates and displacements) and "reactions" (of the supported nodes). */
-static void put_nodes(json_writer *jw, const ctn_step_result *st)
+/* The three numbers v[0..2] under the keys k[0..2]. */
+static void put3(ctn_jw *j, const char *const *k, const double *v)
+{
+    for (int a = 0; a < 3; a++) ctn_jw_number(j, k[a], v[a]);
+}
+
+/* "nodes" (coordinates, displacements and, in a model with rotations, the rotations rx,
+ * ry, rz) and "reactions" (of the supported nodes; with rotations, the moments mx, my,
+ * mz too) of step k. */
+static void put_nodes(json_writer *jw, const ctn_solution *s, size_t k, const ctn_step_result *st)
 {
     static const char *const uk[3] = { "ux", "uy", "uz" }, *const fk[3] = { "fx", "fy", "fz" };
+    static const char *const rk[3] = { "rx", "ry", "rz" }, *const mk[3] = { "mx", "my", "mz" };
     ctn_jw *j = &jw->j;
     size_t nn = ctn_model_node_count(jw->w.m);
+    const double *rot = NULL, *mom = NULL;
+    ctn_solution_step_rotations(s, k, &rot, &mom);
     ctn_node_info p;
     ctn_jw_array(j, "nodes");
     for (size_t i = 0; i < nn && !ctn_model_node(jw->w.m, i, &p); i++) {
         ctn_jw_object(j, NULL);
         ctn_jw_number(j, "id", p.id);
-        for (int k = 0; k < 3; k++) ctn_jw_number(j, xyz[k], p.X[k]);
-        for (int k = 0; k < 3; k++) ctn_jw_number(j, uk[k], st->d[3 * i + k]);
+        put3(j, xyz, p.X);
+        put3(j, uk, st->d + 3 * i);
+        if (rot) put3(j, rk, rot + 3 * i);
         ctn_jw_end(j);
     }
     ctn_jw_end(j);
@@ -106,7 +118,8 @@ static void put_nodes(json_writer *jw, const ctn_step_result *st)
         if (!p.fix) continue;
         ctn_jw_object(j, NULL);
         ctn_jw_number(j, "node", p.id);
-        for (int k = 0; k < 3; k++) ctn_jw_number(j, fk[k], st->react[3 * i + k]);
+        put3(j, fk, st->react + 3 * i);
+        if (mom) put3(j, mk, mom + 3 * i);
         ctn_jw_end(j);
     }
     ctn_jw_end(j);
@@ -265,7 +278,7 @@ static void put_step(json_writer *jw, const ctn_solution *s, size_t k, const ctn
     ctn_jw_string(j, "reason", ctn_reason_name(st->reason));
     ctn_jw_number(j, "load_factor", st->load_factor);
     ctn_jw_number(j, "iterations", st->iterations);
-    put_nodes(jw, st);
+    put_nodes(jw, s, k, st);
     put_elements(jw, s, k);
     if (ctn_model_group_count(jw->w.m)) put_groups(jw, s, k);
     ctn_jw_end(j);
@@ -291,7 +304,7 @@ static int json_step(void *p, const ctn_solution *s, size_t k)
     if (k == 0) {
         if (ctn_solution_step(s, jw->nsteps - 1, &st)) return ctn_writer_mismatch(&jw->w);
         put_summary(jw, s);
-        put_nodes(jw, &st);
+        put_nodes(jw, s, jw->nsteps - 1, &st);
         put_elements(jw, s, jw->nsteps - 1);
         put_cables(jw, s);
         if (ctn_model_group_count(jw->w.m)) put_groups(jw, s, jw->nsteps - 1);

@@ -73,6 +73,10 @@ int ctn_parse_directive(ctn_line *l);
  * the prestress into *kind and *value; *l0 is set when l0= is given. */
 int ctn_parse_prestress(ctn_line *l, int from, const char *what, double *l0, ctn_prestress *kind, double *value);
 /* The element families with a length: catenary, pulley (directives_span.c). */
+/* The end of an element's line: no key left from token `from` on (unless rc already
+ * failed), then the element of family `type` with that id and nodes added from spec. */
+int ctn_parse_add_element(ctn_line *l, int rc, int from, const char *type, int id, int nnodes, const int *nodes,
+                          ctn_element_spec *spec);
 int ctn_parse_catenary(ctn_line *l);
 int ctn_parse_pulley(ctn_line *l);
 

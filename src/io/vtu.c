@@ -55,6 +55,21 @@ static int point_reaction(const vtu_data *d, size_t j, size_t i, double *v)
     return CTN_OK;
 }
 
+/* rotation, moment: the rotations and reaction moments of the nodes, arrays only in a
+ * model with rotations (0 on a node without). */
+static size_t has_rotations(const vtu_data *d) { return ctn_model_has_rotations(d->m) ? 1 : 0; }
+
+static int point_rotation3(const vtu_data *d, size_t i, int moment, double *v)
+{
+    const double *rot = NULL, *mom = NULL;
+    if (ctn_solution_step_rotations(d->s, d->k, &rot, &mom) || !rot) return CTN_ERR_INVALID;
+    for (int c = 0; c < 3; c++) v[c] = (moment ? mom : rot)[3 * i + (size_t)c];
+    return CTN_OK;
+}
+
+static int point_rotation(const vtu_data *d, size_t j, size_t i, double *v) { (void)j; return point_rotation3(d, i, 0, v); }
+static int point_moment(const vtu_data *d, size_t j, size_t i, double *v) { (void)j; return point_rotation3(d, i, 1, v); }
+
 /* One number of the state of element i at the step: the force, the stress (0 for a
  * spring: it has no section), the strain or slack (0 or 1). */
 enum { CELL_FORCE, CELL_STRESS, CELL_STRAIN, CELL_SLACK };
@@ -113,6 +128,8 @@ static int point_mode(const vtu_data *d, size_t j, size_t i, double *v)
 static const vtu_field fields[] = {
     { "displacement", VTU_POINT, 3, 0, NULL, 0, point_displacement },
     { "reaction", VTU_POINT, 3, 0, NULL, 0, point_reaction },
+    { "rotation", VTU_POINT, 3, 0, has_rotations, 0, point_rotation },
+    { "moment", VTU_POINT, 3, 0, has_rotations, 0, point_moment },
     { "force", VTU_CELL, 1, 0, NULL, 0, cell_force },
     { "stress", VTU_CELL, 1, 0, NULL, 0, cell_stress },
     { "strain", VTU_CELL, 1, 0, NULL, 0, cell_strain },

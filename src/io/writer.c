@@ -62,7 +62,8 @@ static int summary_finite(const ctn_solution *s)
     return all_finite(h, n);
 }
 
-/* Step k: its load factor, displacements, reactions and element states. */
+/* Step k: its load factor, displacements, reactions (rotations and moments) and element
+ * states. */
 static int step_finite(const ctn_model *m, const ctn_solution *s, size_t k)
 {
     ctn_step_result st;
@@ -70,6 +71,9 @@ static int step_finite(const ctn_model *m, const ctn_solution *s, size_t k)
     double mpa = ctn_model_mpa_factor(m);
     if (ctn_solution_step(s, k, &st) || !isfinite(st.load_factor)) return 0;
     if (!all_finite(st.d, 3 * nn) || !all_finite(st.react, 3 * nn)) return 0;
+    const double *rot = NULL, *mom = NULL;
+    ctn_solution_step_rotations(s, k, &rot, &mom);
+    if (rot && (!all_finite(rot, 3 * nn) || !all_finite(mom, 3 * nn))) return 0;
     for (size_t i = 0; i < ne; i++) {
         ctn_element_state e;
         if (ctn_solution_step_element(s, k, i, &e)) return 0;

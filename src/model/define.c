@@ -107,6 +107,8 @@ int ctn_model_add_material_spec(ctn_model *m, const ctn_material_spec *spec)
         return ctn_model_error(m, CTN_ERR_MODEL, "material '%s': unknown strain measure", name);
     if (!isfinite(s.alpha) || fabs(s.alpha) >= 0.01)
         return ctn_model_error(m, CTN_ERR_MODEL, "material '%s': alpha must be finite and below 0.01 per kelvin in size (got %g)", name, s.alpha);
+    if (!isfinite(s.G) || s.G < 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "material '%s': G must be >= 0 and finite (got %g)", name, s.G);
     if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->materials, 1))) return rc;
     ctn_material *p = &m->materials.v[m->materials.n++];
     snprintf(p->name, sizeof p->name, "%s", name);
@@ -114,6 +116,18 @@ int ctn_model_add_material_spec(ctn_model *m, const ctn_material_spec *spec)
     p->strain = strain;
     p->tension_only = tension_only != 0;
     p->alpha = s.alpha;
+    p->G = s.G;
+    return CTN_OK;
+}
+
+/* The beam properties of a section: each >= 0 and finite. */
+static int check_beam(const ctn_model *m, const ctn_section_spec *s)
+{
+    const char *key[5] = { "Iy", "Iz", "J", "Asy", "Asz" };
+    const double v[5] = { s->Iy, s->Iz, s->J, s->Asy, s->Asz };
+    for (int k = 0; k < 5; k++)
+        if (!isfinite(v[k]) || v[k] < 0)
+            return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': %s must be >= 0 and finite (got %g)", s->name, key[k], v[k]);
     return CTN_OK;
 }
 
@@ -145,6 +159,7 @@ int ctn_model_add_section_spec(ctn_model *m, const ctn_section_spec *spec)
         return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': mass must be >= 0 and finite (got %g)", name, s.mass);
     if (!isfinite(m->materials.v[mat].E * A))
         return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': E A = %g * %g overflows", name, m->materials.v[mat].E, A);
+    if ((rc = check_beam(m, &s))) return rc;
     if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->sections, 1))) return rc;
     ctn_section *p = &m->sections.v[m->sections.n++];
     snprintf(p->name, sizeof p->name, "%s", name);
@@ -155,5 +170,10 @@ int ctn_model_add_section_spec(ctn_model *m, const ctn_section_spec *spec)
     p->mbl = s.mbl;
     p->safety = s.safety;
     p->mass = s.mass;
+    p->Iy = s.Iy;
+    p->Iz = s.Iz;
+    p->J = s.J;
+    p->Asy = s.Asy;
+    p->Asz = s.Asz;
     return CTN_OK;
 }

@@ -55,7 +55,7 @@ static int resolve_nodes(const ctn_model *m, const ctn_element_spec *s, const ct
 }
 
 /* Form-finding keys: a force density q or a target force, positive, not both. */
-static int density(const ctn_model *m, const ctn_element_spec *s, ctn_element *e)
+static int density(const ctn_model *m, const ctn_element_spec *s)
 {
     if (!isfinite(s->q) || s->q < 0)
         return ctn_model_error(m, CTN_ERR_MODEL, "element %d: q must be positive and finite (got %g)", s->id, s->q);
@@ -63,8 +63,6 @@ static int density(const ctn_model *m, const ctn_element_spec *s, ctn_element *e
         return ctn_model_error(m, CTN_ERR_MODEL, "element %d: force must be positive and finite (got %g)", s->id, s->force);
     if (s->q > 0 && s->force > 0)
         return ctn_model_error(m, CTN_ERR_MODEL, "element %d: give q= or force=, not both", s->id);
-    e->ff_q = s->q;
-    e->ff_force = s->force;
     return CTN_OK;
 }
 
@@ -92,9 +90,9 @@ static int make_record(ctn_model *m, const ctn_element_spec *s, int type, ctn_el
             return ctn_model_error(m, CTN_ERR_MODEL, "element %d: undefined section '%s'", s->id, s->section ? s->section : "");
     }
     e->l0 = s->l0 == CTN_L0_DEFAULT ? chord : s->l0;
-    e->k = s->k;
+    if (ops->params) ops->params(s, e->par);
     e->line = m->line;
-    if ((rc = density(m, s, e))) return rc;
+    if ((rc = density(m, s))) return rc;
     if (s->prestress != CTN_PRESTRESS_NONE) {
         if (s->prestress < CTN_PRESTRESS_FORCE || s->prestress > CTN_PRESTRESS_STRAIN)
             return ctn_model_error(m, CTN_ERR_MODEL, "element %d: unknown prestress", s->id);
@@ -129,6 +127,8 @@ int ctn_model_add_element_spec(ctn_model *m, const ctn_element_spec *spec)
     if (s.group && (rc = ctn_model_group_get(m, s.group, &e.group))) return rc;
     if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->elements, 1))) return rc;
     if (s.target != CTN_TARGET_NONE && (rc = CTN_ARRAY_RESERVE(m->ctx, m->etargets, 1))) return rc;
+    int ff = s.q > 0 || s.force > 0;
+    if (ff && (rc = CTN_ARRAY_RESERVE(m->ctx, m->densities, 1))) return rc;
     if ((rc = ctn_array_reserve(m->ctx, (void **)&m->conn.v, &m->conn.cap, m->conn.n + (size_t)e.nnodes, sizeof(int))))
         return rc;
     if ((rc = ctn_idmap_put(m->ctx, &m->element_ids, s.id, (int)m->elements.n))) return rc;
@@ -136,7 +136,14 @@ int ctn_model_add_element_spec(ctn_model *m, const ctn_element_spec *spec)
     memcpy(m->conn.v + m->conn.n, idx, (size_t)e.nnodes * sizeof(int));
     m->conn.n += (size_t)e.nnodes;
     m->elements.v[m->elements.n++] = e;
+    for (int k = 0; k < e.nnodes; k++) {             /* a family of rotations: 6 DOFs */
+        ctn_node *p = &m->nodes.v[idx[k]];
+        if (p->ndof >= ctn_element_family(type)->ndof_node) continue;
+        p->ndof = ctn_element_family(type)->ndof_node;
+        m->rot_nodes++;
+    }
     if (s.target != CTN_TARGET_NONE) ctn_element_target_record(m, &s, m->elements.n - 1);
+    if (ff) ctn_model_put_density(m, m->elements.n - 1, s.q, s.force);   /* the last: room reserved */
     if (s.id > m->max_element_id) m->max_element_id = s.id;
     return CTN_OK;
 }

@@ -48,6 +48,16 @@ static void add_hloads(const ctn_model *m, int step, int dead_only, double *f)
     }
 }
 
+/* u (3 per node) = the prescribed displacements (rot 0) or rotations (rot 1) of the
+ * steps up to step. */
+static void add_prescribed(const ctn_model *m, int step, int rot, double *u)
+{
+    memset(u, 0, 3 * m->nodes.n * sizeof(double));
+    for (size_t i = 0; i < m->pdisps.n; i++)
+        for (int j = 0; j < 3 && m->pdisps.v[i].step <= step && m->pdisps.v[i].rot == rot; j++)
+            u[3 * (size_t)m->pdisps.v[i].node + (size_t)j] += m->pdisps.v[i].u[j];
+}
+
 size_t ctn_model_step_count(const ctn_model *m) { return !m ? 0 : m->steps.n ? m->steps.n : 1; }
 
 const char *ctn_model_step_name(const ctn_model *m, size_t k)
@@ -76,10 +86,22 @@ int ctn_model_step_loads_ex(const ctn_model *m, size_t k, int dead_only, double 
     }
     if (u) {
         memset(u, 0, n3 * sizeof(double));
-        for (size_t i = 0; i < m->pdisps.n; i++)
-            for (int j = 0; j < 3 && m->pdisps.v[i].step <= step; j++)
-                u[3 * (size_t)m->pdisps.v[i].node + (size_t)j] += m->pdisps.v[i].u[j];
+        add_prescribed(m, step, 0, u);
     }
+    return CTN_OK;
+}
+
+int ctn_model_step_moments(const ctn_model *m, size_t k, double *M, double *r)
+{
+    if (!m || k >= ctn_model_step_count(m)) return CTN_ERR_INVALID;
+    int step = (int)k + 1;
+    if (M) {
+        memset(M, 0, 3 * m->nodes.n * sizeof(double));
+        for (size_t i = 0; i < m->mloads.n; i++)
+            for (int j = 0; j < 3 && m->mloads.v[i].step <= step; j++)
+                M[3 * (size_t)m->mloads.v[i].node + (size_t)j] += m->mloads.v[i].F[j];
+    }
+    if (r) add_prescribed(m, step, 1, r);
     return CTN_OK;
 }
 
@@ -171,13 +193,36 @@ static int check_unconnected(const ctn_model *m)
     int rc = CTN_OK;
     for (size_t i = 0; i < m->nodes.n && !rc; i++) {
         const ctn_node *p = &m->nodes.v[i];
-        if (used[i] || p->fix == CTN_FIX_ALL) continue;
+        if (used[i] || (p->fix & CTN_FIX_ALL) == CTN_FIX_ALL) continue;
         rc = ctn_error_at(m->ctx, CTN_ERR_MODEL, m->file, p->line,
                           "node %d is connected to no element and is free in %s%s%s: a mechanism (fix it with fix=xyz or remove it)",
                           p->id, p->fix & CTN_FIX_X ? "" : "x", p->fix & CTN_FIX_Y ? "" : "y", p->fix & CTN_FIX_Z ? "" : "z");
     }
     ctn_free(used);
     return rc;
+}
+
+/* Rotations exist only on the nodes a 6-DOF family reaches: a fixed rotation or a
+ * moment on another node is an error at its line. */
+static int check_rotations(const ctn_model *m)
+{
+    static const char *const axis[3] = { "rx", "ry", "rz" };
+    for (size_t i = 0; i < m->nodes.n; i++) {
+        const ctn_node *p = &m->nodes.v[i];
+        if (p->ndof == 6 || !(p->fix & CTN_FIX_ROT)) continue;
+        int k = p->fix & CTN_FIX_RX ? 0 : p->fix & CTN_FIX_RY ? 1 : 2;
+        return ctn_error_at(m->ctx, CTN_ERR_MODEL, m->file, p->line,
+                            "node %d: fix=%s fixes a rotation, but the node has none (no element with rotations, "
+                            "such as rspring, reaches it)", p->id, axis[k]);
+    }
+    for (size_t i = 0; i < m->mloads.n; i++) {
+        const ctn_pload *q = &m->mloads.v[i];
+        if (m->nodes.v[q->node].ndof == 6) continue;
+        return ctn_error_at(m->ctx, CTN_ERR_MODEL, m->file, q->line,
+                            "moment on node %d, which has no rotations (no element with rotations, such as rspring, "
+                            "reaches it)", m->nodes.v[q->node].id);
+    }
+    return CTN_OK;
 }
 
 int ctn_model_validate(const ctn_model *m)
@@ -194,7 +239,8 @@ int ctn_model_validate(const ctn_model *m)
     int fixed = 0;
     for (size_t i = 0; i < m->nodes.n && !fixed; i++) fixed = m->nodes.v[i].fix != 0;
     if (!fixed) return ctn_error(m->ctx, CTN_ERR_MODEL, "%s%sthe model has no supports (no node has fix=)", m->file, *m->file ? ": " : "");
-    int rc = check_hload_targets(m);
+    int rc = check_rotations(m);
+    if (!rc) rc = check_hload_targets(m);
     if (!rc) rc = check_unconnected(m);
     return rc ? rc : ctn_model_check_parts(m);
 }

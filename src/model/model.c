@@ -36,6 +36,7 @@ void ctn_model_destroy(ctn_model **m)
     ctn_free(p->elements.v);
     ctn_free(p->conn.v);
     ctn_free(p->ploads.v);
+    ctn_free(p->mloads.v);
     ctn_free(p->pdisps.v);
     ctn_free(p->steps.v);
     ctn_free(p->hloads.v);
@@ -43,6 +44,7 @@ void ctn_model_destroy(ctn_model **m)
     ctn_free(p->groups.v);
     ctn_free(p->tloads.v);
     ctn_free(p->etargets.v);
+    ctn_free(p->densities.v);
     ctn_idmap_free(&p->node_ids);
     ctn_idmap_free(&p->element_ids);
     ctn_free(p);

@@ -7,6 +7,7 @@
 #include "model/idmap.h"
 
 #define CTN_NAME_MAX 64
+#define CTN_ELEM_NPAR 2  /* per-element parameters a family keeps in the model record */
 
 typedef struct ctn_node {
     int id;
@@ -15,6 +16,7 @@ typedef struct ctn_node {
     unsigned fix;
     int line;        /* defining line in the source, 0 if from the API */
     double mass;     /* lumped point mass [force s^2/length], 0 if none */
+    int ndof;        /* 3, or 6 once an element of a 6-DOF family reaches it */
 } ctn_node;
 
 typedef struct ctn_material {
@@ -23,6 +25,7 @@ typedef struct ctn_material {
     ctn_strain strain;
     int tension_only;
     double alpha;    /* coefficient of thermal expansion [1/K] */
+    double G;        /* shear modulus [force/length^2], 0 if not given */
 } ctn_material;
 
 typedef struct ctn_section {
@@ -33,6 +36,8 @@ typedef struct ctn_section {
     double mbl;      /* minimum breaking load [force], 0 if not given */
     double safety;   /* factor on mbl: capacity = mbl / safety */
     double mass;     /* per unit unstressed length; CTN_MASS_DEFAULT: w / g */
+    double Iy, Iz, J;   /* beams: second moments of area, torsion constant [length^4] */
+    double Asy, Asz;    /* beams: shear areas [length^2], 0 if not given */
 } ctn_section;
 
 typedef struct ctn_element {
@@ -42,12 +47,18 @@ typedef struct ctn_element {
     size_t conn;     /* its node indices are conn.v[conn .. conn + nnodes - 1] */
     int section;     /* section index, -1 for families without one */
     double l0;       /* unstressed (free) length */
-    double k;        /* spring stiffness [force/length], 0 for other families */
+    double par[CTN_ELEM_NPAR]; /* the family's own parameters, from the spec by its
+                                  params op (spring, rspring: par[0] = k), else 0 */
     int line;        /* defining line in the source, 0 if from the API */
     int group;       /* group index, -1 if none */
-    double ff_q;     /* form finding: force density q = N / l [force/length], 0 if none */
-    double ff_force; /* form finding: target force [force], 0 if none */
 } ctn_element;
+
+/* Form finding: the force density or target force of a member (density.c). */
+typedef struct ctn_density {
+    size_t e;        /* element index */
+    double q;        /* force density q = N / l [force/length], 0 if none */
+    double force;    /* target force [force], 0 if none */
+} ctn_density;
 
 typedef struct ctn_group {
     char name[CTN_NAME_MAX];
@@ -75,14 +86,16 @@ typedef struct ctn_hload {
 
 typedef struct ctn_pload {
     int node;        /* node index */
-    double F[3];
+    double F[3];     /* a force, or (in mloads) a moment */
     int step;
+    int line;        /* defining line in the source, 0 if from the API */
 } ctn_pload;
 
 typedef struct ctn_pdisp {
     int node;        /* node index */
-    double u[3];     /* increments of prescribed displacement on fixed DOFs */
+    double u[3];     /* increments of prescribed displacement (or rotation) on fixed DOFs */
     int step;
+    int rot;         /* 1: rotations about x, y, z (u in rad) */
 } ctn_pdisp;
 
 typedef struct ctn_step {
@@ -121,6 +134,8 @@ struct ctn_model {
     CTN_ARRAY(ctn_element) elements;
     CTN_ARRAY(int) conn;            /* element connectivity (node indices) */
     CTN_ARRAY(ctn_pload) ploads;
+    CTN_ARRAY(ctn_pload) mloads;    /* nodal moments */
+    size_t rot_nodes;               /* nodes with 6 DOFs */
     CTN_ARRAY(ctn_pdisp) pdisps;
     CTN_ARRAY(ctn_hload) hloads;
     CTN_ARRAY(ctn_step) steps;      /* empty: one implicit step */
@@ -129,6 +144,8 @@ struct ctn_model {
     CTN_ARRAY(ctn_tload) tloads;
     ctn_idmap node_ids, element_ids;
     int max_node_id, max_element_id;
+    CTN_ARRAY(ctn_density) densities; /* form finding: the members given q= or force=, by
+                                       increasing element index */
     CTN_ARRAY(ctn_cable) etargets;  /* catenary elements set by a target, each as the
                                        record of a one-element cable (first = the element
                                        index, count = 1), by increasing element index */
@@ -189,5 +206,9 @@ double ctn_model_element_temperature(const ctn_model *m, size_t k, size_t e);
  * weight but no mass= (mass.c). */
 double ctn_model_section_mass(const ctn_model *m, int i);
 int ctn_model_find_material(const ctn_model *m, const char *name);
+/* The form-finding record of element e, NULL if it has none (density.c). */
+const ctn_density *ctn_model_density_of(const ctn_model *m, size_t e);
+/* Set it (inserted in order; CTN_ERR_NOMEM unless there is room: reserve first). */
+int ctn_model_put_density(ctn_model *m, size_t e, double q, double force);
 
 #endif

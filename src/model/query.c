@@ -18,6 +18,13 @@ int ctn_model_node(const ctn_model *m, size_t i, ctn_node_info *out)
     return CTN_OK;
 }
 
+int ctn_model_node_dofs(const ctn_model *m, size_t i)
+{
+    return m && i < m->nodes.n ? m->nodes.v[i].ndof : 0;
+}
+
+int ctn_model_has_rotations(const ctn_model *m) { return m && m->rot_nodes > 0; }
+
 int ctn_model_element(const ctn_model *m, size_t i, ctn_element_info *out)
 {
     if (!m || !out || i >= m->elements.n) return CTN_ERR_INVALID;
@@ -30,7 +37,7 @@ int ctn_model_element(const ctn_model *m, size_t i, ctn_element_info *out)
     out->node[0] = out->nodes[0];
     out->node[1] = out->nodes[e->nnodes - 1];
     out->l0 = e->l0;
-    out->k = e->k;
+    out->k = ctn_element_family(e->type)->params ? e->par[0] : 0;   /* the springs' k */
     out->group = e->group >= 0 ? m->groups.v[e->group].name : NULL;
     if (e->section < 0) return CTN_OK;
     const ctn_section *s = &m->sections.v[e->section];

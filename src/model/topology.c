@@ -15,7 +15,7 @@ int ctn_model_add_node(ctn_model *m, int id, const double X[3], unsigned fix)
         return ctn_model_error(m, CTN_ERR_MODEL, "duplicate node id %d (defined on line %d)", id, m->nodes.v[old].line);
     if (old >= 0) return ctn_model_error(m, CTN_ERR_MODEL, "duplicate node id %d", id);
     if (!finite3(X)) return ctn_model_error(m, CTN_ERR_MODEL, "node %d: coordinates must be finite", id);
-    if (fix & ~(unsigned)CTN_FIX_ALL) return ctn_model_error(m, CTN_ERR_MODEL, "node %d: bad fix flags", id);
+    if (fix & ~(unsigned)CTN_FIX_ALL6) return ctn_model_error(m, CTN_ERR_MODEL, "node %d: bad fix flags", id);
     if (m->nodes.n >= (size_t)0x7fffffff / 3)
         return ctn_model_error(m, CTN_ERR_MODEL, "too many nodes");
     long lim = ctn_ctx_model_limit(m->ctx);
@@ -32,6 +32,7 @@ int ctn_model_add_node(ctn_model *m, int id, const double X[3], unsigned fix)
     p->fix = fix;
     p->line = m->line;
     p->mass = 0.0;
+    p->ndof = 3;
     if (id > m->max_node_id) m->max_node_id = id;
     return CTN_OK;
 }
@@ -44,35 +45,56 @@ int ctn_model_node_lookup(const ctn_model *m, int id, int *index)
     return CTN_OK;
 }
 
-int ctn_model_add_load(ctn_model *m, int node, const double F[3])
+/* A force (or, into mloads, a moment) F at node id, of the current step. */
+static int add_nodal(ctn_model *m, int node, const double F[3], int moment)
 {
     if (!m || !F) return CTN_ERR_INVALID;
     int a, rc;
     if ((rc = ctn_model_node_lookup(m, node, &a))) return rc;
-    if (!finite3(F)) return ctn_model_error(m, CTN_ERR_MODEL, "load on node %d must be finite", node);
-    if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->ploads, 1))) return rc;
-    ctn_pload *p = &m->ploads.v[m->ploads.n++];
+    if (!finite3(F)) return ctn_model_error(m, CTN_ERR_MODEL, "%s on node %d must be finite", moment ? "moment" : "load", node);
+    if ((rc = moment ? CTN_ARRAY_RESERVE(m->ctx, m->mloads, 1) : CTN_ARRAY_RESERVE(m->ctx, m->ploads, 1))) return rc;
+    ctn_pload *p = moment ? &m->mloads.v[m->mloads.n++] : &m->ploads.v[m->ploads.n++];
     p->node = a;
     memcpy(p->F, F, sizeof p->F);
     p->step = (int)m->steps.n;
+    p->line = m->line;
     return CTN_OK;
 }
 
-int ctn_model_add_displacement(ctn_model *m, int node, unsigned dofs, const double u[3])
+int ctn_model_add_load(ctn_model *m, int node, const double F[3]) { return add_nodal(m, node, F, 0); }
+int ctn_model_add_moment(ctn_model *m, int node, const double M[3]) { return add_nodal(m, node, M, 1); }
+
+/* Prescribed increments u of the fixed DOFs named by dofs (bits 0..2, after shifting
+ * rotation flags down by 3 when rot) of node id. */
+static int add_prescribed(ctn_model *m, int node, unsigned dofs, const double u[3], int rot)
 {
+    static const char *const name[2][3] = { { "x", "y", "z" }, { "rx", "ry", "rz" } };
     if (!m || !u) return CTN_ERR_INVALID;
     int a, rc;
     if ((rc = ctn_model_node_lookup(m, node, &a))) return rc;
-    if (!finite3(u)) return ctn_model_error(m, CTN_ERR_MODEL, "displacement of node %d must be finite", node);
+    if (!finite3(u)) return ctn_model_error(m, CTN_ERR_MODEL, "%s of node %d must be finite", rot ? "rotation" : "displacement", node);
+    unsigned fix = m->nodes.v[a].fix >> (rot ? 3 : 0);
     for (int k = 0; k < 3; k++)
-        if ((dofs >> k & 1u) && !(m->nodes.v[a].fix >> k & 1u))
-            return ctn_model_error(m, CTN_ERR_MODEL, "node %d: %c is not fixed; only fixed DOFs take a prescribed displacement", node, "xyz"[k]);
+        if ((dofs >> k & 1u) && !(fix >> k & 1u))
+            return ctn_model_error(m, CTN_ERR_MODEL, "node %d: %s is not fixed; only fixed DOFs take a prescribed %s", node,
+                                   name[rot][k], rot ? "rotation" : "displacement");
     if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->pdisps, 1))) return rc;
     ctn_pdisp *p = &m->pdisps.v[m->pdisps.n++];
     p->node = a;
     for (int k = 0; k < 3; k++) p->u[k] = dofs >> k & 1u ? u[k] : 0.0;
     p->step = (int)m->steps.n;
+    p->rot = rot;
     return CTN_OK;
+}
+
+int ctn_model_add_displacement(ctn_model *m, int node, unsigned dofs, const double u[3])
+{
+    return add_prescribed(m, node, dofs & CTN_FIX_ALL, u, 0);
+}
+
+int ctn_model_add_rotation(ctn_model *m, int node, unsigned dofs, const double r[3])
+{
+    return add_prescribed(m, node, (dofs & CTN_FIX_ROT) >> 3, r, 1);
 }
 
 int ctn_model_add_hload(ctn_model *m, double q, int first, int last)

@@ -33,7 +33,7 @@ static int place(arc *a, double lambda, double *rn, int *valid)
 {
     ctn_problem *e = a->e;
     memcpy(a->d, a->d0, e->ns * sizeof(double));
-    ctn_problem_axpy(e, a->d, 1.0, a->du);
+    ctn_problem_update(e, a->d, 1.0, a->du);
     for (size_t i = 0; i < e->ns; i++) e->fext[i] = lambda * e->f1[i];
     return ctn_problem_residual(e, a->d, 1, rn, NULL, valid);
 }

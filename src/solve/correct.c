@@ -77,7 +77,7 @@ static int trial(corrector *c, double alpha, int fresh, double *rn, double *pi, 
 {
     ctn_problem *e = c->e;
     if (!fresh) memcpy(c->d, e->dsave, e->ns * sizeof(double));
-    ctn_problem_axpy(e, c->d, alpha, e->dd);
+    ctn_problem_update(e, c->d, alpha, e->dd);
     int rc = ctn_problem_residual(e, c->d, 1, rn, pi, ok);
     if (pi && e->fl) *pi = 0.5 * *rn * *rn;          /* no potential: the residual's merit */
     return rc;
@@ -179,7 +179,7 @@ static int iteration(corrector *c, ctn_reason *why)
     if (alpha == 0) {                            /* back to the start of the iteration */
         double tried = ctn_vec_norm(e->dd, e->ndof);
         if (keep) memcpy(c->d, e->dsave, e->ns * sizeof(double));
-        else ctn_problem_axpy(e, c->d, -1.0, e->dd); /* pure Newton: undo the step */
+        else ctn_problem_update(e, c->d, -1.0, e->dd); /* pure Newton: undo the step */
         int valid;
         if ((rc = ctn_problem_residual(e, c->d, 1, &c->rn, NULL, &valid)) || !valid) return rc;
         if (!c->globalized) { *why = e->opt.linesearch ? CTN_DIVERGED_LINESEARCH : CTN_DIVERGED_NANORINF; return CTN_OK; }

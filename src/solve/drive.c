@@ -183,6 +183,7 @@ int ctn_problem_solve(ctn_problem *p, ctn_solution **out)
     double *d = NULL;
     int rc = ctn_solution_create(p->ctx, p->m->nodes.n, p->m->elements.n, &s);
     if (rc) return rc;
+    s->rot = p->a->map.rot > 0;
     p->sum = &s->sum;
     s->sum.t_setup = p->t_setup;
     p->mode = 0;

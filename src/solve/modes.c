@@ -21,6 +21,8 @@ int ctn_modal_check(ctn_problem *p, const ctn_modal_options *o, double *diag, do
 {
     char msg[256];
     size_t bad, nmass = 0;
+    if (p->a->map.rot)                   /* mode shapes are stored 3 per node */
+        return modal_error(p, o, "modes: modal analysis of a model with rotations (6-DOF nodes, such as rspring's) is not supported yet");
     if ((size_t)o->count > p->ndof) {
         snprintf(msg, sizeof msg, "modes: count=%d is more than the %zu free DOFs", o->count, p->ndof);
         return modal_error(p, o, msg);

@@ -102,3 +102,9 @@ const char *ctn_reason_name(ctn_reason r)
     default: return "not solved";
     }
 }
+
+const char *ctn_dof_name(int dir)
+{
+    static const char *const names[6] = { "x", "y", "z", "rx", "ry", "rz" };
+    return dir >= 0 && dir < 6 ? names[dir] : "?";
+}

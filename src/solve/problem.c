@@ -196,6 +196,12 @@ void ctn_problem_step_loads(ctn_problem *p, size_t k)
     ctn_model_step_loads_ex(p->m, k, 1, NULL, p->v3);
     ctn_follow_step(p, k);
     ctn_dofmap_from3(&p->a->map, p->v3, p->p1);
+    if (p->a->map.rot) {                          /* moments and prescribed rotations */
+        ctn_model_step_moments(p->m, k, p->v3, NULL);
+        ctn_dofmap_rot_from3(&p->a->map, p->v3, p->f1);
+        ctn_model_step_moments(p->m, k, NULL, p->v3);
+        ctn_dofmap_rot_from3(&p->a->map, p->v3, p->p1);
+    }
     if (!p->dT) return;
     memcpy(p->dT0, p->dT1, p->a->ne * sizeof(double));
     ctn_model_step_temperatures(p->m, k, p->dT1);
@@ -309,9 +315,10 @@ double ctn_problem_max_diag(const ctn_problem *p)
 
 void ctn_problem_axpy(const ctn_problem *p, double *d, double alpha, const double *v)
 {
-    const int *eq = p->a->map.eq;
-    for (size_t i = 0; i < p->ns; i++) {
-        int q = eq[i];
-        if (q >= 0) d[i] += alpha * v[q];
-    }
+    ctn_dofmap_axpy(&p->a->map, d, alpha, v);
+}
+
+void ctn_problem_update(const ctn_problem *p, double *d, double alpha, const double *v)
+{
+    ctn_dofmap_update(&p->a->map, d, alpha, v);
 }

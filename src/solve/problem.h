@@ -113,8 +113,12 @@ void ctn_problem_settle(ctn_problem *p);
 int ctn_problem_linsolve(ctn_problem *p, const double *b, double *x);
 /* Largest diagonal entry of the assembled tangent. */
 double ctn_problem_max_diag(const ctn_problem *p);
-/* d (state) += alpha * v (ndof) on free DOFs. */
+/* d (state) += alpha * v (ndof) on free DOFs: a vector sum (a mode shape, a perturbation). */
 void ctn_problem_axpy(const ctn_problem *p, double *d, double alpha, const double *v);
+/* The state update of an iteration, d <- d (+) alpha v: the translations added, the
+ * rotations through the DOF map's rot_update (ctn_dofmap_update; the plain sum when the
+ * model has no rotations). */
+void ctn_problem_update(const ctn_problem *p, double *d, double alpha, const double *v);
 /* Store d, its reactions (f_int - f_ext at the current f_ext) and element states in step
  * k of the solution. */
 int ctn_problem_fill_step(ctn_problem *p, ctn_solution *s, size_t k, const double *d);

@@ -44,11 +44,13 @@ int ctn_problem_fill_step(ctn_problem *p, ctn_solution *s, size_t k, const doubl
     ctn_step_state *st = &s->steps[k];
     const int *eq = p->a->map.eq;
     ctn_dofmap_to3(&p->a->map, d, st->d);
+    if (st->rot) ctn_dofmap_rot_to3(&p->a->map, d, st->rot);
     if (ctn_asm_eval(p->a, d, 0, p->fint, NULL, NULL, NULL)) return CTN_OK;   /* collapsed: zeros stay */
     const double *fh = p->fl ? ctn_follow_forces(p, d) : NULL;
     for (size_t i = 0; i < p->ns; i++)
         p->react[i] = eq[i] < 0 ? p->fint[i] - p->fext[i] - (fh ? fh[i] : 0.0) : 0.0;
     ctn_dofmap_to3(&p->a->map, p->react, st->react);
+    if (st->rot) ctn_dofmap_rot_to3(&p->a->map, p->react, st->moment);
     ctn_asm_loop(p->a, d, CTN_EVAL_STRESS, 0, state_visit, st->elem, NULL);
     return CTN_OK;
 }

@@ -30,8 +30,10 @@ int ctn_solution_add_step(ctn_solution *s, const char *name, size_t *k)
     st->d = ctn_calloc(s->ctx, 3 * s->nn, sizeof(double));
     st->react = ctn_calloc(s->ctx, 3 * s->nn, sizeof(double));
     st->elem = ctn_calloc(s->ctx, s->ne, sizeof(ctn_element_state));
+    st->rot = s->rot ? ctn_calloc(s->ctx, 3 * s->nn, sizeof(double)) : NULL;
+    st->moment = s->rot ? ctn_calloc(s->ctx, 3 * s->nn, sizeof(double)) : NULL;
     s->nsteps++;                               /* counted even if partial: freed by destroy */
-    if (!st->d || !st->react || !st->elem) return CTN_ERR_NOMEM;
+    if (!st->d || !st->react || !st->elem || (s->rot && (!st->rot || !st->moment))) return CTN_ERR_NOMEM;
     *k = s->nsteps - 1;
     return CTN_OK;
 }
@@ -50,14 +52,19 @@ int ctn_solution_push_increment(ctn_solution *s, double d)
     return rc;
 }
 
+static void free_step(ctn_step_state *st)
+{
+    ctn_free(st->d);
+    ctn_free(st->react);
+    ctn_free(st->elem);
+    ctn_free(st->rot);
+    ctn_free(st->moment);
+}
+
 void ctn_solution_destroy(ctn_solution **s)
 {
     if (!s || !*s) return;
-    for (size_t k = 0; k < (*s)->nsteps; k++) {
-        ctn_free((*s)->steps[k].d);
-        ctn_free((*s)->steps[k].react);
-        ctn_free((*s)->steps[k].elem);
-    }
+    for (size_t k = 0; k < (*s)->nsteps; k++) free_step(&(*s)->steps[k]);
     ctn_modes_destroy(&(*s)->modes);
     ctn_free((*s)->steps);
     ctn_free((*s)->rhist);
@@ -91,6 +98,18 @@ static const ctn_step_state *last(const ctn_solution *s)
 const double *ctn_solution_displacements(const ctn_solution *s) { return last(s) ? last(s)->d : NULL; }
 const double *ctn_solution_reactions(const ctn_solution *s) { return last(s) ? last(s)->react : NULL; }
 
+const double *ctn_solution_rotations(const ctn_solution *s) { return last(s) ? last(s)->rot : NULL; }
+const double *ctn_solution_reaction_moments(const ctn_solution *s) { return last(s) ? last(s)->moment : NULL; }
+int ctn_solution_has_rotations(const ctn_solution *s) { return s && s->rot; }
+
+int ctn_solution_step_rotations(const ctn_solution *s, size_t k, const double **rot, const double **moment)
+{
+    if (!s || k >= s->nsteps) return CTN_ERR_INVALID;
+    if (rot) *rot = s->steps[k].rot;
+    if (moment) *moment = s->steps[k].moment;
+    return CTN_OK;
+}
+
 int ctn_solution_element(const ctn_solution *s, size_t i, ctn_element_state *out)
 {
     return s ? ctn_solution_step_element(s, s->nsteps - 1, i, out) : CTN_ERR_INVALID;
@@ -121,10 +140,7 @@ int ctn_solution_step_element(const ctn_solution *s, size_t k, size_t i, ctn_ele
 void ctn_solution_drop_step(ctn_solution *s)
 {
     if (!s || !s->nsteps) return;
-    ctn_step_state *st = &s->steps[--s->nsteps];
-    ctn_free(st->d);
-    ctn_free(st->react);
-    ctn_free(st->elem);
+    free_step(&s->steps[--s->nsteps]);
 }
 
 int ctn_solution_stability(const ctn_solution *s, ctn_stability *out)

@@ -12,6 +12,8 @@ typedef struct ctn_step_state {
     int iterations;
     double *d;                 /* 3 nn displacements */
     double *react;             /* 3 nn reactions */
+    double *rot;               /* 3 nn rotations [rad], NULL when no node has rotations */
+    double *moment;            /* 3 nn reaction moments, NULL likewise */
     ctn_element_state *elem;   /* ne */
 } ctn_step_state;
 
@@ -32,9 +34,11 @@ struct ctn_solution {
     double *rhist, *dhist;     /* residual and increment norms */
     size_t nr, nd, capr, capd;
     ctn_modes *modes;          /* the last modal analysis, NULL if none */
+    int rot;                   /* some node has rotations: the steps keep rot and moment */
 };
 
 int ctn_solution_create(ctn_ctx *ctx, size_t nn, size_t ne, ctn_solution **out);
+/* Set rot before the first step is added when some node has rotations. */
 /* Append a step state (arrays zeroed); *k gets its index. */
 int ctn_solution_add_step(ctn_solution *s, const char *name, size_t *k);
 /* Remove the last step (a strategy replaces it). */

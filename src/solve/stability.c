@@ -14,7 +14,10 @@ int ctn_problem_tangent_at(ctn_problem *p, const ctn_solution *s, double *d, con
 {
     const double *d3 = ctn_solution_displacements(s);
     if (!d3 || s->nn != p->m->nodes.n) return ctn_error(p->ctx, CTN_ERR_INVALID, "%s: the solution is not of this problem's model", who);
+    const double *rot = ctn_solution_rotations(s);
+    if (!rot != !p->a->map.rot) return ctn_error(p->ctx, CTN_ERR_INVALID, "%s: the solution is not of this problem's model", who);
     ctn_dofmap_from3(&p->a->map, d3, d);
+    if (rot) ctn_dofmap_rot_from3(&p->a->map, rot, d);
     ctn_problem_settle(p);                         /* K is rewritten */
     if (ctn_asm_eval(p->a, d, 0, p->fint, p->Kx, NULL, NULL))
         return ctn_error(p->ctx, CTN_ERR_INVALID, "%s: an element has zero length in that state", who);
