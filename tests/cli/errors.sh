@@ -24,7 +24,7 @@
 # missing files) are generated into a temporary directory below.
 #
 # ctest-shards: 4
-# ctest-cost: 120
+# ctest-cost: 120 (about the seconds of one shard under ASan: ctest -j starts them first)
 # Shards: `errors.sh CATENA K/N` runs the cases whose name hashes to K of N (ctest runs
 # cli_errors_1 .. cli_errors_N side by side, see CMakeLists.txt); without K/N, every case.
 # The JSON documents of a run are checked together by one python3 at the end; each case
@@ -37,12 +37,7 @@ set -u
 . "$(dirname "$0")/lib/common.sh"
 cli_init errors "${1:-}"
 [ -d tests/errors ] || { echo "errors.sh: no tests/errors directory" >&2; exit 1; }
-SHARD=${2:-1/1}
-[[ $SHARD =~ ^([0-9]+)/([0-9]+)$ ]] && [ "${BASH_REMATCH[1]}" -ge 1 ] &&
-    [ "${BASH_REMATCH[1]}" -le "${BASH_REMATCH[2]}" ] ||
-    { echo "errors.sh: shard '$SHARD' is not K/N with 1 <= K <= N" >&2; exit 1; }
-SHARD_K=${BASH_REMATCH[1]}
-SHARD_N=${BASH_REMATCH[2]}
+cli_shard errors "${2:-}" || exit 1
 
 # mine NAME: the case NAME belongs to this shard (a hash of its name, modulo N).
 mine() {
