@@ -4,6 +4,7 @@
  * catena/analytic.h), for level and inclined chords and gravity along -z or -y; a mast
  * held by catenary guys and a cable guy found together, each guy's end tension checked
  * on the closed form at the solved chord; the summary record, the JSON and the errors. */
+/* ctest-cost: 50 (about the seconds it takes under ASan: ctest -j starts it early) */
 #include "catena.h"
 #include "check.h"
 #include "run_text.h"

@@ -9,6 +9,7 @@
  * - one catenary element per length (CTN_STUDY_CATENARY): the elastic catenary to
  *   round-off, the mesh beside it equal to the plain study's FEA;
  * - allocation failures in ctn_study_run give CTN_ERR_NOMEM and no leak (both kinds). */
+/* ctest-cost: 20 (about the seconds it takes under ASan: ctest -j starts it early) */
 #include "catena.h"
 #include "check.h"
 

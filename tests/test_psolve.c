@@ -7,6 +7,7 @@
  * two give identical results; every allocation may fail. The 4-column supernode sweeps
  * by hand (both the baseline's copy and AVX2's) against a plain loop on single
  * supernodes. */
+/* ctest-cost: 20 (about the seconds it takes under ASan: ctest -j starts it early) */
 #include "linalg/linsolve.h"
 #include "linalg/psolve.h"
 #include "linalg/psolve_k4.h"

@@ -3,6 +3,7 @@
  *     allocation far away keeps ctn_write_results on one thread);
  *   - under a file size limit that every file but the smallest exceeds, whichever
  *     thread fails: CTN_ERR_IO with the write error, nothing committed, no temporary. */
+/* ctest-cost: 20 (about the seconds it takes under ASan: ctest -j starts it early) */
 #include "check.h"
 #include "files.h"
 

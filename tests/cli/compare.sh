@@ -16,6 +16,7 @@
 #   - usage errors exit 1, a missing file 4, a model that is not a single span 2, a model
 #     that does not converge 3, each with a message on stderr.
 # Prints "N passed, N failed"; exit 1 on any failure.
+# ctest-cost: 25 (about the seconds it takes under ASan: ctest -j starts it early)
 set -u
 
 . "$(dirname "$0")/lib/common.sh"

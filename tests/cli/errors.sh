@@ -23,6 +23,13 @@
 # Hostile inputs that cannot be committed (empty, binary, huge lines, directories,
 # missing files) are generated into a temporary directory below.
 #
+# ctest-shards: 4
+# ctest-cost: 120 (about the seconds of one shard under ASan: ctest -j starts them first)
+# Shards: `errors.sh CATENA K/N` runs the cases whose name hashes to K of N (ctest runs
+# cli_errors_1 .. cli_errors_N side by side, see CMakeLists.txt); without K/N, every case.
+# The JSON documents of a run are checked together by one python3 at the end; each case
+# is then counted and reported (FAIL NAME, MODE: what failed) in the order it ran.
+#
 # Run from the repository root (ctest does). Prints "N passed, N failed"; exit 1 on any
 # failure.
 set -u
@@ -30,6 +37,30 @@ set -u
 . "$(dirname "$0")/lib/common.sh"
 cli_init errors "${1:-}"
 [ -d tests/errors ] || { echo "errors.sh: no tests/errors directory" >&2; exit 1; }
+cli_shard errors "${2:-}" || exit 1
+
+# mine NAME: the case NAME belongs to this shard (a hash of its name, modulo N).
+mine() {
+    local s=$1 h=5381 i c
+    [ "$SHARD_N" = 1 ] && return 0
+    for ((i = 0; i < ${#s}; i++)); do
+        printf -v c '%d' "'${s:i:1}"
+        h=$(((h * 33 + c) % 1000003))
+    done
+    [ $((h % SHARD_N + 1)) = "$SHARD_K" ]
+}
+
+# Cases are counted at the end, after the JSON checks: case_done NAME keeps the case's
+# WHY in $T/why/INDEX; json_check records a document for the one python3 run.
+CASES=()
+mkdir -p "$T/why" "$T/json" "$T/outdir"
+: >"$T/json_checks"
+case_done() {
+    case_stderr
+    [ ${#WHY[@]} -eq 0 ] || printf '%s\0' "${WHY[@]}" >"$T/why/${#CASES[@]}"
+    CASES+=("$1")
+    WHY=()
+}
 
 # json_converged FILE WANT: FILE is valid JSON with "converged": WANT (true|false).
 json_converged() {
@@ -50,72 +81,127 @@ EOF
         tr -d ' \t\r\n' <"$1" | grep -q "\"converged\":$2"
 }
 
+# json_check FILE WANT MESSAGE: FILE must be valid JSON with "converged": WANT, else the
+# current case fails with MESSAGE; with python3, checked at the end (check_all_json).
+json_check() {
+    if [ "$have_python" = 1 ]; then
+        printf '%s\t%s\t%s\t%s\n' "${#CASES[@]}" "$1" "$2" "$3" >>"$T/json_checks"
+    else
+        json_converged "$1" "$2" || WHY+=("$3")
+    fi
+}
+
+# check_all_json: one python3 for every recorded document; a failure joins its case's WHY.
+check_all_json() {
+    [ -s "$T/json_checks" ] || return 0
+    local out i msg
+    out=$(python3 - "$T/json_checks" 2>&1 <<'EOF'
+import json, sys
+for line in open(sys.argv[1], encoding="utf-8"):
+    index, path, want, msg = line.rstrip("\n").split("\t", 3)
+    try:
+        d = json.load(open(path))
+        ok = d.get("converged") is (want == "true") and isinstance(d.get("reason"), str)
+    except Exception:
+        ok = False
+    if not ok:
+        print(index + "\t" + msg)
+EOF
+    ) || { WHY+=("the JSON checker failed: $out"); case_done json_checker; return; }
+    while IFS=$'\t' read -r i msg; do
+        [ -n "$i" ] && printf '%s\0' "$msg" >>"$T/why/$i"
+    done <<<"$out"
+}
+
 # describe RC: "exit RC" plus a hint for signals.
 describe() {
     if [ "$1" -ge 128 ]; then echo "exit $1 (killed by signal $(($1 - 128)): a crash)"; else echo "exit $1"; fi
 }
 
-# sanitizer_report ERRFILE MODE: a sanitizer finding is always a failure.
+# sanitizer_report ERRFILE MODE: a sanitizer finding is always a failure. The stderr
+# files of a case (one per mode) are searched together when it is done (case_stderr).
+ERRS=()
+LONG=()
 sanitizer_report() {
-    if grep -qE 'AddressSanitizer|LeakSanitizer|runtime error:|UndefinedBehaviorSanitizer' "$1"; then
-        WHY+=("$2: sanitizer report: $(grep -m1 -E 'Sanitizer|runtime error' "$1")")
+    ERRS+=("$1" "$2")
+}
+
+# case_stderr: the sanitizer search of sanitizer_report, and each message of check_plain
+# bounded to 2048 bytes, for all modes of the case in one grep and one find.
+case_stderr() {
+    local files=() i f len
+    for ((i = 0; i < ${#ERRS[@]}; i += 2)); do files+=("${ERRS[i]}"); done
+    if [ ${#files[@]} -gt 0 ]; then
+        local hits
+        hits=$(grep -lE 'AddressSanitizer|LeakSanitizer|runtime error:|UndefinedBehaviorSanitizer' "${files[@]}")
+        for ((i = 0; i < ${#ERRS[@]}; i += 2)); do
+            f=${ERRS[i]}
+            [[ $'\n'$hits$'\n' == *$'\n'"$f"$'\n'* ]] &&
+                WHY+=("${ERRS[i + 1]}: sanitizer report: $(grep -m1 -E 'Sanitizer|runtime error' "$f")")
+        done
     fi
+    if [ ${#LONG[@]} -gt 0 ]; then
+        while IFS= read -r f; do
+            [ -n "$f" ] || continue
+            len=$(wc -c <"$f")
+            WHY+=("${f##*/err.}: message of $len bytes (hostile input echoed unbounded?)")
+        done <<<"$(find "${LONG[@]}" -maxdepth 0 -size +2048c)"
+    fi
+    ERRS=()
+    LONG=()
 }
 
 # check_plain PATH CODE SUBSTRING MODE
 check_plain() {
-    local path=$1 code=$2 want=$3 mode=$4 rc
-    "$BIN" solve "$path" >"$T/out" 2>"$T/err"
+    local path=$1 code=$2 want=$3 mode=$4 rc err=$T/err.$4
+    "$BIN" solve "$path" >"$T/out" 2>"$err"
     rc=$?
-    sanitizer_report "$T/err" "$mode"
+    sanitizer_report "$err" "$mode"
     if [ "$rc" != "$code" ]; then
-        WHY+=("$mode: expected exit $code, got $(describe "$rc"); stderr: $(head -c 300 "$T/err")")
+        WHY+=("$mode: expected exit $code, got $(describe "$rc"); stderr: $(head -c 300 "$err")")
         return
     fi
     if [ -z "$want" ]; then
-        [ -s "$T/err" ] && WHY+=("$mode: expected an empty stderr, got: $(head -c 300 "$T/err")")
+        [ -s "$err" ] && WHY+=("$mode: expected an empty stderr, got: $(head -c 300 "$err")")
     else
         local rest=$want piece
         while [ -n "$rest" ]; do
             piece=${rest%% ... *}
             if [ "$piece" = "$rest" ]; then rest=; else rest=${rest#* ... }; fi
-            grep -qF -- "$piece" "$T/err" ||
-                WHY+=("$mode: stderr lacks '$piece'; it is: $(head -c 300 "$T/err")")
+            grep -qF -- "$piece" "$err" ||
+                WHY+=("$mode: stderr lacks '$piece'; it is: $(head -c 300 "$err")")
         done
-        [ "$code" = 0 ] || head -c 8 "$T/err" | grep -q '^catena: ' ||
+        local start=
+        [ "$code" = 0 ] || { LC_ALL=C IFS= read -r -d '' -n 8 start <"$err"; [ "$start" = "catena: " ]; } ||
             WHY+=("$mode: the message does not start with 'catena: '")
     fi
-    local len
-    len=$(wc -c <"$T/err")
-    [ "$len" -le 2048 ] || WHY+=("$mode: message of $len bytes (hostile input echoed unbounded?)")
+    LONG+=("$err")                                  # at most 2048 bytes (case_stderr)
 }
 
 # check_json PATH CODE
 check_json() {
     local path=$1 code=$2 rc
-    "$BIN" solve "$path" --json >"$T/json" 2>"$T/err"
+    local out=$T/json/${#CASES[@]}.json
+    "$BIN" solve "$path" --json >"$out" 2>"$T/err.json"
     rc=$?
-    sanitizer_report "$T/err" "--json"
+    sanitizer_report "$T/err.json" "--json"
     [ "$rc" = "$code" ] ||
-        WHY+=("--json: expected exit $code, got $(describe "$rc"); stderr: $(head -c 300 "$T/err")")
+        WHY+=("--json: expected exit $code, got $(describe "$rc"); stderr: $(head -c 300 "$T/err.json")")
     case $code in
-        0) json_converged "$T/json" true ||
-               WHY+=("--json: stdout is not valid JSON with \"converged\": true") ;;
-        3) json_converged "$T/json" false ||
-               WHY+=("--json: stdout is not valid JSON with \"converged\": false ($(wc -c <"$T/json") bytes)") ;;
-        *) [ -s "$T/json" ] && WHY+=("--json: stdout not empty on exit $code: $(head -c 200 "$T/json")") ;;
+        0) json_check "$out" true "--json: stdout is not valid JSON with \"converged\": true" ;;
+        3) json_check "$out" false "--json: stdout is not valid JSON with \"converged\": false ($(wc -c <"$out") bytes)" ;;
+        *) [ -s "$out" ] && WHY+=("--json: stdout not empty on exit $code: $(head -c 200 "$out")") ;;
     esac
 }
 
 # check_outdir PATH CODE NAME
 check_outdir() {
     local path=$1 code=$2 dir=$T/outdir/$3 rc
-    mkdir -p "$T/outdir"
-    "$BIN" solve "$path" -q -o "$dir" >/dev/null 2>"$T/err"
+    "$BIN" solve "$path" -q -o "$dir" >/dev/null 2>"$T/err.o"
     rc=$?
-    sanitizer_report "$T/err" "-o"
+    sanitizer_report "$T/err.o" "-o"
     [ "$rc" = "$code" ] ||
-        WHY+=("-o: expected exit $code, got $(describe "$rc"); stderr: $(head -c 300 "$T/err")")
+        WHY+=("-o: expected exit $code, got $(describe "$rc"); stderr: $(head -c 300 "$T/err.o")")
     if [ -d "$dir" ]; then
         local stray
         stray=$(find "$dir" -mindepth 1 ! -name result.json ! -name nodes.csv ! -name elements.csv \
@@ -133,8 +219,8 @@ check_outdir() {
             if [ "$code" = 0 ] || [ "$n" != 0 ]; then     # exit 3 may write all or nothing
                 [ "$n" = 4 ] || WHY+=("-o: expected result.json, nodes.csv, elements.csv, result.vtu; found: $(ls -A "$dir" 2>/dev/null | tr '\n' ' ')")
             fi
-            [ -s "$dir/result.json" ] && { json_converged "$dir/result.json" "$want" ||
-                WHY+=("-o: result.json is not valid JSON with \"converged\": $want"); }
+            [ -s "$dir/result.json" ] &&
+                json_check "$dir/result.json" "$want" "-o: result.json is not valid JSON with \"converged\": $want"
             [ -s "$dir/nodes.csv" ] && { head -n 1 "$dir/nodes.csv" | grep -q '^id,x,y,z,ux,uy,uz,fix,rx,ry,rz' ||
                 WHY+=("-o: nodes.csv header"); }
             [ -s "$dir/elements.csv" ] && { head -n 1 "$dir/elements.csv" | grep -q '^id,node1,node2,l0,length,strain,force,stress' ||
@@ -149,27 +235,33 @@ check_outdir() {
 }
 
 
-# run_case NAME PATH CODE SUBSTRING [all]: plain (+ --json and -o with "all").
+# run_case NAME PATH CODE SUBSTRING [all]: plain (+ --json and -o with "all"), if the
+# case is this shard's.
 run_case() {
     local name=$1 path=$2 code=$3 want=${4//FILE/$2}
+    mine "$name" || return 0
     check_plain "$path" "$code" "$want" plain
     if [ "${5:-}" = all ]; then
         check_json "$path" "$code"
         check_outdir "$path" "$code" "$name"
     fi
-    finish "$name"
+    case_done "$name"
 }
 
 # ---- the committed corpus -------------------------------------------------------------
 mkdir -p "$T/crlf" "$T/cr"
 ncorpus=0
 for f in tests/errors/*.cable; do
-    name=$(basename "$f" .cable)
+    name=${f##*/}
+    name=${name%.cable}
     ncorpus=$((ncorpus + 1))
-    header=$(head -n 1 "$f" | tr -d '\r')
+    mine "$name" || continue
+    header=
+    IFS= read -r header <"$f"
+    header=${header//$'\r'/}
     if ! [[ $header =~ ^#\ expect:\ ([0-9]+):\ ?(.*)$ ]]; then
         WHY+=("corpus: first line is not '# expect: CODE: SUBSTRING': $header")
-        finish "$name"
+        case_done "$name"
         continue
     fi
     code=${BASH_REMATCH[1]}
@@ -177,7 +269,12 @@ for f in tests/errors/*.cable; do
     # The corpus itself: a FILE:N: expectation must point at a directive line.
     if [[ $want =~ FILE:([0-9]+): ]]; then
         n=${BASH_REMATCH[1]}
-        line=$(sed -n "${n}p" "$f" | tr -d '\r' | sed 's/#.*//; s/[[:space:]]//g')
+        line=()
+        mapfile -t -s $((n - 1)) -n 1 line <"$f"
+        line=${line[0]:-}
+        line=${line//$'\r'/}
+        line=${line%%#*}
+        line=${line//[[:space:]]/}
         [ -n "$line" ] || WHY+=("corpus: line $n of $f is blank or a comment")
     fi
     check_plain "$f" "$code" "${want//FILE/$f}" plain
@@ -191,17 +288,23 @@ for f in tests/errors/*.cable; do
     c=$T/cr/$name.cable
     sed 's/\r*$//' "$f" | tr '\n' '\r' >"$c"
     check_plain "$c" "$code" "${want//FILE/$c}" CR
-    finish "$name"
+    case_done "$name"
 done
-[ "$ncorpus" -ge 45 ] || { WHY+=("only $ncorpus corpus files (at least 45 expected)"); finish corpus_size; }
+if mine corpus_size && [ "$ncorpus" -lt 45 ]; then
+    WHY+=("only $ncorpus corpus files (at least 45 expected)")
+    case_done corpus_size
+fi
 
 # The committed CRLF case must really have CRLF endings (an editor or git may strip them).
-if ! grep -q $'\r$' tests/errors/ok_crlf.cable; then
-    WHY+=("tests/errors/ok_crlf.cable lost its CRLF line endings")
+if mine ok_crlf_has_cr; then
+    if ! grep -q $'\r$' tests/errors/ok_crlf.cable; then
+        WHY+=("tests/errors/ok_crlf.cable lost its CRLF line endings")
+    fi
+    case_done ok_crlf_has_cr
 fi
-finish ok_crlf_has_cr
 
 # ---- generated hostile inputs ---------------------------------------------------------
+# (every shard writes them, a few MB; each runs in its own shard)
 G=$T/gen
 mkdir -p "$G"
 PAPER='units kN m
@@ -234,7 +337,8 @@ seed=12345
 esc=''
 for ((i = 0; i < 4096; i++)); do
     seed=$(((seed * 1103515245 + 12345) % 2147483648))
-    esc+=$(printf '\\%03o' $(((seed >> 16) & 255)))
+    printf -v byte '\\%03o' $(((seed >> 16) & 255))
+    esc+=$byte
 done
 printf "$esc" >"$G/random.cable"
 run_case gen_binary_random "$G/random.cable" 2 "FILE:" all
@@ -288,11 +392,13 @@ run_case gen_mixed_line_ends "$G/mixed_ends.cable" 2 "FILE:6: unknown directive 
 # A CR-only copy of a model solves to the same answer (same JSON, byte for byte).
 printf '%s\n' "$PAPER" >"$G/lf.cable"
 printf '%s\n' "$PAPER" | tr '\n' '\r' >"$G/cr.cable"
-"$BIN" solve "$G/lf.cable" --json >"$T/lf.json" 2>"$T/err" || WHY+=("LF copy: exit $?: $(head -c 300 "$T/err")")
-"$BIN" solve "$G/cr.cable" --json >"$T/cr.json" 2>"$T/err" || WHY+=("CR copy: exit $?: $(head -c 300 "$T/err")")
-cmp -s "$T/lf.json" "$T/cr.json" || WHY+=("the CR-only copy gives another answer than the LF file")
-grep -q '"converged":[[:space:]]*true' "$T/cr.json" || WHY+=("the CR-only copy did not converge")
-finish gen_cr_only_same_answer
+if mine gen_cr_only_same_answer; then
+    "$BIN" solve "$G/lf.cable" --json >"$T/lf.json" 2>"$T/err" || WHY+=("LF copy: exit $?: $(head -c 300 "$T/err")")
+    "$BIN" solve "$G/cr.cable" --json >"$T/cr.json" 2>"$T/err" || WHY+=("CR copy: exit $?: $(head -c 300 "$T/err")")
+    cmp -s "$T/lf.json" "$T/cr.json" || WHY+=("the CR-only copy gives another answer than the LF file")
+    grep -q '"converged":[[:space:]]*true' "$T/cr.json" || WHY+=("the CR-only copy did not converge")
+    case_done gen_cr_only_same_answer
+fi
 
 mkdir -p "$G/a_directory.cable"
 run_case gen_directory_as_model "$G/a_directory.cable" 4 "FILE: " all
@@ -301,22 +407,33 @@ run_case gen_missing_file "$G/no_such_file.cable" 4 "FILE: cannot open" all
 
 # ---- output that cannot be written: exit 4 and nothing half-written -------------------
 printf '%s\n' "$PAPER" >"$G/paper.cable"
-dir=$T/blocked
-mkdir -p "$dir/elements.csv"                       # a directory where a file must go
-"$BIN" solve "$G/paper.cable" -q -o "$dir" >/dev/null 2>"$T/err"
-rc=$?
-[ "$rc" = 4 ] || WHY+=("expected exit 4 when elements.csv cannot be written, got $(describe "$rc")")
-grep -qF "elements.csv" "$T/err" || WHY+=("the message does not name elements.csv: $(cat "$T/err")")
-stray=$(find "$dir" -mindepth 1 -name '*tmp*')
-[ -z "$stray" ] || WHY+=("temporary files left behind: $stray")
-[ -e "$dir/result.json" ] && WHY+=("result.json written although elements.csv failed")
-finish gen_output_blocked
+if mine gen_output_blocked; then
+    dir=$T/blocked
+    mkdir -p "$dir/elements.csv"                   # a directory where a file must go
+    "$BIN" solve "$G/paper.cable" -q -o "$dir" >/dev/null 2>"$T/err"
+    rc=$?
+    [ "$rc" = 4 ] || WHY+=("expected exit 4 when elements.csv cannot be written, got $(describe "$rc")")
+    grep -qF "elements.csv" "$T/err" || WHY+=("the message does not name elements.csv: $(cat "$T/err")")
+    stray=$(find "$dir" -mindepth 1 -name '*tmp*')
+    [ -z "$stray" ] || WHY+=("temporary files left behind: $stray")
+    [ -e "$dir/result.json" ] && WHY+=("result.json written although elements.csv failed")
+    case_done gen_output_blocked
+fi
 
-touch "$T/plainfile"
-"$BIN" solve "$G/paper.cable" -q -o "$T/plainfile/sub" >/dev/null 2>"$T/err"
-rc=$?
-[ "$rc" = 4 ] || WHY+=("expected exit 4 for an output directory under a regular file, got $(describe "$rc")")
-grep -qF "$T/plainfile/sub" "$T/err" || WHY+=("the message does not name the directory: $(cat "$T/err")")
-finish gen_output_under_file
+if mine gen_output_under_file; then
+    touch "$T/plainfile"
+    "$BIN" solve "$G/paper.cable" -q -o "$T/plainfile/sub" >/dev/null 2>"$T/err"
+    rc=$?
+    [ "$rc" = 4 ] || WHY+=("expected exit 4 for an output directory under a regular file, got $(describe "$rc")")
+    grep -qF "$T/plainfile/sub" "$T/err" || WHY+=("the message does not name the directory: $(cat "$T/err")")
+    case_done gen_output_under_file
+fi
 
+# ---- the JSON documents, then every case in the order it ran ---------------------------
+check_all_json
+for i in "${!CASES[@]}"; do
+    WHY=()
+    [ -f "$T/why/$i" ] && mapfile -d '' WHY <"$T/why/$i"
+    finish "${CASES[i]}"
+done
 cli_summary

@@ -12,6 +12,7 @@
 #   - the ```cable-formfind blocks of docs/format.md: found, and the found model solved;
 #   - usage errors (exit 1), an output that cannot be written (exit 4), --help, and the
 #     note of `catena solve` on a model with q=.
+# ctest-cost: 40 (about the seconds it takes under ASan: ctest -j starts it early)
 set -u
 
 . "$(dirname "$0")/lib/common.sh"

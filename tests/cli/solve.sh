@@ -11,6 +11,7 @@
 #   - every complete model (```cable block) of docs/format.md gives its exit code.
 # Run from the repository root (ctest does). Prints "N passed, N failed"; exit 1 on any
 # failure.
+# ctest-cost: 110 (about the seconds it takes under ASan: ctest -j starts it early)
 set -u
 
 . "$(dirname "$0")/lib/common.sh"

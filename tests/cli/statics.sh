@@ -16,11 +16,16 @@
 #   arclength              the arc-length end point at lambda against the closed form;
 # and in every solved model the equilibrium recomputed from the printed forces and
 # positions (converged means balanced). Skipped (passing) without python3.
+# ctest-shards: 3
+# ctest-cost: 50 (one shard under ASan, about)
+# `statics.sh CATENA K/N` runs cases K, K + N, K + 2N, ... of the list below (ctest runs
+# cli_statics_1 .. cli_statics_3 side by side); without K/N, all of them.
 # Prints "N passed, N failed"; exit 1 on any failure.
 set -u
 
 . "$(dirname "$0")/lib/common.sh"
 cli_init statics "${1:-}"
+cli_shard statics "${2:-}" || exit 1
 
 if [ "$have_python" = 0 ]; then
     echo "statics.sh: no python3: skipped"
@@ -28,7 +33,10 @@ if [ "$have_python" = 0 ]; then
     exit $?
 fi
 
+i=0
 for c in catenary point_load parabola prestress_temperature steps springs_reactions arclength; do
+    i=$((i + 1))
+    [ $(((i - 1) % SHARD_N + 1)) = "$SHARD_K" ] || continue
     out=$(python3 tests/cli/lib/statics_check.py "$BIN" "$c" 2>&1) || WHY+=("$out")
     finish "$c"
 done

@@ -12,6 +12,7 @@
 #   - convergence: the observed orders are 2 +- 0.1 (--json), -o writes the figure's
 #     script and data, bad --n exits 1.
 # Prints "N passed, N failed"; exit 1 on any failure.
+# ctest-cost: 45 (about the seconds it takes under ASan: ctest -j starts it early)
 set -u
 
 . "$(dirname "$0")/lib/common.sh"

@@ -4,6 +4,8 @@
 #   WHY+=("...")           record a problem in the current case
 #   finish CASE            count the case: passed if WHY is empty, else print why
 #   cli_summary            print "N passed, N failed" (and the failed names); status
+#   cli_shard NAME K/N     set SHARD_K, SHARD_N (1/1 without K/N) for a script that ctest
+#                          runs as N tests ("# ctest-shards: N", CMakeLists.txt)
 
 cli_init() {
     local name=$1
@@ -42,4 +44,15 @@ cli_summary() {
     [ "$FAIL" -eq 0 ] && return 0
     echo "failed: ${FAILED_NAMES[*]}"
     return 1
+}
+
+cli_shard() {
+    local spec=${2:-1/1}
+    if ! [[ $spec =~ ^([0-9]+)/([0-9]+)$ ]] || [ "${BASH_REMATCH[1]}" -lt 1 ] ||
+        [ "${BASH_REMATCH[1]}" -gt "${BASH_REMATCH[2]}" ]; then
+        echo "$1.sh: shard '$spec' is not K/N with 1 <= K <= N" >&2
+        return 1
+    fi
+    SHARD_K=${BASH_REMATCH[1]}
+    SHARD_N=${BASH_REMATCH[2]}
 }
