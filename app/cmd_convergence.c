@@ -132,6 +132,7 @@ int ctn_cmd_convergence(int argc, char **argv)
     }
     ctn_solve_options opt;
     int rc = ctn_read_file(ctx, a.model, &m, &opt), code = CTN_EXIT_OK;
+    if (!rc) rc = ctn_model_resolve_targets(ctx, m, &opt, NULL);       /* sag=, H=, tension= */
     if (!rc) rc = ctn_convergence_run(ctx, m, &opt, a.n, a.count, &c);
     if (rc) code = ctn_app_fail_model(ctx, rc, a.model);
     if (!code && a.outdir && (rc = ctn_convergence_write_figures(ctx, c, a.outdir))) code = ctn_app_fail(ctx, rc);

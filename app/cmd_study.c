@@ -102,6 +102,7 @@ static int read_models(ctn_ctx *ctx, study_args *a, ctn_model **base, ctn_span *
         ctn_solve_options opt;
         int rc = ctn_read_file(ctx, a->model[i], &m, &opt), code = CTN_EXIT_OK;
         if (!rc && i == 0) a->solve = opt;
+        if (!rc) rc = ctn_model_resolve_targets(ctx, m, &opt, NULL);   /* sag=, H=, tension= */
         if (!rc) rc = ctn_compare_create(ctx, m, &c);
         if (rc) code = ctn_app_fail_model(ctx, rc, a->model[i]);
         else if (i == 0) *span = *ctn_compare_span(c);

@@ -328,12 +328,39 @@ static void test_alloc_failures(void)
     CHECK_MSG(ok && nomem > 10, "ok %d, %d allocation failures", ok, nomem);
 }
 
+/* The comparisons read a span's length: before the targets are resolved they refuse
+ * the model as the solve does, naming the cable's line; after, they take the length found. */
+static void test_compare_waits_for_targets(void)
+{
+    const char *text = "units kN m\nmaterial steel E=2.0e8\nsection strand material=steel A=3.14e-4 w=0.1\n"
+                       "gravity 0 -1 0\nnode 1 0 0 0 fix=xyz\nnode 2 200 0 0 fix=xyz\n"
+                       "cable 1 2 section=strand n=20 sag=5\n";
+    ctn_ctx *ctx = NULL;
+    ctn_model *m = NULL;
+    ctn_compare *c = NULL;
+    ctn_solve_options opt;
+    ctn_ctx_create(&ctx);
+    CHECK(ctn_read_string(ctx, "sag.cable", text, strlen(text), &m, &opt) == CTN_OK);
+    CHECK(ctn_compare_create(ctx, m, &c) == CTN_ERR_INVALID && !c);
+    CHECK_MSG(strstr(ctn_ctx_message(ctx), "sag.cable:7: cable 1-2 is set by a target: find its length first"), "%s",
+              ctn_ctx_message(ctx));
+    CHECK(ctn_model_resolve_targets(ctx, m, &opt, NULL) == CTN_OK);
+    ctn_cable_info ci;
+    CHECK(ctn_model_cable(m, 0, &ci) == CTN_OK);
+    CHECK(ctn_compare_create(ctx, m, &c) == CTN_OK);
+    if (c) CHECK_CLOSE(ctn_compare_span(c)->L0, ci.length, 1e-15, 0);
+    ctn_compare_destroy(&c);
+    ctn_model_destroy(&m);
+    ctn_ctx_destroy(&ctx);
+}
+
 int main(void)
 {
     test_spans();
     test_guyed();
     test_group_length();
     test_errors();
+    test_compare_waits_for_targets();
     test_alloc_failures();
     CHECK_DONE();
 }

@@ -86,8 +86,9 @@ typedef struct ctn_cable_spec {
                                  chord instead of length / n (default none) */
     double prestress_value;
     const char *group;   /* every element joins this group (NULL: none) */
-    ctn_cable_target target;  /* instead of `length`: the length is found to meet it
-                                 (ctn_model_resolve_targets, or the solve) */
+    ctn_cable_target target;  /* instead of `length`: the length is found to meet it by
+                                 ctn_model_resolve_targets, which must run before the
+                                 model is solved or compared (they refuse it until then) */
     double target_value;      /* H [force], sag [length] or tension [force] */
 } ctn_cable_spec;
 

@@ -46,6 +46,7 @@ int ctn_compare_create(ctn_ctx *ctx, const ctn_model *m, ctn_compare **out)
     units(&c->span, m);
     for (size_t h = 0; h < m->hloads.n; h++) c->follow |= !m->hloads.v[h].reference;
     int rc = ctn_model_validate(m);                 /* file:line messages for bad models */
+    if (!rc) rc = ctn_model_targets_found(ctx, m);  /* a target's length is found first */
     if (!rc) rc = ctn_cmp_find_span(c, m);
     if (!rc && c->span.n == 1 && ctn_element_family(m->elements.v[c->elem[0]].type) == &ctn_catenary2_ops) {
         c->catenary = 1;                            /* one catenary element */

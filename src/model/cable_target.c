@@ -60,3 +60,22 @@ int ctn_cable_target_check(const ctn_model *m, const char *what, const ctn_cable
     *length = isfinite(L) && L > floor ? L : floor;
     return CTN_OK;
 }
+
+int ctn_model_targets_found(ctn_ctx *ctx, const ctn_model *m)
+{
+    for (size_t i = 0; i < m->cables.n; i++) {
+        const ctn_cable *c = &m->cables.v[i];
+        if (c->target != CTN_TARGET_NONE && !c->resolved)
+            return ctn_error_at(ctx, CTN_ERR_INVALID, m->file, c->line,
+                                "cable %d-%d is set by a target: find its length first (ctn_model_resolve_targets)",
+                                m->nodes.v[c->node[0]].id, m->nodes.v[c->node[1]].id);
+    }
+    for (size_t i = 0; i < m->etargets.n; i++) {
+        const ctn_cable *c = &m->etargets.v[i];
+        if (!c->resolved)
+            return ctn_error_at(ctx, CTN_ERR_INVALID, m->file, c->line,
+                                "catenary %d is set by a target: find its length first (ctn_model_resolve_targets)",
+                                m->elements.v[c->first].id);
+    }
+    return CTN_OK;
+}

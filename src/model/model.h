@@ -211,4 +211,10 @@ const ctn_density *ctn_model_density_of(const ctn_model *m, size_t e);
 /* Set it (inserted in order; CTN_ERR_NOMEM unless there is room: reserve first). */
 int ctn_model_put_density(ctn_model *m, size_t e, double q, double force);
 
+/* CTN_OK when every cable and catenary set by a target has had its length found
+ * (ctn_model_resolve_targets); else CTN_ERR_INVALID naming the first at its line: what
+ * reads a model's lengths (the problem, the comparisons and studies) refuses one that
+ * still holds placeholders. */
+int ctn_model_targets_found(ctn_ctx *ctx, const ctn_model *m);
+
 #endif

@@ -84,22 +84,6 @@ static int setup(ctn_problem *p)
     return CTN_OK;
 }
 
-/* A cable set by a target whose length has not been found yet, or NULL. */
-static const ctn_cable *unresolved(const ctn_model *m)
-{
-    for (size_t i = 0; i < m->cables.n; i++)
-        if (m->cables.v[i].target != CTN_TARGET_NONE && !m->cables.v[i].resolved) return &m->cables.v[i];
-    return NULL;
-}
-
-/* A catenary element set by a target whose length has not been found yet, or NULL. */
-static const ctn_cable *unresolved_element(const ctn_model *m)
-{
-    for (size_t i = 0; i < m->etargets.n; i++)
-        if (!m->etargets.v[i].resolved) return &m->etargets.v[i];
-    return NULL;
-}
-
 /* A modal analysis asked for in the options is checked before any solve: its count
  * and the model's mass (errors at the `modes` line). */
 static int modal_precheck(ctn_problem *p)
@@ -115,15 +99,8 @@ static int modal_precheck(ctn_problem *p)
 int ctn_problem_create(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options *opt,
                        ctn_problem **out)
 {
-    const ctn_cable *c = m ? unresolved(m) : NULL;
-    if (c)
-        return ctn_error_at(ctx, CTN_ERR_INVALID, m->file, c->line,
-                            "cable %d-%d is set by a target: find its length first (ctn_model_resolve_targets)",
-                            m->nodes.v[c->node[0]].id, m->nodes.v[c->node[1]].id);
-    if ((c = m ? unresolved_element(m) : NULL))
-        return ctn_error_at(ctx, CTN_ERR_INVALID, m->file, c->line,
-                            "catenary %d is set by a target: find its length first (ctn_model_resolve_targets)",
-                            m->elements.v[c->first].id);
+    int rc = m ? ctn_model_targets_found(ctx, m) : CTN_OK;
+    if (rc) return rc;
     return ctn_problem_create_any(ctx, m, opt, out);
 }
 
