@@ -47,6 +47,10 @@ int ctn_app_model_args(const char *cmd, int argc, char **argv, ctn_model_args *a
 
 /* Exit code for a failed library call, after printing its message to stderr. */
 int ctn_app_fail(ctn_ctx *ctx, int status);
+/* The command's context: as ctn_ctx_create, with no thread limit of its own (the
+ * library's default is none started; the command lets a file's threads= and the
+ * machine decide, docs/solver.md "Threads"). */
+int ctn_app_ctx_create(ctn_ctx **ctx);
 /* The same for a failure about the model read from path: the message is printed with
  * the "path:" prefix (added unless the library's message already starts with it). */
 int ctn_app_fail_model(ctn_ctx *ctx, int status, const char *path);

@@ -22,3 +22,9 @@ int ctn_app_model_args(const char *cmd, int argc, char **argv, ctn_model_args *a
     if (!a->model) fprintf(stderr, "usage: catena %s MODEL [--json] [-o DIR] [-q]\n", cmd);
     return a->model ? 0 : 1;
 }
+
+int ctn_app_ctx_create(ctn_ctx **ctx)
+{
+    int rc = ctn_ctx_create(ctx);
+    return rc ? rc : ctn_ctx_set_threads(*ctx, 0);
+}

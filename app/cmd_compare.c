@@ -86,7 +86,7 @@ int ctn_cmd_compare(int argc, char **argv)
     ctn_solution *s = NULL;
     ctn_compare *c = NULL;
     ctn_solve_summary sum;
-    if (ctn_ctx_create(&ctx)) {
+    if (ctn_app_ctx_create(&ctx)) {
         fprintf(stderr, "catena: out of memory\n");
         return CTN_EXIT_IO;
     }

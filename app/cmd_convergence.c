@@ -126,7 +126,7 @@ int ctn_cmd_convergence(int argc, char **argv)
     ctn_ctx *ctx = NULL;
     ctn_model *m = NULL;
     ctn_convergence *c = NULL;
-    if (ctn_ctx_create(&ctx)) {
+    if (ctn_app_ctx_create(&ctx)) {
         fprintf(stderr, "catena: out of memory\n");
         return CTN_EXIT_IO;
     }

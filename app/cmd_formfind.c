@@ -89,7 +89,7 @@ int ctn_cmd_formfind(int argc, char **argv)
     if (parse_args(argc, argv, &a)) return CTN_EXIT_USAGE;
     ctn_ctx *ctx = NULL;
     ctn_model *m = NULL;
-    if (ctn_ctx_create(&ctx)) {
+    if (ctn_app_ctx_create(&ctx)) {
         fprintf(stderr, "catena: out of memory\n");
         return CTN_EXIT_IO;
     }

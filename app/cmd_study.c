@@ -138,7 +138,7 @@ int ctn_cmd_study(int argc, char **argv)
     ctn_study *st = NULL;
     ctn_span span;
     memset(&span, 0, sizeof span);
-    if (ctn_ctx_create(&ctx)) {
+    if (ctn_app_ctx_create(&ctx)) {
         fprintf(stderr, "catena: out of memory\n");
         return CTN_EXIT_IO;
     }

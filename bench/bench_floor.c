@@ -116,7 +116,7 @@ static int assemble_factor(ctn_asm *a, ctn_linsolve *ls, const double *d, double
                            ctn_factor_info *info, double *t_as)
 {
     ctn_overlap o;
-    if (overlap && ctn_overlap_possible(a, ls) && ctn_overlap_start(&o, ls, Kx, 0.0)) {
+    if (overlap && ctn_overlap_possible(a, ls) && ctn_overlap_start(&o, a, ls, Kx, 0.0)) {
         double t0 = now();
         int collapsed = ctn_overlap_assemble(&o, a, d, 0, f, Kx, NULL, NULL);
         *t_as = now() - t0;

@@ -60,7 +60,8 @@ typedef struct ctn_asm_gather {
     int *adj_ptr, *adj;                /* node adjacency (self included, sorted): CSR */
     int maxdeg;                        /* most axial elements at one node */
     int maxadj;                        /* most neighbours of one node (self included) */
-    int threads;                       /* 1, or 2: the nodes in two halves */
+    ctn_ctx *ctx;                      /* the context it was built in: its helper thread */
+    int threads;                       /* 1, or 2: the nodes in two halves (core/threads.h) */
     double *work;                      /* per thread (maxdeg + maxadj) * 6 on its own cache
                                           lines: a node's elements' k, its neighbours' blocks */
     double *X;                         /* nn * 3: the nodes' reference coordinates, copied

@@ -16,6 +16,10 @@ struct ctn_ctx {
     long model_limit;        /* most nodes / elements in a model, 0 = no limit */
     ctn_progress_fn progress;/* ctn_ctx_set_progress: NULL = none */
     void *progress_data;
+    int threads;             /* ctn_ctx_set_threads: 1 (default) none started, 0 no limit */
+    int cpus;                /* the machine's CPUs online, asked once at creation */
+    struct ctn_thr_pool *pool;  /* the helper thread (core/threads.c), NULL until needed */
+    long thr_started;        /* threads started for this context (tests) */
 };
 
 /* Report progress through the context's callback, if any. */

@@ -169,6 +169,7 @@ int ctn_problem_solve(ctn_problem *p, ctn_solution **out)
     int rc = ctn_solution_create(p->ctx, p->m->nodes.n, p->m->elements.n, &s);
     if (rc) return rc;
     p->sum = &s->sum;
+    s->threads = p->opt.threads;
     s->sum.t_setup = p->t_setup;
     p->mode = 0;
     p->mech_node = p->mech_dir = -1;

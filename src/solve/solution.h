@@ -32,6 +32,8 @@ struct ctn_solution {
     double *rhist, *dhist;     /* residual and increment norms */
     size_t nr, nd, capr, capd;
     ctn_modes *modes;          /* the last modal analysis, NULL if none */
+    int threads;               /* the threads= option of the solve that made it (0 auto,
+                                  1, n): the writers ask the thread policy with it */
 };
 
 int ctn_solution_create(ctn_ctx *ctx, size_t nn, size_t ne, ctn_solution **out);
