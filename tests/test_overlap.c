@@ -240,6 +240,7 @@ int main(void)
 {
     ctn_ctx *ctx = NULL;
     if (ctn_ctx_create(&ctx)) return 1;
+    ctn_ctx_set_threads(ctx, 2);                         /* the helper allowed */
     test_same_bits(ctx);
     test_not_followed(ctx);
     test_solve(ctx);

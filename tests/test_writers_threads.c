@@ -32,6 +32,7 @@ int main(void)
     ctn_solve_options opt;
     char base[64], one[96], two[96], lim_dir[96];
     ctn_ctx_create(&ctx);
+    ctn_ctx_set_threads(ctx, 2);                         /* the second thread allowed */
     snprintf(base, sizeof base, "/tmp/catena-wthreads.XXXXXX");
     CHECK(mkdtemp(base) != NULL);
     snprintf(one, sizeof one, "%s/one", base);

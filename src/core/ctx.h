@@ -20,6 +20,7 @@ struct ctn_ctx {
     int cpus;                /* the machine's CPUs online, asked once at creation */
     struct ctn_thr_pool *pool;  /* the helper thread (core/threads.c), NULL until needed */
     long thr_started;        /* threads started for this context (tests) */
+    int thr_any_size;        /* tests: 1 takes every site's size threshold as met */
 };
 
 /* Report progress through the context's callback, if any. */

@@ -27,7 +27,7 @@ static int limit(const ctn_ctx *ctx) { return ctx->threads > 0 ? ctx->threads : 
 int ctn_thr_allows(const ctn_ctx *ctx, int asked, ctn_thr_site site, double size)
 {
     if (!ctx || asked == 1 || limit(ctx) < 2 || ctx->cpus < 2) return 0;
-    return size >= threshold[site];
+    return size >= threshold[site] || ctx->thr_any_size;
 }
 
 int ctn_thr_openmp(const ctn_ctx *ctx, int asked)
