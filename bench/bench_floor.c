@@ -242,6 +242,7 @@ int main(int argc, char **argv)
     ctn_solution *s = NULL;
     ctn_asm *a = NULL;
     int rc = ctn_ctx_create(&ctx);
+    if (!rc) ctn_ctx_set_threads(ctx, 0);           /* as the catena command: no limit */
     if (!rc) rc = build_paper_cable(ctx, n, CTN_START_CATENARY, &m);
     if (!rc) rc = ctn_solve(ctx, m, NULL, &s);
     ctn_asm *a1 = NULL, *ag = NULL;                  /* one thread; the generic loop */

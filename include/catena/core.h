@@ -70,11 +70,13 @@ long ctn_ctx_model_limit(const ctn_ctx *ctx);
  *                    most n).
  *   0                no limit of the context's: the solve's threads= and the machine
  *                    decide (what the catena command sets).
- * The helper is one thread per context, started at the first work that uses it and
- * kept, idle, until ctn_ctx_destroy or ctn_ctx_set_threads(ctx, 1) joins it.
- * catena changes no process-wide setting for it (the OpenMP thread count it sets is
- * the calling thread's own, restored after each call; docs/solver.md, "Threads").
- * Returns CTN_ERR_INVALID for n < 0. */
+ * The helpers are at most two threads per context, each started at the first work that
+ * uses it and kept, asleep, until ctn_ctx_destroy or ctn_ctx_set_threads(ctx, 1) joins
+ * them; at most n - 1 of them work at once. catena changes no process-wide setting for
+ * its threads: the OpenMP thread count and thread limit it sets around a factorization
+ * are the calling thread's own, restored after each call (docs/solver.md, "Threads").
+ * One context is used by one thread at a time (its helpers are catena's business).
+ * Returns CTN_ERR_INVALID for n < 0 (or ctx NULL); ctn_ctx_threads: the setting. */
 int ctn_ctx_set_threads(ctn_ctx *ctx, int n);
 int ctn_ctx_threads(const ctn_ctx *ctx);
 
