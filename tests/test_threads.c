@@ -12,6 +12,7 @@
 #define _GNU_SOURCE                      /* RTLD_DEFAULT, mallinfo2 */
 #include "check.h"
 #include "files.h"
+#include "taut_chain.h"
 
 #include <catena.h>
 
@@ -78,15 +79,7 @@ static char *net_text(int k, const char *solve)
     return t;
 }
 
-static const char *chain_text =
-    "units kN m\n"
-    "material steel E=2.0e8\n"
-    "section strand material=steel A=3.14e-4 w=0.1\n"
-    "gravity 0 -1 0\n"
-    "node 1 0 0 0 fix=xyz\n"
-    "node 2 200 0 0 fix=xyz\n"
-    "cable 1 2 section=strand n=3000 length=200.3340\n"
-    "solve method=newton\n";
+static const char *chain_text = TAUT_CHAIN(3000) "solve method=newton\n";
 
 /* Solve a model text, write its results into dir: the status; the most threads seen
  * at an iteration into *most. */

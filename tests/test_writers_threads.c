@@ -5,6 +5,7 @@
  *     thread fails: CTN_ERR_IO with the write error, nothing committed, no temporary. */
 #include "check.h"
 #include "files.h"
+#include "taut_chain.h"
 
 #include <catena.h>
 
@@ -15,14 +16,7 @@
 #include <unistd.h>
 
 /* A taut cable of 100 000 elements: 200 001 nodes and elements, above the threshold. */
-static const char *model_text =
-    "units kN m\n"
-    "material steel E=2.0e8\n"
-    "section strand material=steel A=3.14e-4 w=0.1\n"
-    "gravity 0 -1 0\n"
-    "node 1 0 0 0 fix=xyz\n"
-    "node 2 200 0 0 fix=xyz\n"
-    "cable 1 2 section=strand n=100000 length=200.3340\n";
+static const char *model_text = TAUT_CHAIN(100000);
 
 int main(void)
 {

@@ -182,5 +182,8 @@ int ctn_asm_gather_eval(const ctn_asm *a, const double *d, unsigned mode, double
 int ctn_asm_can_feed(const ctn_asm *a);
 int ctn_asm_eval_feed(const ctn_asm *a, const double *d, unsigned mode, double *f, double *Kx, double *U,
                       size_t *bad, ctn_feed *feed);
+/* The threads= option the assembly was created under, as the thread policy is asked
+ * (core/threads.h): 1 (CTN_ASM_ONE_THREAD), or 0 (auto). */
+int ctn_asm_threads(const ctn_asm *a);
 
 #endif

@@ -147,8 +147,6 @@ static size_t work_stride(const ctn_asm_gather *g)
     return ((size_t)(g->maxdeg + g->maxadj) * 6 + 7) / 8 * 8 + 8;
 }
 
-/* The threads= option the assembly was created under: 1, or 0 (auto). */
-static int asked(const ctn_asm *a) { return (a->flags & CTN_ASM_ONE_THREAD) ? 1 : 0; }
 
 int ctn_asm_gather_build(ctn_ctx *ctx, ctn_asm *a, int **ptr, int **adj)
 {
@@ -171,7 +169,7 @@ int ctn_asm_gather_build(ctn_ctx *ctx, ctn_asm *a, int **ptr, int **adj)
     }
     if (!rc) rc = build_lists(ctx, a, g, ends);
     g->ctx = ctx;
-    g->threads = ctn_thr_allows(ctx, asked(a), CTN_THR_ASSEMBLY, (double)a->nn) ? 2 : 1;
+    g->threads = ctn_thr_allows(ctx, ctn_asm_threads(a), CTN_THR_ASSEMBLY, (double)a->nn) ? 2 : 1;
     for (size_t q = 0; q < a->nn; q++)                 /* most neighbours of a node */
         if ((*ptr)[q + 1] - (*ptr)[q] > g->maxadj) g->maxadj = (*ptr)[q + 1] - (*ptr)[q];
     g->work = rc ? NULL : ctn_malloc(ctx, (size_t)g->threads * work_stride(g), sizeof(double));
@@ -450,7 +448,7 @@ int ctn_asm_gather_eval(const ctn_asm *a, const double *d, unsigned mode, double
                         g->work + (size_t)i * work_stride(g), g->work + (size_t)i * work_stride(g) + (size_t)g->maxdeg * 6,
                         g->keep + (size_t)i * KEEP, 0.0, SIZE_MAX, NULL };
     }
-    if (np == 2) ctn_thr_both(g->ctx, asked(a), CTN_THR_ASSEMBLY, (double)a->nn, run_part, &pt[0], &pt[1]);
+    if (np == 2) ctn_thr_both(g->ctx, ctn_asm_threads(a), CTN_THR_ASSEMBLY, (double)a->nn, run_part, &pt[0], &pt[1]);
     else run_part(&pt[0]);
     *U = pt[0].U + (np == 2 ? pt[1].U : 0.0);
     *bad = np == 2 && pt[1].bad < pt[0].bad ? pt[1].bad : pt[0].bad;

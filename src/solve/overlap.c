@@ -17,13 +17,11 @@ static void factorize(void *arg)
     o->t_fac = ctn_clock() - t0;
 }
 
-/* The threads= option the assembly was created under: 1, or 0 (auto). */
-static int asked(const ctn_asm *a) { return (a->flags & CTN_ASM_ONE_THREAD) ? 1 : 0; }
 
 int ctn_overlap_possible(const ctn_asm *a, const ctn_linsolve *ls)
 {
     return ctn_asm_can_feed(a) && ctn_linsolve_feedable(ls) &&
-           ctn_thr_allows(a->gather->ctx, asked(a), CTN_THR_OVERLAP, (double)a->ndof);
+           ctn_thr_allows(a->gather->ctx, ctn_asm_threads(a), CTN_THR_OVERLAP, (double)a->ndof);
 }
 
 int ctn_overlap_start(ctn_overlap *o, const ctn_asm *a, ctn_linsolve *ls, const double *Kx, double shift)
@@ -38,7 +36,7 @@ int ctn_overlap_start(ctn_overlap *o, const ctn_asm *a, ctn_linsolve *ls, const 
     o->info = (ctn_factor_info){ 0, -1 };
     o->t_fac = 0;
     if (ctn_feed_init(&o->feed, ctn_linsolve_order(ls))) return 0;
-    o->ticket = ctn_thr_start(o->ctx, asked(a), CTN_THR_OVERLAP, (double)a->ndof, factorize, o);
+    o->ticket = ctn_thr_start(o->ctx, ctn_asm_threads(a), CTN_THR_OVERLAP, (double)a->ndof, factorize, o);
     if (!o->ticket) {
         ctn_feed_destroy(&o->feed);
         return 0;
