@@ -45,9 +45,12 @@ typedef struct ctn_model_args {
 } ctn_model_args;
 int ctn_app_model_args(const char *cmd, int argc, char **argv, ctn_model_args *a);
 
-/* SIGINT and SIGTERM noted instead of ending the process (signals.c), and a context
- * whose interrupt callback reads the note: the library stops at its next safe point
- * with CTN_ERR_INTERRUPTED, which ctn_app_fail turns into 128 + the signal (130, 143). */
+/* SIGINT and SIGTERM noted instead of ending the process (signals.c), and the command's
+ * context (ctn_app_ctx_create): no thread limit of its own (the library's default is
+ * none started; the command lets a file's threads= and the machine decide,
+ * docs/solver.md "Threads"), and an interrupt callback that reads the note: the library
+ * stops at its next safe point with CTN_ERR_INTERRUPTED, which ctn_app_fail turns into
+ * 128 + the signal (130, 143). */
 void ctn_app_signals_install(void);
 int ctn_app_ctx_create(ctn_ctx **ctx);
 int ctn_app_interrupt_code(void);

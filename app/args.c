@@ -22,3 +22,4 @@ int ctn_app_model_args(const char *cmd, int argc, char **argv, ctn_model_args *a
     if (!a->model) fprintf(stderr, "usage: catena %s MODEL [--json] [-o DIR] [-q]\n", cmd);
     return a->model ? 0 : 1;
 }
+

@@ -90,6 +90,7 @@ int main(int argc, char **argv)
     ctn_linsolve *ls = NULL;
     double *Kx = NULL, *B = NULL, *X = NULL, tf = 0, cf = 0;
     int rc = ctn_ctx_create(&ctx);
+    if (!rc) ctn_ctx_set_threads(ctx, 0);           /* as the catena command: no limit */
     if (!rc) rc = bench_tangent(ctx, path, &m, &a, &Kx);
     size_t n = a ? a->ndof : 0;
     if (!rc) {

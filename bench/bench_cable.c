@@ -489,6 +489,7 @@ int main(int argc, char **argv)
     if (parse_args(argc, argv, &o)) return usage();
     memset(&r, 0, sizeof r);
     int rc = ctn_ctx_create(&ctx);
+    if (!rc) ctn_ctx_set_threads(ctx, 0);           /* as the catena command: no limit */
     if (!rc) rc = run(ctx, &o, &r);
     if (rc) fprintf(stderr, "bench_cable: %s: %s\n", ctn_strerror(rc), ctn_ctx_message(ctx));
     else {

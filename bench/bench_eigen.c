@@ -128,6 +128,7 @@ int main(int argc, char **argv)
     memset(&B, 0, sizeof B);
     double *Kx = NULL, *Mx = NULL, la[1000], lb[1000];
     int rc = ctn_ctx_create(&ctx);
+    if (!rc) ctn_ctx_set_threads(ctx, 0);           /* as the catena command: no limit */
     if (!rc) rc = bench_tangent(ctx, argv[1], &m, &a, &Kx);
     if (!rc && !(Mx = calloc(a->nnz, sizeof *Mx))) rc = CTN_ERR_NOMEM;
     if (!rc) rc = ctn_asm_mass(ctx, a, 0, Mx);

@@ -116,7 +116,7 @@ static int assemble_factor(ctn_asm *a, ctn_linsolve *ls, const double *d, double
                            ctn_factor_info *info, double *t_as)
 {
     ctn_overlap o;
-    if (overlap && ctn_overlap_possible(a, ls) && ctn_overlap_start(&o, ls, Kx, 0.0)) {
+    if (overlap && ctn_overlap_possible(a, ls) && ctn_overlap_start(&o, a, ls, Kx, 0.0)) {
         double t0 = now();
         int collapsed = ctn_overlap_assemble(&o, a, d, 0, f, Kx, NULL, NULL);
         *t_as = now() - t0;
@@ -242,6 +242,7 @@ int main(int argc, char **argv)
     ctn_solution *s = NULL;
     ctn_asm *a = NULL;
     int rc = ctn_ctx_create(&ctx);
+    if (!rc) ctn_ctx_set_threads(ctx, 0);           /* as the catena command: no limit */
     if (!rc) rc = build_paper_cable(ctx, n, CTN_START_CATENARY, &m);
     if (!rc) rc = ctn_solve(ctx, m, NULL, &s);
     ctn_asm *a1 = NULL, *ag = NULL;                  /* one thread; the generic loop */

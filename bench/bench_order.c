@@ -24,6 +24,7 @@ int main(int argc, char **argv)
     ctn_model *m = NULL;
     ctn_asm *a = NULL;
     int n = 0, rc = ctn_ctx_create(&ctx);
+    if (!rc) ctn_ctx_set_threads(ctx, 0);           /* as the catena command: no limit */
     if (argc == 3 && !strcmp(argv[1], "--cable") && !parse_count(argv[2], 2, 100000000, &n))
         rc = rc ? rc : build_paper_cable(ctx, n, CTN_START_CATENARY, &m);
     else if (argc == 2) rc = rc ? rc : ctn_read_file(ctx, argv[1], &m, NULL);

@@ -136,6 +136,7 @@ int main(int argc, char **argv)
     cholmod_l_start(&s[1].cm);
     double *Kx = NULL, *B = NULL, *X = NULL, *X1 = NULL, tf = 0;
     int rc = ctn_ctx_create(&ctx);
+    if (!rc) ctn_ctx_set_threads(ctx, 0);           /* as the catena command: no limit */
     if (!rc) rc = bench_tangent(ctx, path, &m, &a, &Kx);
     size_t n = a ? a->ndof : 0, nb = n * (size_t)kmax;
     if (!rc) {

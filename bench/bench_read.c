@@ -52,6 +52,7 @@ static int run_once(const char *path, int no_setup, double *wall, double *cpu, s
     ctn_linsolve *ls = NULL;
     ctn_solve_options opt;
     if (ctn_ctx_create(&ctx)) return 2;
+    ctn_ctx_set_threads(ctx, 0);                  /* as the catena command: no limit */
     double t[NPHASES + 1], c[NPHASES + 1];
     t[0] = now(), c[0] = cpu_now();
     int rc = ctn_read_file(ctx, path, &m, &opt);

@@ -19,6 +19,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The context's helpers allowed, at any order (the two-thread runs are forced). */
+static void two_threads(ctn_ctx *ctx)
+{
+    if (!ctx) return;
+    ctn_ctx_set_threads(ctx, 2);
+    ctx->thr_any_size = 1;
+}
+
 void dpbtrf_(const char *uplo, const int *n, const int *kd, double *ab, const int *ldab, int *info, size_t lu);
 void dpbtrs_(const char *uplo, const int *n, const int *kd, const int *nrhs, const double *ab, const int *ldab,
              double *b, const int *ldb, int *info, size_t lu);
@@ -216,6 +224,7 @@ static void one_and_two(int n1, int n2, int nev, int restarts)
     ctn_eigen_info info[2];
     ctn_ctx *ctx = NULL;
     CHECK(nev <= 64 && !pencil_make(&p, n1, n2) && !exact_eigenvalues(&p, nev, exact) && !ctn_ctx_create(&ctx));
+    two_threads(ctx);
     const int n = p.n;
     for (int t = 0; t < 2; t++) {
         ctn_eigen_ops ops = pencil_ops(&p, t + 1);
@@ -253,6 +262,7 @@ static void alloc_failures(void)
         double *V = NULL;
         ctn_eigen_info info;
         ctn_ctx_create(&ctx);
+        two_threads(ctx);
         ctn_ctx_fail_alloc_at(ctx, k);
         int rc = ctn_eigen_block(ctx, p.n, 8, 0.0, &ops, lam, &V, &info);
         CHECK(rc == CTN_OK || rc == CTN_ERR_NOMEM);

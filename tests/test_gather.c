@@ -288,6 +288,7 @@ int main(void)
 {
     ctn_ctx *ctx = NULL;
     ctn_ctx_create(&ctx);
+    ctn_ctx_set_threads(ctx, 2);                         /* the two halves allowed */
     test_models(ctx);
     test_collapse(ctx);
     test_axial_ops(ctx);

@@ -125,7 +125,7 @@ static void test_same_bits(ctn_ctx *ctx)
 
     ctn_overlap o;                                    /* started, then not wanted */
     for (int k = 0; k < 3; k++) {
-        CHECK(ctn_overlap_start(&o, r.ovl, r.K2, 0.0));
+        CHECK(ctn_overlap_start(&o, r.a, r.ovl, r.K2, 0.0));
         if (k > 0) CHECK(!ctn_overlap_assemble(&o, r.a, r.d, 0, r.f2, r.K2, NULL, NULL));
         if (k == 2) ctn_feed_publish(&o.feed, r.a->ndof / 2);
         ctn_overlap_abandon(&o);
@@ -240,6 +240,7 @@ int main(void)
 {
     ctn_ctx *ctx = NULL;
     if (ctn_ctx_create(&ctx)) return 1;
+    ctn_ctx_set_threads(ctx, 2);                         /* the helper allowed */
     test_same_bits(ctx);
     test_not_followed(ctx);
     test_solve(ctx);

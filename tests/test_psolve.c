@@ -212,6 +212,7 @@ static void compare(const char *name, cholmod_sparse *A, int metis, int expect_p
     ctn_ctx *ctx = NULL;
     ctn_psolve *p = NULL;
     CHECK(ctn_ctx_create(&ctx) == CTN_OK);
+    ctn_ctx_set_threads(ctx, 2);                         /* the helper allowed */
     CHECK(ctn_psolve_create(ctx, L, &p) == CTN_OK);
     CHECK_MSG(!expect_plan || p, "%s: a plan (%zu supernodes)", name, L->nsuper);
     double kappa = condition(A, L, cm, 200), an = anorm2(A, cm), worst = 0;
@@ -270,6 +271,7 @@ static void alloc_failures(cholmod_sparse *A, cholmod_common *cm)
         ctn_ctx *ctx = NULL;
         ctn_psolve *p = NULL;
         ctn_ctx_create(&ctx);
+        ctn_ctx_set_threads(ctx, 2);
         ctn_ctx_fail_alloc_at(ctx, k);
         int rc = ctn_psolve_create(ctx, L, &p);
         CHECK(rc == CTN_OK || (rc == CTN_ERR_NOMEM && !p));
@@ -305,6 +307,7 @@ static void backend(cholmod_common *cm)
     ctn_linsolve *ls = NULL;
     ctn_factor_info info = { 0, -1 };
     CHECK(colptr && rowind && B && X && S && S2 && T && ctn_ctx_create(&ctx) == CTN_OK);
+    ctn_ctx_set_threads(ctx, 2);
     for (size_t j = 0; colptr && rowind && j <= n; j++) colptr[j] = (int)((SuiteSparse_long *)A->p)[j];
     for (size_t q = 0; colptr && rowind && q < nnz; q++) rowind[q] = (int)((SuiteSparse_long *)A->i)[q];
     for (size_t i = 0; B && i < 4 * n; i++) B[i] = cos(0.3 * (double)i);

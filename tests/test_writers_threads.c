@@ -6,6 +6,7 @@
 /* ctest-cost: 20 (about the seconds it takes under ASan: ctest -j starts it early) */
 #include "check.h"
 #include "files.h"
+#include "taut_chain.h"
 
 #include <catena.h>
 
@@ -16,14 +17,7 @@
 #include <unistd.h>
 
 /* A taut cable of 100 000 elements: 200 001 nodes and elements, above the threshold. */
-static const char *model_text =
-    "units kN m\n"
-    "material steel E=2.0e8\n"
-    "section strand material=steel A=3.14e-4 w=0.1\n"
-    "gravity 0 -1 0\n"
-    "node 1 0 0 0 fix=xyz\n"
-    "node 2 200 0 0 fix=xyz\n"
-    "cable 1 2 section=strand n=100000 length=200.3340\n";
+static const char *model_text = TAUT_CHAIN(100000);
 
 int main(void)
 {
@@ -33,6 +27,7 @@ int main(void)
     ctn_solve_options opt;
     char base[64], one[96], two[96], lim_dir[96];
     ctn_ctx_create(&ctx);
+    ctn_ctx_set_threads(ctx, 2);                         /* the second thread allowed */
     snprintf(base, sizeof base, "/tmp/catena-wthreads.XXXXXX");
     CHECK(mkdtemp(base) != NULL);
     snprintf(one, sizeof one, "%s/one", base);

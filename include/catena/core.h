@@ -56,6 +56,31 @@ void ctn_ctx_clear(ctn_ctx *ctx);
 void ctn_ctx_set_model_limit(ctn_ctx *ctx, long max_items);
 long ctn_ctx_model_limit(const ctn_ctx *ctx);
 
+/* Threads. The most threads catena may run at once for work on this context, the
+ * caller's included:
+ *   1 (the default)  none: catena starts no thread, and the OpenMP regions of the
+ *                    libraries it calls (CHOLMOD, an OpenMP BLAS) run on the caller's
+ *                    thread alone, whatever a solve's threads= option says. A program
+ *                    that embeds catena (a Python process, an MPI rank) gets no thread it
+ *                    did not ask for.
+ *   n >= 2           up to n: a solve's threads= option may lower it (threads=1: none);
+ *                    parts of a large solve, its orderings, triangular solves, modal
+ *                    analysis and result writing run on the caller's thread and one
+ *                    helper where the machine has two CPUs or more (docs/architecture.md,
+ *                    "Threads"); a factorization's OpenMP threads are its threads= (at
+ *                    most n).
+ *   0                no limit of the context's: the solve's threads= and the machine
+ *                    decide (what the catena command sets).
+ * The helpers are at most two threads per context, each started at the first work that
+ * uses it and kept, asleep, until ctn_ctx_destroy or ctn_ctx_set_threads(ctx, 1) joins
+ * them; at most n - 1 of them work at once. catena changes no process-wide setting for
+ * its threads: the OpenMP thread count and thread limit it sets around a factorization
+ * are the calling thread's own, restored after each call (docs/solver.md, "Threads").
+ * One context is used by one thread at a time (its helpers are catena's business).
+ * Returns CTN_ERR_INVALID for n < 0 (or ctx NULL); ctn_ctx_threads: the setting. */
+int ctn_ctx_set_threads(ctn_ctx *ctx, int n);
+int ctn_ctx_threads(const ctn_ctx *ctx);
+
 /* Progress of long operations, for a program that shows it: while the library reads a
  * model file or writes result files it calls fn(data, what, done, total) now and then,
  * what = "reading" (done bytes of total) or "writing" (done bytes, total 0: unknown).

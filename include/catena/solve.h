@@ -123,7 +123,10 @@ typedef struct ctn_solve_options {
                                   file's `modes` line) */
     int threads;          /* threads of the numeric factorization (OpenMP, shared by CHOLMOD
                              and an OpenMP OpenBLAS); 0 (default): one, the fastest measured
-                             (docs/solver.md "Threads") */
+                             (docs/solver.md "Threads"); at most the context's limit
+                             (ctn_ctx_set_threads, by default 1). 1: no thread at all; else
+                             large parts of the solve may use a helper thread where the
+                             context allows it */
     int reuse;            /* CTN_METHOD_AUTO: once Newton converges quadratically, take the
                              next step with the last factorization (conjugate gradients on
                              the current tangent, preconditioned by it) instead of factoring

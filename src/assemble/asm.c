@@ -183,6 +183,8 @@ int ctn_asm_eval(const ctn_asm *a, const double *d, unsigned mode, double *f, do
 
 int ctn_asm_can_feed(const ctn_asm *a) { return a->gather && !a->gather->mixed; }
 
+int ctn_asm_threads(const ctn_asm *a) { return (a->flags & CTN_ASM_ONE_THREAD) ? 1 : 0; }
+
 
 typedef struct compressed {
     size_t n;

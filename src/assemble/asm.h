@@ -60,7 +60,8 @@ typedef struct ctn_asm_gather {
     int *adj_ptr, *adj;                /* node adjacency (self included, sorted): CSR */
     int maxdeg;                        /* most axial elements at one node */
     int maxadj;                        /* most neighbours of one node (self included) */
-    int threads;                       /* 1, or 2: the nodes in two halves */
+    ctn_ctx *ctx;                      /* the context it was built in: its helper thread */
+    int threads;                       /* 1, or 2: the nodes in two halves (core/threads.h) */
     double *work;                      /* per thread (maxdeg + maxadj) * 6 on its own cache
                                           lines: a node's elements' k, its neighbours' blocks */
     double *X;                         /* nn * 3: the nodes' reference coordinates, copied
@@ -181,5 +182,8 @@ int ctn_asm_gather_eval(const ctn_asm *a, const double *d, unsigned mode, double
 int ctn_asm_can_feed(const ctn_asm *a);
 int ctn_asm_eval_feed(const ctn_asm *a, const double *d, unsigned mode, double *f, double *Kx, double *U,
                       size_t *bad, ctn_feed *feed);
+/* The threads= option the assembly was created under, as the thread policy is asked
+ * (core/threads.h): 1 (CTN_ASM_ONE_THREAD), or 0 (auto). */
+int ctn_asm_threads(const ctn_asm *a);
 
 #endif

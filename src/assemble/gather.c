@@ -14,15 +14,13 @@
  * threads take half the nodes each (an element across the halves is evaluated by both;
  * its energy counted by its lower node's). */
 #include "assemble/asm.h"
+#include "core/threads.h"
 #include "element/cable2.h"
 
-#include <pthread.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
-#define GATHER_PARALLEL_NODES 50000   /* two threads from this many nodes (bench_floor) */
 #define KEEP 4096                     /* elements kept per thread (448 KB: within L2) */
 #define CHUNK 64                      /* nodes evaluated, then walked */
 #define PLAIN 8                       /* free[q] bit: a plain node, its lower neighbours'
@@ -149,11 +147,6 @@ static size_t work_stride(const ctn_asm_gather *g)
     return ((size_t)(g->maxdeg + g->maxadj) * 6 + 7) / 8 * 8 + 8;
 }
 
-static int gather_threads(const ctn_asm *a)
-{
-    if ((a->flags & CTN_ASM_ONE_THREAD) || a->nn < GATHER_PARALLEL_NODES) return 1;
-    return sysconf(_SC_NPROCESSORS_ONLN) >= 2 ? 2 : 1;
-}
 
 int ctn_asm_gather_build(ctn_ctx *ctx, ctn_asm *a, int **ptr, int **adj)
 {
@@ -175,7 +168,8 @@ int ctn_asm_gather_build(ctn_ctx *ctx, ctn_asm *a, int **ptr, int **adj)
         return CTN_OK;
     }
     if (!rc) rc = build_lists(ctx, a, g, ends);
-    g->threads = gather_threads(a);
+    g->ctx = ctx;
+    g->threads = ctn_thr_allows(ctx, ctn_asm_threads(a), CTN_THR_ASSEMBLY, (double)a->nn) ? 2 : 1;
     for (size_t q = 0; q < a->nn; q++)                 /* most neighbours of a node */
         if ((*ptr)[q + 1] - (*ptr)[q] > g->maxadj) g->maxadj = (*ptr)[q + 1] - (*ptr)[q];
     g->work = rc ? NULL : ctn_malloc(ctx, (size_t)g->threads * work_stride(g), sizeof(double));
@@ -406,7 +400,7 @@ static size_t columns_before(const ctn_asm *a, size_t q)
     return a->ndof;
 }
 
-static void *run_part(void *arg)
+static void run_part(void *arg)
 {
     part *pt = arg;
     size_t k = pt->k0, bad = SIZE_MAX;
@@ -429,7 +423,6 @@ static void *run_part(void *arg)
     }
     pt->U = U;                                          /* once: the parts share a line */
     pt->bad = bad;
-    return NULL;
 }
 
 /* Position in Kx of the first column of node q or a later one. */
@@ -455,11 +448,8 @@ int ctn_asm_gather_eval(const ctn_asm *a, const double *d, unsigned mode, double
                         g->work + (size_t)i * work_stride(g), g->work + (size_t)i * work_stride(g) + (size_t)g->maxdeg * 6,
                         g->keep + (size_t)i * KEEP, 0.0, SIZE_MAX, NULL };
     }
-    pthread_t t;
-    int threaded = np == 2 && !pthread_create(&t, NULL, run_part, &pt[1]);
-    run_part(&pt[0]);
-    if (threaded) pthread_join(t, NULL);
-    else if (np == 2) run_part(&pt[1]);
+    if (np == 2) ctn_thr_both(g->ctx, ctn_asm_threads(a), CTN_THR_ASSEMBLY, (double)a->nn, run_part, &pt[0], &pt[1]);
+    else run_part(&pt[0]);
     *U = pt[0].U + (np == 2 ? pt[1].U : 0.0);
     *bad = np == 2 && pt[1].bad < pt[0].bad ? pt[1].bad : pt[0].bad;
     return *bad != SIZE_MAX;

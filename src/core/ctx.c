@@ -1,6 +1,7 @@
 /* Context: error recording and checked, fault-injectable allocation. */
 #define _DEFAULT_SOURCE                  /* madvise, MADV_HUGEPAGE */
 #include "core/ctx.h"
+#include "core/threads.h"
 
 #include <stdint.h>
 #include <stdio.h>
@@ -8,17 +9,23 @@
 #include <string.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 int ctn_ctx_create(ctn_ctx **out)
 {
     if (!out) return CTN_ERR_INVALID;
     *out = calloc(1, sizeof(ctn_ctx));
-    return *out ? CTN_OK : CTN_ERR_NOMEM;
+    if (!*out) return CTN_ERR_NOMEM;
+    long cpus = sysconf(_SC_NPROCESSORS_ONLN);
+    (*out)->threads = 1;
+    (*out)->cpus = cpus > 0 && cpus < 4096 ? (int)cpus : 1;
+    return CTN_OK;
 }
 
 void ctn_ctx_destroy(ctn_ctx **ctx)
 {
     if (!ctx) return;
+    ctn_thr_release(*ctx);
     free(*ctx);
     *ctx = NULL;
 }
@@ -47,6 +54,16 @@ void ctn_ctx_set_model_limit(ctn_ctx *ctx, long max_items)
 }
 
 long ctn_ctx_model_limit(const ctn_ctx *ctx) { return ctx ? ctx->model_limit : 0; }
+
+int ctn_ctx_set_threads(ctn_ctx *ctx, int n)
+{
+    if (!ctx || n < 0) return CTN_ERR_INVALID;
+    if (n == 1) ctn_thr_release(ctx);
+    ctx->threads = n;
+    return CTN_OK;
+}
+
+int ctn_ctx_threads(const ctn_ctx *ctx) { return ctx ? ctx->threads : 1; }
 
 void ctn_ctx_set_progress(ctn_ctx *ctx, ctn_progress_fn fn, void *data)
 {

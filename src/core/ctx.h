@@ -21,6 +21,11 @@ struct ctn_ctx {
     void *interrupt_data;
     int ninputs;             /* the files read through this context, that no output */
     unsigned long long input_dev[CTN_INPUTS_MAX], input_ino[CTN_INPUTS_MAX]; /* replaces */
+    int threads;             /* ctn_ctx_set_threads: 1 (default) none started, 0 no limit */
+    int cpus;                /* the machine's CPUs online, asked once at creation */
+    struct ctn_thr_pool *pool;  /* the helper thread (core/threads.c), NULL until needed */
+    long thr_started;        /* threads started for this context (tests) */
+    int thr_any_size;        /* tests: 1 takes every site's size threshold as met */
 };
 
 /* Remember the file open as fd as an input of this context (the first CTN_INPUTS_MAX):

@@ -8,9 +8,10 @@
 #include "io/writer.h"
 #include "catena/io.h"
 #include "core/ctx.h"
+#include "core/threads.h"
+#include "solve/solution.h"
 
 #include <errno.h>
-#include <pthread.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -93,27 +94,25 @@ typedef struct part {
     int rc;
 } part;
 
-static void *stage_part(void *arg)
+static void stage_part(void *arg)
 {
     part *p = arg;
     for (size_t i = p->lo; i < p->hi && !p->rc; i++) p->rc = stage(p->ctx, p->dir, &p->jobs[i], p->m, p->s, &p->f[i]);
-    return NULL;
 }
 
-/* A large set is staged by two threads: result.json (about half the bytes) on the
- * caller's, the other files on a second one, which reports through a context of its own
- * (same limits, no progress callback) whose error, if any, becomes the caller's. The
- * writers only read the model and the solution. Measured on the K = 1000 net of
+/* A large set (the thread policy's CTN_THR_WRITE, under the solve's threads=) is staged
+ * by two threads: result.json (about half the bytes) on the caller's, the other files on
+ * the context's helper, which reports through a context of its own (same limits, no
+ * progress callback, no helpers) whose error, if any, becomes the caller's. The writers
+ * only read the model and the solution. Measured on the K = 1000 net of
  * bench/RESULTS.md (1.4 GB of files). Small sets, and a context set to fail an
  * allocation (the fault-injection tests), stay on one thread, in order. */
-#define CTN_WRITE_THREADED 200000                 /* nodes + elements */
-
 static int stage_all(ctn_ctx *ctx, const char *dir, const job *jobs, size_t n, const ctn_model *m,
                      const ctn_solution *s, ctn_atomic_file *f)
 {
     part main = { ctx, dir, jobs, 0, n, m, s, f, CTN_OK };
     size_t size = ctn_model_node_count(m) + ctn_model_element_count(m);
-    if (n < 2 || size < CTN_WRITE_THREADED || ctx->alloc_fail_at || sysconf(_SC_NPROCESSORS_ONLN) < 2) {
+    if (n < 2 || ctx->alloc_fail_at || !ctn_thr_allows(ctx, s->threads, CTN_THR_WRITE, (double)size)) {
         stage_part(&main);
         return main.rc;
     }
@@ -121,13 +120,14 @@ static int stage_all(ctn_ctx *ctx, const char *dir, const job *jobs, size_t n, c
     other.code = CTN_OK;
     other.msg[0] = '\0';
     other.progress = NULL;
+    other.threads = 1;
+    other.pool = NULL;
     part rest = { &other, dir, jobs, 1, n, m, s, f, CTN_OK };
-    pthread_t t;
-    int threaded = !pthread_create(&t, NULL, stage_part, &rest);
-    main.hi = threaded ? 1 : n;
+    int ticket = ctn_thr_start(ctx, s->threads, CTN_THR_WRITE, (double)size, stage_part, &rest);
+    main.hi = ticket ? 1 : n;
     stage_part(&main);
-    if (!threaded) return main.rc;
-    pthread_join(t, NULL);
+    if (!ticket) return main.rc;
+    ctn_thr_wait(ctx, ticket);
     if (!main.rc && rest.rc) return ctn_error(ctx, rest.rc, "%s", other.msg);
     return main.rc;
 }

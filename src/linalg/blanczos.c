@@ -409,7 +409,8 @@ int ctn_eigen_block(ctn_ctx *ctx, int n, int nev, double sigma, const ctn_eigen_
     z.nx = nev + z.b;
     z.ws = 2 * z.b > 8 ? 2 * z.b : 8;
     z.need = nev;
-    z.threads = ctn_blz_threads(ops->threads, n);
+    z.threads = ctn_blz_threads(ctx, ops->threads, n);
+    z.asked = ops->threads == 1 ? 1 : ops->asked;
     info->block = z.b;
     ctn_threads_saved saved;
     ctn_threads_push(1, &saved);

@@ -55,12 +55,13 @@ typedef struct ctn_blz {
     int mw_pending;            /* MW[:, 0:j - ne] holds B times the pending block */
     unsigned long long seed;   /* random replacements of dependent columns */
     int threads;               /* 1, or 2: the dense work split between two (blanczos_par.c) */
+    int asked;                 /* the solve's threads= (ops->threads), for the thread policy */
     double *Cpart;             /* mcap x mcap: the helper thread's half of a product A^T B */
     /* The helper thread that populates the basis's pages (blanczos_par.c): pf_units
      * units (columns), those below pf_next claimed (pf_busy the one it works on, -1). */
     int pf_on, pf_units, pf_next, pf_busy, pf_stop;
     long page;
-    pthread_t pf_thread;
+    int pf_ticket;             /* the helper's job (core/threads.h) */
     pthread_mutex_t pf_lock;
     pthread_cond_t pf_done;
 } ctn_blz;
@@ -77,11 +78,13 @@ int ctn_blz_orthonormalize(ctn_blz *z, int w, int room, int *q);
 /* A fixed pseudo-random vector (runs repeat exactly). */
 void ctn_blz_random(ctn_blz *z, double *x);
 
-/* blanczos_par.c: the threads of the dense work (ops->threads: 0 two from 50 000 rows on
- * a machine of two CPUs or more, 1 one, 2 two). Tall matrices are n rows (ld n); the
- * rows are split between the threads, so the results do not depend on their number
- * beyond the rounding of the sum of two halves in ctn_blz_gemm_t. */
-int ctn_blz_threads(int asked, int n);
+/* blanczos_par.c: the halves of the dense work (ops->threads: 0 two where the thread
+ * policy allows CTN_THR_LANCZOS, 1 one, 2 two); the second half runs on the context's
+ * helper when the policy allows it and one is free, else after the first. Tall
+ * matrices are n rows (ld n); the rows are split between the halves, so the results do
+ * not depend on the threads beyond the rounding of the sum of two halves in
+ * ctn_blz_gemm_t. */
+int ctn_blz_threads(const ctn_ctx *ctx, int asked, int n);
 /* C (k x w, ld ldc) = A^T B: A n x k, B n x w. */
 void ctn_blz_gemm_t(ctn_blz *z, int k, int w, const double *A, const double *B, double *C, int ldc);
 /* C = alpha A B + beta C: A n x k, B k x w (ld ldb), C n x w. */

@@ -8,6 +8,7 @@
  * thread writes the basis's fresh pages (their first touch costs 4-8 s per GB there),
  * column by column ahead of the Lanczos process, which claims a column itself when it
  * gets there first. docs/solver.md, "Threads". */
+#include "core/threads.h"
 #include "linalg/blanczos.h"
 #include "linalg/lapack.h"
 #include "linalg/linsolve.h"
@@ -17,12 +18,10 @@
 #include <string.h>
 #include <unistd.h>
 
-#define BLZ_PARALLEL_ROWS 50000   /* two threads from this order (as the assembly's) */
-
-int ctn_blz_threads(int asked, int n)
+int ctn_blz_threads(const ctn_ctx *ctx, int asked, int n)
 {
     if (asked == 1 || asked == 2) return asked;
-    return n >= BLZ_PARALLEL_ROWS && sysconf(_SC_NPROCESSORS_ONLN) >= 2 ? 2 : 1;
+    return ctn_thr_allows(ctx, asked, CTN_THR_LANCZOS, n) ? 2 : 1;
 }
 
 /* ---- two halves ---- */
@@ -37,31 +36,27 @@ struct half {
     const void *args;
 };
 
-static void *run_half(void *arg)
+static void run_half(void *arg)
 {
     const half *h = arg;
     ctn_threads_saved saved;
     ctn_threads_push(1, &saved);                 /* this thread's BLAS on one thread */
     h->fn(h);
     ctn_threads_pop(&saved);
-    return NULL;
 }
 
-/* fn over [0, count) in two halves, the second on a helper thread when there are two
- * (and it could be started: else one after the other); 1 if it went in two halves. */
+/* fn over [0, count) in two halves when there are two threads, the second on the
+ * context's helper (when one may take it: else one after the other, the same
+ * arithmetic); 1 if it went in two halves. */
 static int split(ctn_blz *z, half_fn fn, int count, const void *args)
 {
     half h[2] = { { z, fn, 0, count, 0, args }, { z, fn, count, count, 1, args } };
-    pthread_t t;
     if (z->threads < 2 || count < 2) {
         fn(&h[0]);
         return 0;
     }
     h[0].r1 = h[1].r0 = count / 2;
-    int threaded = !pthread_create(&t, NULL, run_half, &h[1]);
-    fn(&h[0]);
-    if (threaded) pthread_join(t, NULL);
-    else fn(&h[1]);
+    ctn_thr_both(z->ctx, z->asked, CTN_THR_LANCZOS, z->n, run_half, &h[0], &h[1]);
     return 1;
 }
 
@@ -274,7 +269,7 @@ static void populate_unit(const ctn_blz *z, int u)
     populate(z, z->MW + n * (size_t)u, n);
 }
 
-static void *populate_run(void *arg)
+static void populate_run(void *arg)
 {
     ctn_blz *z = arg;
     pthread_mutex_lock(&z->pf_lock);
@@ -288,7 +283,6 @@ static void *populate_run(void *arg)
         pthread_cond_broadcast(&z->pf_done);
     }
     pthread_mutex_unlock(&z->pf_lock);
-    return NULL;
 }
 
 void ctn_blz_populate_start(ctn_blz *z)
@@ -306,7 +300,8 @@ void ctn_blz_populate_start(ctn_blz *z)
         pthread_mutex_destroy(&z->pf_lock);
         return;
     }
-    if (pthread_create(&z->pf_thread, NULL, populate_run, z)) {
+    z->pf_ticket = ctn_thr_start(z->ctx, z->asked, CTN_THR_LANCZOS, z->n, populate_run, z);
+    if (!z->pf_ticket) {
         pthread_cond_destroy(&z->pf_done);
         pthread_mutex_destroy(&z->pf_lock);
         return;
@@ -335,7 +330,7 @@ void ctn_blz_populate_stop(ctn_blz *z)
     pthread_mutex_lock(&z->pf_lock);
     z->pf_stop = 1;
     pthread_mutex_unlock(&z->pf_lock);
-    pthread_join(z->pf_thread, NULL);
+    ctn_thr_wait(z->ctx, z->pf_ticket);
     pthread_cond_destroy(&z->pf_done);
     pthread_mutex_destroy(&z->pf_lock);
     z->pf_on = 0;

@@ -20,8 +20,8 @@ typedef struct chol {
     double lnz;                         /* non-zeros of L from the analysis */
     double fl;                          /* flops of one factorization, from the analysis */
     int indefinite;                     /* simplicial LDL' instead of LL' */
-    int helpers;                        /* 1: a new factor's pages may be first touched on
-                                           two threads (not under threads=1) */
+    int threads;                        /* the solve's threads= (0 auto, 1, n): what the
+                                           thread policy is asked with (core/threads.h) */
     cholmod_dense *Yk, *Ek;             /* solve2 workspace of the block solves */
     struct ctn_psolve *ps;              /* the block solves on two threads (cholmod_psolve.c):
                                            planned at the first block solve, NULL if not used */
@@ -37,13 +37,11 @@ const char *ctn_chol_status(int status);
  * symbolic analysis: c->L, c->ordering, c->lnz, c->fl. */
 int ctn_chol_analyze(chol *c, ctn_ordering ord);
 /* Write one byte of every page of a new factor's values, on two threads, before its
- * first factorization (cholmod_touch.c); nothing for small factors, one CPU or
- * c->helpers = 0. */
+ * first factorization (cholmod_touch.c), when the thread policy allows it. */
 void ctn_chol_touch(chol *c);
-/* Plan the solves on two threads (cholmod_psolve.c) once, at the first solve
- * of a supernodal LL' factor of order CTN_PSOLVE_MIN or more on a machine of 2 CPUs or
- * more, unless c->helpers is 0 (threads=1): c->ps, or NULL (cholmod_l_solve2 then). */
-#define CTN_PSOLVE_MIN 50000
+/* Plan the solves on two threads (cholmod_psolve.c) once, at the first solve of a
+ * supernodal LL' factor the thread policy allows it for (CTN_THR_PSOLVE): c->ps, or
+ * NULL (cholmod_l_solve2 then). */
 int ctn_chol_psolve_plan(chol *c);
 
 /* cholmod_feed.c: whether the next factorization can follow the assembly row block by

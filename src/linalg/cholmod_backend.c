@@ -9,6 +9,7 @@
  * The matrix is held as a pattern; the caller's values are lent to CHOLMOD for each
  * factorization, its right-hand side and solution arrays for each solve (no copy).
  * CHOLMOD's long-integer interface throughout (chol.h). */
+#include "core/threads.h"
 #include "linalg/chol.h"
 #include "linalg/psolve.h"
 
@@ -45,7 +46,7 @@ static int check_memory(chol *c)
                      ctn_ordering_name(c->ordering), 1e-9 * have);
 }
 
-static int chol_create(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, int indefinite, void **out)
+static int chol_create(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, int threads, int indefinite, void **out)
 {
     *out = NULL;
     chol *c = ctn_calloc(ctx, 1, sizeof(chol));
@@ -53,7 +54,7 @@ static int chol_create(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, int
     c->ctx = ctx;
     cholmod_l_start(&c->cm);
     c->indefinite = indefinite;
-    c->helpers = 1;
+    c->threads = threads;
     c->cm.final_ll = 0;
     if (indefinite) c->cm.supernodal = CHOLMOD_SIMPLICIAL;
     c->cm.quick_return_if_not_posdef = 1;
@@ -75,14 +76,14 @@ fail:
     return rc;
 }
 
-static int ll_create(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, void **out)
+static int ll_create(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, int threads, void **out)
 {
-    return chol_create(ctx, p, ord, 0, out);
+    return chol_create(ctx, p, ord, threads, 0, out);
 }
 
-static int ldl_create(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, void **out)
+static int ldl_create(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, int threads, void **out)
 {
-    return chol_create(ctx, p, ord, 1, out);
+    return chol_create(ctx, p, ord, threads, 1, out);
 }
 
 /* The first pivot d <= 0 of a simplicial LDL' factor (its column's first entry), -1 if
@@ -145,7 +146,7 @@ static int chol_solve(void *impl, const double *b, double *x)
     size_t n = c->A->nrow;
     int rc = c->L->is_super ? ctn_chol_psolve_plan(c) : CTN_OK;
     if (rc) return rc;
-    if (c->ps && c->helpers) return ctn_psolve_solve(c->ps, c->L, b, x, 1, 2);   /* x may be b */
+    if (c->ps) return ctn_psolve_solve(c->ps, c->L, b, x, 1, 2);   /* x may be b */
     cholmod_dense bh = lent(c->B, 1, b), xh = lent(c->B, 1, x), *X = &xh;
     /* cholmod_l_solve2 reallocates its workspace Y whenever Y's shape is not the one it
      * wants (4 x n for a simplicial factor), although the space it kept suffices; give
@@ -167,7 +168,7 @@ static int chol_solve_block(void *impl, const double *B, double *X, size_t k)
     chol *c = impl;
     int rc = ctn_chol_psolve_plan(c);
     if (rc) return rc;
-    if (c->ps && c->helpers) return ctn_psolve_solve(c->ps, c->L, B, X, k, 2);
+    if (c->ps) return ctn_psolve_solve(c->ps, c->L, B, X, k, 2);
     cholmod_dense bh = lent(c->B, k, B), xh = lent(c->B, k, X), *Xp = &xh;
     int ok = cholmod_l_solve2(CHOLMOD_A, c->L, &bh, NULL, &Xp, NULL, &c->Yk, &c->Ek, &c->cm);
     return ok ? CTN_OK : ctn_chol_error(c, "block solve");
@@ -200,12 +201,18 @@ static int chol_factor_feed(void *impl, const double *Kx, double shift, ctn_feed
 
 static ctn_ordering chol_ordering(const void *impl) { return ((const chol *)impl)->ordering; }
 
-static void chol_helpers(void *impl, int allowed) { ((chol *)impl)->helpers = allowed; }
+static void chol_set_threads(void *impl, int asked)
+{
+    chol *c = impl;
+    c->threads = asked;
+    if (c->ps && !ctn_thr_allows(c->ctx, asked, CTN_THR_PSOLVE, (double)c->L->n)) ctn_psolve_destroy(&c->ps);
+    if (!c->ps) c->ps_planned = 0;           /* planned again at the next solve */
+}
 
 static int chol_solve_threads(const void *impl)
 {
     const chol *c = impl;
-    return c->ps && c->helpers ? 2 : 1;
+    return c->ps ? 2 : 1;
 }
 
 static size_t chol_factor_nnz(const void *impl) { return (size_t)((const chol *)impl)->lnz; }
@@ -216,7 +223,7 @@ const ctn_linsolve_ops ctn_cholmod_ll_ops = {
     .name = "cholmod", .indefinite = 0, .create = ll_create, .destroy = chol_destroy,
     .factor = chol_factor, .solve = chol_solve, .inertia = NULL, .ordering = chol_ordering,
     .factor_nnz = chol_factor_nnz, .flops = chol_flops, .solve_block = chol_solve_block,
-    .helpers = chol_helpers, .feedable = chol_feedable, .factor_feed = chol_factor_feed,
+    .set_threads = chol_set_threads, .feedable = chol_feedable, .factor_feed = chol_factor_feed,
     .solve_threads = chol_solve_threads,
 };
 
@@ -224,6 +231,6 @@ const ctn_linsolve_ops ctn_cholmod_ldl_ops = {
     .name = "cholmod-ldl", .indefinite = 1, .create = ldl_create, .destroy = chol_destroy,
     .factor = chol_factor, .solve = chol_solve, .inertia = ldl_inertia, .ordering = chol_ordering,
     .factor_nnz = chol_factor_nnz, .flops = chol_flops, .solve_block = chol_solve_block,
-    .helpers = chol_helpers, .feedable = chol_feedable, .factor_feed = chol_factor_feed,
+    .set_threads = chol_set_threads, .feedable = chol_feedable, .factor_feed = chol_factor_feed,
     .solve_threads = chol_solve_threads,
 };

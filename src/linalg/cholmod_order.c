@@ -10,9 +10,9 @@
  * an error, with CHOLMOD's status in words. The symbolic analysis is then done once,
  * for the ordering kept: from the node graph (cholmod_symbolic.c) when nodes were
  * merged, else by cholmod_l_analyze_p. */
+#include "core/threads.h"
 #include "linalg/chol.h"
 
-#include <pthread.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -132,7 +132,7 @@ static void cand_run(cand *k, ctn_ordering o, int analyse)
 
 /* A candidate on a second thread, with a CHOLMOD common of its own (the library is
  * reentrant across commons; the pattern and the quotient graph are only read). */
-static void *cand_thread(void *arg)
+static void cand_thread(void *arg)
 {
     cand *k = arg;
     cholmod_l_start(&k->own);
@@ -142,7 +142,6 @@ static void *cand_thread(void *arg)
     cand_run(k, k->o, 1);
     cholmod_l_finish(&k->own);
     k->cm = &k->c->cm;
-    return NULL;
 }
 
 /* The envelope of the upper pattern (rows sorted): the positions between each column's
@@ -175,7 +174,6 @@ static int better(const cand *k, int i, int j)
  * NATURAL_ENVELOPE times the better one's factor (a mesh numbered row by row: its
  * factor fills the envelope, and counting it costs as much as the others together). */
 #define NATURAL_ENVELOPE 4.0
-#define PARALLEL_DOFS 20000
 static int pick(chol *c, ctn_ordering ord, cand *k, int *status)
 {
     size_t n = c->A->ncol;
@@ -185,11 +183,10 @@ static int pick(chol *c, ctn_ordering ord, cand *k, int *status)
         cand_run(&k[0], ord == CTN_ORDER_AUTO ? CTN_ORDER_NATURAL : ord, 0);
         best = k[0].ok ? 0 : -1;
     } else {
-        pthread_t t;
         k[1].o = CTN_ORDER_AMD;
-        int threaded = n >= PARALLEL_DOFS && !pthread_create(&t, NULL, cand_thread, &k[1]);
+        int ticket = ctn_thr_start(c->ctx, c->threads, CTN_THR_ORDER, (double)n, cand_thread, &k[1]);
         cand_run(&k[0], CTN_ORDER_METIS, 1);
-        if (threaded) pthread_join(t, NULL);
+        if (ticket) ctn_thr_wait(c->ctx, ticket);
         else cand_run(&k[1], CTN_ORDER_AMD, 1);
         best = better(k, 1, 0);                               /* AMD on ties */
         if (best < 0 || env <= NATURAL_ENVELOPE * k[best].lnz) {

@@ -13,6 +13,7 @@
  * backward sweep reads only theirs, so two disjoint sets of whole subtrees can be
  * solved on two threads: only rows of their common ancestors (the top) are written by
  * both, forward, and those updates go to each thread's own buffer, summed after. */
+#include "core/threads.h"
 #include "linalg/psolve.h"
 #include "linalg/psolve_k4.h"
 #include "linalg/chol.h"
@@ -20,10 +21,8 @@
 #include "linalg/linsolve.h"
 
 #include <limits.h>
-#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #define PS_TOP 2                 /* the set of the sequential top */
 #define PS_SPLITS 512            /* most subtrees split open while balancing */
@@ -356,7 +355,7 @@ static void permute(const job *j, long s, int in)
 }
 
 /* A subtree set's forward sweep: its rows permuted in, its top updates into T. */
-static void *set_forward(void *arg)
+static void set_forward(void *arg)
 {
     const job *j = arg;
     const ctn_psolve *p = j->p;
@@ -366,11 +365,10 @@ static void *set_forward(void *arg)
     for (long i = 0; i < p->count[j->set]; i++) permute(j, p->set[j->set][i], 1);
     for (long i = 0; i < p->count[j->set]; i++) forward(j, p->set[j->set][i]);
     ctn_threads_pop(&saved);
-    return NULL;
 }
 
 /* A subtree set's backward sweep, its rows permuted out into X. */
-static void *set_backward(void *arg)
+static void set_backward(void *arg)
 {
     const job *j = arg;
     const ctn_psolve *p = j->p;
@@ -379,17 +377,18 @@ static void *set_backward(void *arg)
     for (long i = p->count[j->set] - 1; i >= 0; i--) backward(j, p->set[j->set][i]);
     for (long i = 0; i < p->count[j->set]; i++) permute(j, p->set[j->set][i], 0);
     ctn_threads_pop(&saved);
-    return NULL;
 }
 
-/* fn on both sets: the second on a helper thread when asked for (and it starts). */
-static void both(void *(*fn)(void *), job jobs[2], int threads)
+/* fn on both sets: the second on the context's helper when asked for (and the thread
+ * policy lets it: the helper may be busy beside a modal analysis). */
+static void both(ctn_thr_fn fn, job jobs[2], int threads)
 {
-    pthread_t t;
-    int threaded = threads >= 2 && !pthread_create(&t, NULL, fn, &jobs[1]);
-    fn(&jobs[0]);
-    if (threaded) pthread_join(t, NULL);
-    else fn(&jobs[1]);
+    const ctn_psolve *p = jobs[0].p;
+    if (threads >= 2) ctn_thr_both(p->ctx, 0, CTN_THR_PSOLVE, (double)p->n, fn, &jobs[0], &jobs[1]);
+    else {
+        fn(&jobs[0]);
+        fn(&jobs[1]);
+    }
 }
 
 /* The top's rows in: P B less both sets' updates. */
@@ -430,7 +429,7 @@ int ctn_psolve_solve(ctn_psolve *p, const cholmod_factor *L, const double *B, do
 
 int ctn_chol_psolve_plan(chol *c)
 {
-    if (c->ps_planned || !c->helpers || c->L->n < CTN_PSOLVE_MIN || sysconf(_SC_NPROCESSORS_ONLN) < 2) return CTN_OK;
+    if (c->ps_planned || !ctn_thr_allows(c->ctx, c->threads, CTN_THR_PSOLVE, (double)c->L->n)) return CTN_OK;
     c->ps_planned = 1;
     return ctn_psolve_create(c->ctx, c->L, &c->ps);
 }

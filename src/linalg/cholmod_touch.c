@@ -9,37 +9,30 @@
  * else runs on the factor meanwhile. (Faulting the pages in with madvise
  * MADV_POPULATE_WRITE, on a helper beside the factorization, did not help: the host
  * still backs each page at its first write.) */
+#include "core/threads.h"
 #include "linalg/chol.h"
 
-#include <pthread.h>
 #include <stdint.h>
 #include <unistd.h>
-
-#define CTN_TOUCH_MIN ((size_t)256 << 20)   /* smaller factors: not worth a thread */
 
 typedef struct span {
     uintptr_t a, b, page;
 } span;
 
-static void *touch(void *arg)
+static void touch(void *arg)
 {
     const span *s = arg;
     for (uintptr_t p = s->a; p < s->b; p += s->page) *(volatile char *)p = 0;
-    return NULL;
 }
 
 void ctn_chol_touch(chol *c)
 {
     long page = sysconf(_SC_PAGESIZE);
     size_t bytes = c->L->xsize * sizeof(double);
-    if (!c->helpers || page <= 0 || bytes < CTN_TOUCH_MIN || sysconf(_SC_NPROCESSORS_ONLN) < 2) return;
+    if (page <= 0 || !ctn_thr_allows(c->ctx, c->threads, CTN_THR_TOUCH, (double)bytes)) return;
     uintptr_t pg = (uintptr_t)page, x = (uintptr_t)c->L->x;
     uintptr_t a = (x + pg - 1) / pg * pg, b = (x + bytes) / pg * pg;
     uintptr_t mid = a + (b - a) / 2 / pg * pg;
     span s[2] = { { a, mid, pg }, { mid, b, pg } };
-    pthread_t t;
-    int threaded = !pthread_create(&t, NULL, touch, &s[1]);
-    touch(&s[0]);
-    if (threaded) pthread_join(t, NULL);
-    else touch(&s[1]);
+    ctn_thr_both(c->ctx, c->threads, CTN_THR_TOUCH, (double)bytes, touch, &s[0], &s[1]);
 }

@@ -33,11 +33,15 @@ typedef struct ctn_eigen_ops {
      * over the matrix (the block solver's products go by pairs of columns). */
     void (*bmul2)(void *ud, const double *x0, const double *x1, double *y0, double *y1);
     void (*amul2)(void *ud, const double *x0, const double *x1, double *y0, double *y1);
-    /* Block solver: its threads for the dense work over the basis. 0: two from 50 000
-     * unknowns on a machine of two CPUs or more, else one; 1: one; 2: two. With two,
+    /* Block solver: its threads for the dense work over the basis. 0: two where the
+     * thread policy allows it (core/threads.h, CTN_THR_LANCZOS), else one; 1: one; 2:
+     * two halves (on two threads where the policy allows). With two,
      * bmul, amul and absmul are called from two threads at once (on different
      * vectors); the solves always from the calling thread. */
     int threads;
+    /* The solve's threads= option (0 auto, 1, n): the helpers the thread policy lets the
+     * block solver keep busy (core/threads.h). */
+    int asked;
 } ctn_eigen_ops;
 
 typedef struct ctn_eigen_info {

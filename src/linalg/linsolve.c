@@ -1,5 +1,6 @@
 /* Linear solver objects: the registry and the calls that dispatch to a backend. */
 #include "linalg/linsolve.h"
+#include "core/threads.h"
 
 #include <string.h>
 #include <time.h>
@@ -42,6 +43,12 @@ const ctn_linsolve_ops *ctn_linsolve_find(const char *name)
 int ctn_linsolve_create(ctn_ctx *ctx, const char *name, const ctn_pattern *p, ctn_ordering ord,
                         ctn_linsolve **out)
 {
+    return ctn_linsolve_create_threads(ctx, name, p, ord, 0, out);
+}
+
+int ctn_linsolve_create_threads(ctn_ctx *ctx, const char *name, const ctn_pattern *p, ctn_ordering ord,
+                                int threads, ctn_linsolve **out)
+{
     *out = NULL;
     const ctn_linsolve_ops *ops = ctn_linsolve_find(name);
     if (!ops) return ctn_error(ctx, CTN_ERR_INVALID, "unknown linear solver '%s'", name ? name : "");
@@ -50,7 +57,8 @@ int ctn_linsolve_create(ctn_ctx *ctx, const char *name, const ctn_pattern *p, ct
     s->ops = ops;
     s->ctx = ctx;
     s->n = p->n;
-    int rc = ops->create(ctx, p, ord, &s->impl);
+    s->threads = threads > 0 ? threads : 0;
+    int rc = ops->create(ctx, p, ord, threads, &s->impl);
     if (rc) {
         ctn_free(s);
         return rc;
@@ -69,15 +77,31 @@ void ctn_linsolve_destroy(ctn_linsolve **s)
 
 const ctn_linsolve_ops *ctn_linsolve_type(const ctn_linsolve *s) { return s->ops; }
 
-/* The factorization runs with its own thread count (set for the calling thread, the
- * caller's restored after). */
+typedef struct factor_call {
+    ctn_linsolve *s;
+    const double *Kx;
+    double shift;
+    ctn_factor_info *info;
+    int rc;
+} factor_call;
+
+static void factor_run(void *arg)
+{
+    factor_call *f = arg;
+    f->rc = f->s->ops->factor(f->s->impl, f->Kx, f->shift, f->info);
+}
+
+/* The factorization runs with its own thread count and no OpenMP team larger (both the
+ * calling thread's settings, the caller's restored after). */
 int ctn_linsolve_factor(ctn_linsolve *s, const double *Kx, double shift, ctn_factor_info *info)
 {
-    int n = s->threads > 0 ? s->threads : 1;
+    int n = ctn_thr_openmp(s->ctx, s->threads);
     ctn_threads_saved old;
+    factor_call f = { s, Kx, shift, info, CTN_OK };
     ctn_threads_push(n, &old);
     double t0 = cpu_clock(CLOCK_PROCESS_CPUTIME_ID);
-    int rc = s->ops->factor(s->impl, Kx, shift, info);
+    ctn_threads_limit(n, factor_run, &f);
+    int rc = f.rc;
     s->cpu = cpu_clock(CLOCK_PROCESS_CPUTIME_ID) - t0;
     ctn_threads_pop(&old);
     s->used = old.threads ? n : 1;
@@ -134,7 +158,7 @@ double ctn_linsolve_flops(const ctn_linsolve *s) { return s->ops->flops ? s->ops
 void ctn_linsolve_set_threads(ctn_linsolve *s, int n)
 {
     s->threads = n > 0 ? n : 0;
-    if (s->ops->helpers) s->ops->helpers(s->impl, n != 1);
+    if (s->ops->set_threads) s->ops->set_threads(s->impl, s->threads);
 }
 
 int ctn_linsolve_threads(const ctn_linsolve *s) { return s->used ? s->used : 1; }

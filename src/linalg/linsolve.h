@@ -33,7 +33,7 @@ typedef struct ctn_factor_info {
 typedef struct ctn_linsolve_ops {
     const char *name;
     int indefinite;           /* 1: factors indefinite matrices and gives their inertia */
-    int (*create)(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, void **impl);
+    int (*create)(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, int threads, void **impl);
     void (*destroy)(void *impl);
     int (*factor)(void *impl, const double *Kx, double shift, ctn_factor_info *info);
     int (*solve)(void *impl, const double *b, double *x);
@@ -47,9 +47,9 @@ typedef struct ctn_linsolve_ops {
      * by columns (leading dimension n; X and B do not alias). One pass over the factor
      * for all k columns: level-3 BLAS in a supernodal factor. */
     int (*solve_block)(void *impl, const double *B, double *X, size_t k);
-    /* Optional: whether the solver may use a second thread around a factorization
-     * (allowed = 0 under threads=1; allowed by default). */
-    void (*helpers)(void *impl, int allowed);
+    /* Optional: the solve's threads= option (0 auto, 1, n), which the backend's parallel
+     * sites hand to the thread policy (core/threads.h); create is given it first. */
+    void (*set_threads)(void *impl, int asked);
     /* Optional (both or neither): whether the next factorization can start before the
      * matrix is complete, and that factorization, which waits on feed for the columns it
      * needs (the assembly's thread publishes them in order), or gives up when the feed
@@ -64,9 +64,12 @@ typedef struct ctn_linsolve ctn_linsolve;
 
 /* The registered solver of that name, NULL if none. */
 const ctn_linsolve_ops *ctn_linsolve_find(const char *name);
-/* Set up solver `name` on pattern p (symbolic work, done once). */
+/* Set up solver `name` on pattern p (symbolic work, done once) for a solve that asked
+ * for `threads` (its threads= option: 0 auto, 1, n; ctn_linsolve_create: 0). */
 int ctn_linsolve_create(ctn_ctx *ctx, const char *name, const ctn_pattern *p, ctn_ordering ord,
                         ctn_linsolve **out);
+int ctn_linsolve_create_threads(ctn_ctx *ctx, const char *name, const ctn_pattern *p, ctn_ordering ord,
+                                int threads, ctn_linsolve **out);
 void ctn_linsolve_destroy(ctn_linsolve **s);
 const ctn_linsolve_ops *ctn_linsolve_type(const ctn_linsolve *s);
 /* Factor K + shift I from values Kx (pattern order). A failed pivot is an outcome in
@@ -91,8 +94,9 @@ int ctn_linsolve_inertia(ctn_linsolve *s, double tol, long *negative, long *zero
 ctn_ordering ctn_linsolve_ordering(const ctn_linsolve *s);
 size_t ctn_linsolve_factor_nnz(const ctn_linsolve *s);
 double ctn_linsolve_flops(const ctn_linsolve *s);
-/* Threads of the numeric factorizations: n > 0 that many, 0 the default, one thread
- * (ctn_solve_options.threads; linsolve.c says why). The threads of the last one, and its
+/* The solve's threads= option: the OpenMP threads of the numeric factorizations (n > 0
+ * that many, 0 the default, one thread; linsolve.c says why; at most the context's
+ * limit, ctn_thr_openmp) and what the backend's parallel sites ask the thread policy. The threads of the last one, and its
  * CPU seconds. */
 void ctn_linsolve_set_threads(ctn_linsolve *s, int n);
 int ctn_linsolve_threads(const ctn_linsolve *s);
@@ -102,16 +106,17 @@ double ctn_linsolve_cpu(const ctn_linsolve *s);
 /* The order of the matrix. */
 size_t ctn_linsolve_order(const ctn_linsolve *s);
 
-/* Threads (threads.c): run the calling thread's OpenMP regions on n threads (n = 1: no
- * parallel region at all, as OpenMP's max-active-levels 0, which is process-wide) until
- * ctn_threads_pop restores the settings saved; the name of the BLAS loaded in the
- * process. */
+/* Threads (threads.c): run the calling thread's OpenMP regions on n threads (its own
+ * setting, which OpenBLAS follows) until ctn_threads_pop restores the caller's;
+ * fn(arg) with every OpenMP region it enters, those that ask for a number of threads
+ * too, limited to n threads (the calling thread's limit: threads.c says why and how);
+ * the name of the BLAS loaded in the process. */
 typedef struct ctn_threads_saved {
     int threads;               /* the caller's count, 0 without OpenMP */
-    int levels;                /* the caller's max-active-levels, -1 without OpenMP */
 } ctn_threads_saved;
 void ctn_threads_push(int n, ctn_threads_saved *old);
 void ctn_threads_pop(const ctn_threads_saved *old);
+void ctn_threads_limit(int n, void (*fn)(void *), void *arg);
 void ctn_blas_name(char *buf, size_t size);
 
 /* The backends (one file each). */

@@ -23,28 +23,42 @@ typedef void (*set_fn)(int);
 
 static void *symbol(const char *name) { return dlsym(RTLD_DEFAULT, name); }
 
-/* n threads: the calling thread's OpenMP count (which OpenBLAS follows), and for n = 1
- * no active parallel region at all (max-active-levels 0): CHOLMOD's own loops ask for
- * a fixed 4 threads whatever the count says, and on a busy machine their barriers cost
- * more than the loops. */
+/* n threads for the calling thread's OpenMP regions (its nthreads ICV, which OpenBLAS
+ * follows): the thread's own setting, nothing else in the process changes. */
 void ctn_threads_push(int n, ctn_threads_saved *old)
 {
     get_fn max = (get_fn)(uintptr_t)symbol("omp_get_max_threads");
     set_fn set = (set_fn)(uintptr_t)symbol("omp_set_num_threads");
-    get_fn levels = (get_fn)(uintptr_t)symbol("omp_get_max_active_levels");
-    set_fn set_levels = (set_fn)(uintptr_t)symbol("omp_set_max_active_levels");
     old->threads = max && set ? max() : 0;
-    old->levels = levels && set_levels ? levels() : -1;
     if (old->threads && n > 0) set(n);
-    if (old->levels >= 0 && n == 1) set_levels(0);
+}
+
+/* fn(arg) with every OpenMP region it enters limited to n threads, the limit being the
+ * calling thread's own. CHOLMOD 3's supernodal factorization has loops of its own that
+ * ask for 4 threads through a num_threads clause (CHOLMOD_OMP_NUM_THREADS), which the
+ * thread count does not bound: under threads=1 they started threads the caller had not
+ * allowed (and on a busy machine their barriers cost more than the loops, commit
+ * 7efaa9d); under threads=2, teams of 4 (CHOLMOD's) and of 2 (the BLAS's) in turn made
+ * libgomp end and start two threads at each change (1 110 threads for one solve of the
+ * K = 100 net). Until now max-active-levels 0 kept them off for n = 1, but libgomp keeps
+ * that setting for the whole process. An OpenMP thread limit bounds every team, and
+ * within a teams construct it belongs to the thread that entered it: libgomp's entry
+ * point of `#pragma omp teams num_teams(1) thread_limit(n)` (GOMP_teams_reg, OpenMP
+ * 5.0; LLVM's runtime provides it as well) runs fn on the calling thread with its limit
+ * set to n and restores it after. Without it (no OpenMP, or an older runtime) fn runs
+ * as it is. */
+void ctn_threads_limit(int n, void (*fn)(void *), void *arg)
+{
+    typedef void (*teams_fn)(void (*)(void *), void *, unsigned, unsigned, unsigned);
+    teams_fn teams = (teams_fn)(uintptr_t)symbol("GOMP_teams_reg");
+    if (teams && n > 0) teams(fn, arg, 1, (unsigned)n, 0);
+    else fn(arg);
 }
 
 void ctn_threads_pop(const ctn_threads_saved *old)
 {
     set_fn set = (set_fn)(uintptr_t)symbol("omp_set_num_threads");
-    set_fn set_levels = (set_fn)(uintptr_t)symbol("omp_set_max_active_levels");
     if (old->threads && set) set(old->threads);
-    if (old->levels >= 0 && set_levels) set_levels(old->levels);
 }
 
 /* "OpenBLAS 0.3.21 (OpenMP)" from OpenBLAS's own configuration string, or the file the

@@ -185,6 +185,7 @@ int ctn_problem_solve(ctn_problem *p, ctn_solution **out)
     if (rc) return rc;
     s->rot = p->a->map.rot > 0;
     p->sum = &s->sum;
+    s->threads = p->opt.threads;
     s->sum.t_setup = p->t_setup;
     p->mode = 0;
     p->mech_node = p->mech_dir = -1;

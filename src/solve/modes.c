@@ -118,7 +118,7 @@ static int factor_shifted(ctn_modal *md, const ctn_solution *s)
     md->ls = p->ls;
     if (!rc && !info.ok) {
         ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
-        rc = ctn_linsolve_create(p->ctx, "cholmod-ldl", &pat, p->opt.ordering, &md->ldl);
+        rc = ctn_linsolve_create_threads(p->ctx, "cholmod-ldl", &pat, p->opt.ordering, p->opt.threads, &md->ldl);
         if (!rc) rc = ctn_linsolve_factor(md->ldl, md->Ax, 0.0, &info);
         md->sum.factorizations++;
         md->ls = md->ldl;
@@ -248,7 +248,7 @@ static int eigenpairs(ctn_modal *md, double *lambda, double **V)
     ctn_eigen_ops ops = { .ud = md, .solve = op_solve, .bmul = op_mass, .work = md->w0,
                           .solve_block = op_solve_block, .amul = op_stiffness, .absmul = op_abs,
                           .bmul2 = op_mass2, .amul2 = op_stiffness2,
-                          .threads = p->opt.threads == 1 ? 1 : 0 };
+                          .threads = p->opt.threads == 1 ? 1 : 0, .asked = p->opt.threads };
     ctn_eigen_info info;
     memset(&info, 0, sizeof info);
     int rc = CTN_OK;

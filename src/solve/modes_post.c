@@ -1,12 +1,11 @@
 /* What a modal analysis stores of each mode: the kind, frequencies, the shape per node
  * (mass-normalized, the largest component positive), participation and effective mass,
  * the nodes that move, and the residual |K phi - omega^2 M phi| / |K phi|. */
+#include "core/threads.h"
 #include "solve/modes.h"
 
 #include <math.h>
-#include <pthread.h>
 #include <string.h>
-#include <unistd.h>
 
 /* Largest component positive: the sign of an eigenvector is arbitrary, a result's not. */
 static void fix_sign(double *phi, size_t n)
@@ -99,7 +98,7 @@ static void describe(fill_job *j, double *phi, double lam, ctn_mode *out, double
     if (!(rel <= j->worst)) j->worst = rel;          /* a NaN too */
 }
 
-static void *fill_run(void *arg)
+static void fill_run(void *arg)
 {
     fill_job *j = arg;
     const ctn_modal *md = j->md;
@@ -109,13 +108,11 @@ static void *fill_run(void *arg)
         j->zero += j->res->mode[k].kind == CTN_MODE_ZERO;
         j->unstable += j->res->mode[k].kind == CTN_MODE_UNSTABLE;
     }
-    return NULL;
 }
 
-/* From 50 000 DOFs on a machine of two CPUs (and not threads=1), the second half of the
- * modes on a helper thread with scratch of its own (each mode reads K and M once: the
- * 20 modes of the K = 400 net took 0.19 s on one). */
-#define CTN_FILL_PARALLEL 50000
+/* Where the thread policy allows it (CTN_THR_MODES), the second half of the modes on
+ * the context's helper with scratch of its own (each mode reads K and M once: the 20
+ * modes of the K = 400 net took 0.19 s on one). */
 void ctn_modes_fill(ctn_modal *md, double *V, ctn_modes *res)
 {
     ctn_problem *p = md->p;
@@ -123,19 +120,16 @@ void ctn_modes_fill(ctn_modal *md, double *V, ctn_modes *res)
     fill_job job[2] = { { md, V, res, 0, count, md->w0, md->w1, md->d, 0, 0, 0, 0, 0 } };
     job[1] = job[0];
     job[1].k0 = job[1].k1 = count;
-    int two = count >= 2 && p->ndof >= CTN_FILL_PARALLEL && p->opt.threads != 1 && sysconf(_SC_NPROCESSORS_ONLN) >= 2;
+    int two = count >= 2 && ctn_thr_allows(p->ctx, p->opt.threads, CTN_THR_MODES, (double)p->ndof);
     double *mine = two ? ctn_malloc(p->ctx, 2 * p->ndof + p->ns, sizeof(double)) : NULL;
-    pthread_t t;
     if (mine) {
         job[0].k1 = job[1].k0 = count / 2;
         job[1].Mphi = mine;
         job[1].Kphi = mine + p->ndof;
         job[1].state = mine + 2 * p->ndof;
     }
-    int threaded = mine && !pthread_create(&t, NULL, fill_run, &job[1]);
-    fill_run(&job[0]);
-    if (threaded) pthread_join(t, NULL);
-    else if (mine) fill_run(&job[1]);
+    if (mine) ctn_thr_both(p->ctx, p->opt.threads, CTN_THR_MODES, (double)p->ndof, fill_run, &job[0], &job[1]);
+    else fill_run(&job[0]);
     ctn_free(mine);
     if (two && !mine) ctn_ctx_clear(p->ctx);            /* no scratch: one thread did it all */
     for (int i = 0; i < 2; i++) {

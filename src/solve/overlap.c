@@ -6,28 +6,29 @@
  * finished: the iteration costs the factorization, not the sum. The caller keeps its
  * thread, and can still drop the factorization (a converged state needs none) once its
  * residual is known. */
+#include "core/threads.h"
 #include "solve/problem.h"
 
-#include <unistd.h>
-
-static void *factorize(void *arg)
+static void factorize(void *arg)
 {
     ctn_overlap *o = arg;
     double t0 = ctn_clock();
     o->rc = ctn_linsolve_factor_feed(o->ls, o->Kx, o->shift, &o->feed, &o->info);
     o->t_fac = ctn_clock() - t0;
-    return NULL;
 }
+
 
 int ctn_overlap_possible(const ctn_asm *a, const ctn_linsolve *ls)
 {
-    return a->ndof >= CTN_OVERLAP_MIN_DOF && ctn_asm_can_feed(a) && ctn_linsolve_feedable(ls) &&
-           sysconf(_SC_NPROCESSORS_ONLN) >= 2;
+    return ctn_asm_can_feed(a) && ctn_linsolve_feedable(ls) &&
+           ctn_thr_allows(a->gather->ctx, ctn_asm_threads(a), CTN_THR_OVERLAP, (double)a->ndof);
 }
 
-int ctn_overlap_start(ctn_overlap *o, ctn_linsolve *ls, const double *Kx, double shift)
+int ctn_overlap_start(ctn_overlap *o, const ctn_asm *a, ctn_linsolve *ls, const double *Kx, double shift)
 {
     o->running = 0;
+    if (!ctn_asm_can_feed(a)) return 0;
+    o->ctx = a->gather->ctx;
     o->ls = ls;
     o->Kx = Kx;
     o->shift = shift;
@@ -35,7 +36,8 @@ int ctn_overlap_start(ctn_overlap *o, ctn_linsolve *ls, const double *Kx, double
     o->info = (ctn_factor_info){ 0, -1 };
     o->t_fac = 0;
     if (ctn_feed_init(&o->feed, ctn_linsolve_order(ls))) return 0;
-    if (pthread_create(&o->thread, NULL, factorize, o)) {
+    o->ticket = ctn_thr_start(o->ctx, ctn_asm_threads(a), CTN_THR_OVERLAP, (double)a->ndof, factorize, o);
+    if (!o->ticket) {
         ctn_feed_destroy(&o->feed);
         return 0;
     }
@@ -51,7 +53,7 @@ int ctn_overlap_assemble(ctn_overlap *o, const ctn_asm *a, const double *d, unsi
 
 int ctn_overlap_finish(ctn_overlap *o, ctn_factor_info *info)
 {
-    pthread_join(o->thread, NULL);
+    ctn_thr_wait(o->ctx, o->ticket);
     ctn_feed_destroy(&o->feed);
     o->running = 0;
     *info = o->info;
@@ -71,7 +73,7 @@ int ctn_overlap_eval_factor(const ctn_asm *a, ctn_linsolve *ls, const double *d,
                             ctn_factor_info *info)
 {
     ctn_overlap o;
-    if (!ctn_overlap_start(&o, ls, Kx, shift)) {
+    if (!ctn_overlap_start(&o, a, ls, Kx, shift)) {
         *collapsed = ctn_asm_eval(a, d, mode, f, Kx, U, bad);
         return ctn_linsolve_factor(ls, Kx, shift, info);
     }

@@ -5,15 +5,12 @@
 #include "assemble/asm.h"
 #include "linalg/linsolve.h"
 
-#include <pthread.h>
-
-#define CTN_OVERLAP_MIN_DOF 30000   /* below, a thread's start costs what it saves */
-
-/* A factorization of K + shift I running on a thread of its own, fed the columns of K
- * by the caller's assembly. */
+/* A factorization of K + shift I running on the context's helper thread
+ * (core/threads.h), fed the columns of K by the caller's assembly. */
 typedef struct ctn_overlap {
     int running;               /* started, not yet finished or abandoned */
-    pthread_t thread;
+    ctn_ctx *ctx;              /* whose helper runs it */
+    int ticket;                /* ctn_thr_start's */
     ctn_feed feed;
     ctn_linsolve *ls;
     const double *Kx;
@@ -24,11 +21,12 @@ typedef struct ctn_overlap {
 } ctn_overlap;
 
 /* Whether a factorization can follow the assembly of a (a model assembled node by node,
- * a solver whose next factorization follows the columns, two CPUs). */
+ * a solver whose next factorization follows the columns, the thread policy's leave). */
 int ctn_overlap_possible(const ctn_asm *a, const ctn_linsolve *ls);
-/* Start factorizing K + shift I from Kx (being assembled): 1 if started, 0 if the thread
- * could not start (nothing to finish then). */
-int ctn_overlap_start(ctn_overlap *o, ctn_linsolve *ls, const double *Kx, double shift);
+/* Start factorizing K + shift I from Kx (being assembled by a) on the helper: 1 if
+ * started, 0 if not (not allowed, the helper busy or not startable: nothing to finish
+ * then). */
+int ctn_overlap_start(ctn_overlap *o, const ctn_asm *a, ctn_linsolve *ls, const double *Kx, double shift);
 /* The assembly of f_int and K at d into f and Kx (as ctn_asm_eval), feeding o. */
 int ctn_overlap_assemble(ctn_overlap *o, const ctn_asm *a, const double *d, unsigned mode, double *f, double *Kx,
                          double *U, size_t *bad);

@@ -74,8 +74,7 @@ static int setup(ctn_problem *p)
     if (p->ndof == 0) return CTN_OK;        /* statically determinate: nothing to factor */
     const char *name = p->opt.linear_solver ? p->opt.linear_solver : p->strategy->linear_solver;
     ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
-    if ((rc = ctn_linsolve_create(p->ctx, name, &pat, p->opt.ordering, &p->ls))) return rc;
-    ctn_linsolve_set_threads(p->ls, p->opt.threads);
+    if ((rc = ctn_linsolve_create_threads(p->ctx, name, &pat, p->opt.ordering, p->opt.threads, &p->ls))) return rc;
     int reuse = p->strategy->globalized && p->opt.reuse && !p->fl && !ctn_linsolve_type(p->ls)->indefinite;
     if (reuse && !(p->cg = ctn_calloc(p->ctx, 4 * p->ndof, sizeof(double)))) return CTN_ERR_NOMEM;
     /* Pure Newton factorizes every tangent it assembles (but the converged state's) */
@@ -191,7 +190,7 @@ int ctn_problem_residual(ctn_problem *p, const double *d, int with_K, double *rn
     const int *eq = p->a->map.eq;
     size_t bad = 0;
     ctn_problem_settle(p);
-    if (with_K && p->overlap && ctn_overlap_possible(p->a, p->ls) && ctn_overlap_start(&p->ovl, p->ls, p->Kx, 0.0))
+    if (with_K && p->overlap && ctn_overlap_possible(p->a, p->ls) && ctn_overlap_start(&p->ovl, p->a, p->ls, p->Kx, 0.0))
         *valid = !ctn_overlap_assemble(&p->ovl, p->a, d, p->mode, p->fint, p->Kx, pi ? &U : NULL, &bad);
     else *valid = !ctn_asm_eval(p->a, d, p->mode, p->fint, with_K ? p->Kx : NULL, pi ? &U : NULL, &bad);
     if (!*valid) p->sum->fail_element = p->m->elements.v[bad].id;     /* reported if not converged */

@@ -35,6 +35,8 @@ struct ctn_solution {
     size_t nr, nd, capr, capd;
     ctn_modes *modes;          /* the last modal analysis, NULL if none */
     int rot;                   /* some node has rotations: the steps keep rot and moment */
+    int threads;               /* the threads= option of the solve that made it (0 auto,
+                                  1, n): the writers ask the thread policy with it */
 };
 
 int ctn_solution_create(ctn_ctx *ctx, size_t nn, size_t ne, ctn_solution **out);
