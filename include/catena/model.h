@@ -91,6 +91,11 @@ typedef struct ctn_cable_spec {
                                  model is solved or compared (they refuse it until then) */
     double target_value;      /* H [force], sag [length] or tension [force] */
 } ctn_cable_spec;
+/* The `cable` directive's defaults: n and length 0 (to be set), shape arc, guess_strain
+ * 1e-3, start auto, no prestress, no group, no target. Start every spec from it: a
+ * zero-initialised spec means guess_strain 0 and start arc, which a sagging cable may
+ * not converge from. */
+void ctn_cable_spec_init(ctn_cable_spec *s);
 
 /* Create an empty model bound to ctx (errors are recorded there; ctx must outlive it). */
 int ctn_model_create(ctn_ctx *ctx, ctn_model **out);

@@ -120,7 +120,10 @@ int ctn_error(ctn_ctx *ctx, int code, const char *fmt, ...)
 int ctn_error_at(ctn_ctx *ctx, int code, const char *file, int line, const char *fmt, ...)
 {
     if (!ctx) return code;
-    int k = snprintf(ctx->msg, sizeof ctx->msg, "%s:%d: ", file ? file : "<input>", line);
+    int k;                   /* a model built through the API has no file, no line */
+    if (file && *file) k = line > 0 ? snprintf(ctx->msg, sizeof ctx->msg, "%s:%d: ", file, line)
+                                    : snprintf(ctx->msg, sizeof ctx->msg, "%s: ", file);
+    else k = line > 0 ? snprintf(ctx->msg, sizeof ctx->msg, "line %d: ", line) : 0;
     if (k < 0 || (size_t)k >= sizeof ctx->msg) k = 0;
     va_list ap;
     va_start(ap, fmt);

@@ -44,7 +44,8 @@ int ctn_interrupted(ctn_ctx *ctx);
 /* Record an error and return its code. printf-style message. */
 int ctn_error(ctn_ctx *ctx, int code, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
-/* Record an error located in an input file: message "file:line: ...". */
+/* Record an error located in an input file: message "file:line: ..." ("file: ..."
+ * without a line, "..." alone for a model built through the API: no file, line 0). */
 int ctn_error_at(ctn_ctx *ctx, int code, const char *file, int line, const char *fmt, ...)
     __attribute__((format(printf, 5, 6)));
 

@@ -290,7 +290,8 @@ static int d_cable(ctn_line *l)
 {
     int a = 0, b = 0, n = 0, first = 0, last = 0;
     double q = 0, force = 0;
-    ctn_cable_spec spec = { .n = 0, .length = 0, .shape = CTN_SHAPE_ARC, .guess_strain = 1e-3, .start = CTN_START_ARC, .prestress = CTN_PRESTRESS_NONE };
+    ctn_cable_spec spec;
+    ctn_cable_spec_init(&spec);
     int rc = ctn_parse_positional(l, 2, "cable NODE1 NODE2 section=SECTION n=COUNT length=LENGTH|H=FORCE|sag=LENGTH|tension=FORCE [shape=arc|straight] [start=auto|arc|catenary] [guess=STRAIN] [N0=|s0=|eps0=|q=|force=] [group=NAME]");
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[1], &a);
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[2], &b);

@@ -59,6 +59,17 @@ static int reserve_all(ctn_model *m, size_t n)
     return rc;
 }
 
+void ctn_cable_spec_init(ctn_cable_spec *s)
+{
+    if (!s) return;
+    memset(s, 0, sizeof *s);
+    s->shape = CTN_SHAPE_ARC;
+    s->guess_strain = 1e-3;
+    s->start = CTN_START_AUTO;
+    s->prestress = CTN_PRESTRESS_NONE;
+    s->target = CTN_TARGET_NONE;
+}
+
 int ctn_model_add_cable(ctn_model *m, int a, int b, const char *section,
                         const ctn_cable_spec *spec, int *first_elem, int *last_elem)
 {
