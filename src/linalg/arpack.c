@@ -5,7 +5,15 @@
 #include "linalg/linsolve.h"
 
 #include <arpack/arpack.h>
+#include <pthread.h>
 #include <string.h>
+
+/* ARPACK keeps its reverse-communication state (and its timing and debug common
+ * blocks) in Fortran SAVE variables: one analysis at a time in the process, whatever the
+ * contexts. Two concurrent modal analyses take turns here (the second waits for the
+ * first's whole iteration); the block Lanczos solver (blanczos.c) has no such state.
+ * This lock is the library's one process-wide object, guarding a library that has one. */
+static pthread_mutex_t arpack_lock = PTHREAD_MUTEX_INITIALIZER;
 
 #define CTN_ARPACK_MAXITER 500  /* implicit restarts */
 
@@ -119,14 +127,16 @@ int ctn_eigen_shift_invert(ctn_ctx *ctx, int n, int nev, double sigma, const ctn
     ctn_threads_saved saved;                        /* ARPACK's BLAS calls are vector-sized: */
     ctn_threads_push(1, &saved);                    /* threads would only spin in them */
     if (!rc) {
+        pthread_mutex_lock(&arpack_lock);
         start_vector(w.resid, n);
         rc = iterate(ctx, &w, ops, iparam, ipntr, info);
-    }
-    if (!rc) {
-        int status = 0;
-        dseupd_c(1, "A", w.select, w.d, w.v, n, sigma, "G", n, "LM", nev, 0.0, w.resid, w.ncv, w.v, n,
-                 iparam, ipntr, w.workd, w.workl, w.lworkl, &status);
-        if (status) rc = ctn_error(ctx, CTN_ERR_LINALG, "eigen-solver: ARPACK dseupd failed (info %d)", status);
+        if (!rc) {
+            int status = 0;
+            dseupd_c(1, "A", w.select, w.d, w.v, n, sigma, "G", n, "LM", nev, 0.0, w.resid, w.ncv, w.v, n,
+                     iparam, ipntr, w.workd, w.workl, w.lworkl, &status);
+            if (status) rc = ctn_error(ctx, CTN_ERR_LINALG, "eigen-solver: ARPACK dseupd failed (info %d)", status);
+        }
+        pthread_mutex_unlock(&arpack_lock);
     }
     ctn_threads_pop(&saved);
     if (!rc) {

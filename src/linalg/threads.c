@@ -16,6 +16,7 @@
 #include <dlfcn.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <pthread.h>
 #include <string.h>
 
 typedef int (*get_fn)(void);
@@ -62,9 +63,23 @@ void ctn_threads_pop(const ctn_threads_saved *old)
 }
 
 /* "OpenBLAS 0.3.21 (OpenMP)" from OpenBLAS's own configuration string, or the file the
- * BLAS's dgemm comes from ("reference BLAS (libblas.so.3)"). */
+ * BLAS's dgemm comes from ("reference BLAS (libblas.so.3)"). openblas_get_config writes a
+ * static buffer of OpenBLAS's at every call: the name is made once in the process
+ * (pthread_once) and copied from there, so that solves in several threads do not race. */
+static char blas_name[96];
+static pthread_once_t blas_once = PTHREAD_ONCE_INIT;
+static void blas_name_once(void);
+
 void ctn_blas_name(char *buf, size_t size)
 {
+    pthread_once(&blas_once, blas_name_once);
+    snprintf(buf, size, "%s", blas_name);
+}
+
+static void blas_name_once(void)
+{
+    char *buf = blas_name;
+    size_t size = sizeof blas_name;
     typedef char *(*config_fn)(void);
     config_fn config = (config_fn)(uintptr_t)symbol("openblas_get_config");
     get_fn parallel = (get_fn)(uintptr_t)symbol("openblas_get_parallel");
