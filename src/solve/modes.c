@@ -338,7 +338,10 @@ int ctn_problem_modes(ctn_problem *p, ctn_solution *s, const ctn_modal_options *
         md.sum.sigma = md.sigma;
         md.sum.count = opt->count;
         ctn_modes_fill(&md, V, res);
-        if (md.failed) rc = not_eigenpairs(&md);
+        if (md.failed) {
+            rc = not_eigenpairs(&md);
+            ctn_modes_destroy(&res);
+        }
     }
     if (!rc) {
         md.sum.t_total = ctn_clock() - t0;
