@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Install the Debian packages catena needs, only those that are missing. libopenblas0-openmp
-# becomes the BLAS under CHOLMOD (Debian's alternatives) and runs its threads in the OpenMP
-# pool CHOLMOD uses: one threading layer, sized by catena for each factorization.
+# is the BLAS under CHOLMOD, linked by its own path (CMakeLists.txt), and runs its threads
+# in the OpenMP pool CHOLMOD uses: one threading layer, sized by catena for each
+# factorization. The machine's BLAS alternatives are left as they were.
 set -eu
 pkgs="gcc binutils make cmake pkg-config libsuitesparse-dev libopenblas0-openmp libarpack2-dev liblapack-dev libcjson-dev gnuplot-nox clang libclang-rt-14-dev python3"
 # CTN_DEPS_VTK=1: also VTK's Python reader (76 packages), which tests/cli/vtu.sh then
@@ -15,5 +16,21 @@ done
 echo "deps: installing$missing" >&2
 SUDO=""
 [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+# Installing libopenblas0-openmp would switch Debian's libblas.so.3 and liblapack.so.3
+# alternatives for every program on the machine; catena links OpenBLAS by its own path
+# (CMakeLists.txt), so what the alternatives pointed to before is put back.
+arch=$(dpkg-architecture -qDEB_HOST_MULTIARCH 2>/dev/null || gcc -print-multiarch 2>/dev/null || echo x86_64-linux-gnu)
+alts="libblas.so.3-$arch liblapack.so.3-$arch"
+declare -A before
+for a in $alts; do
+  before[$a]=$(update-alternatives --query "$a" 2>/dev/null | awk '/^Value:/ { print $2 }')
+done
 $SUDO apt-get update -qq
 DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq $missing >/dev/null
+for a in $alts; do
+  now=$(update-alternatives --query "$a" 2>/dev/null | awk '/^Value:/ { print $2 }')
+  if [ -n "${before[$a]}" ] && [ "$now" != "${before[$a]}" ]; then
+    echo "deps: $a back to ${before[$a]} (catena links OpenBLAS itself)" >&2
+    $SUDO update-alternatives --set "$a" "${before[$a]}" >/dev/null
+  fi
+done
