@@ -24,6 +24,8 @@ typedef struct targets {
     size_t nt, ncab;         /* targets; the first ncab are cables, the rest catenaries */
     ctn_cable **rec;         /* [nt] their records (m->cables, then m->etargets) */
     double *L, *Q, *J, *dL, *Lold;
+    double *rs;                /* nt: the Jacobian's row scales (dense_solve) */
+    size_t *perm;              /* nt: its row order (dense_solve) */
     double *d, *dp, *u3, *f, *fm, *b, *v;   /* state, state, 3 nn, state, state, ndof, ndof */
     int outer;               /* outer iterations */
     ctn_solve_summary sum;   /* where the sensitivity solves count */
@@ -136,23 +138,39 @@ static int jacobian(targets *tg, int *ok)
     return rc;
 }
 
-/* Solve J x = b (n x n, row-major, overwritten) by elimination with partial pivoting;
- * 0 if singular. */
-static int dense_solve(size_t n, double *J, double *b)
+/* Solve J x = b (n x n, row-major, overwritten) by elimination with partial pivoting,
+ * rs and perm n of scratch. -1 when solved; else the target (row) that the others
+ * determine: its pivot is 0, or at below TARGET_PIVOT_RTOL of its row's scale, so the lengths
+ * that meet the targets are not unique (two cables in line at a free node, both set by
+ * H=, carry the same H whatever their lengths share). The Jacobian is made by central
+ * differences to about 1e-7 of its rows (measured on that ring: its two rows, equal in
+ * exact arithmetic, differ by 8e-8), so a pivot below 1e-6 of its row is zero. */
+#define TARGET_PIVOT_RTOL 1e-6
+static long dense_solve(size_t n, double *J, double *b, double *rs, size_t *perm)
 {
+    for (size_t i = 0; i < n; i++) {
+        rs[i] = 0;
+        perm[i] = i;
+        for (size_t c = 0; c < n; c++) rs[i] = fmax(rs[i], fabs(J[i * n + c]));
+    }
     for (size_t k = 0; k < n; k++) {
         size_t piv = k;
         for (size_t i = k + 1; i < n; i++)
             if (fabs(J[i * n + k]) > fabs(J[piv * n + k])) piv = i;
-        if (!(fabs(J[piv * n + k]) > 0)) return 0;
+        if (!(fabs(J[piv * n + k]) > TARGET_PIVOT_RTOL * rs[piv])) return (long)perm[piv];
         for (size_t c = 0; c < n; c++) {
             double t = J[k * n + c];
             J[k * n + c] = J[piv * n + c];
             J[piv * n + c] = t;
         }
-        double t = b[k];
+        double t = b[k], r = rs[k];
+        size_t q = perm[k];
         b[k] = b[piv];
         b[piv] = t;
+        rs[k] = rs[piv];
+        rs[piv] = r;
+        perm[k] = perm[piv];
+        perm[piv] = q;
         for (size_t i = k + 1; i < n; i++) {
             double f = J[i * n + k] / J[k * n + k];
             for (size_t c = k; c < n; c++) J[i * n + c] -= f * J[k * n + c];
@@ -163,7 +181,7 @@ static int dense_solve(size_t n, double *J, double *b)
         for (size_t c = k + 1; c < n; c++) b[k] -= J[k * n + c] * b[c];
         b[k] /= J[k * n + k];
     }
-    return 1;
+    return -1;
 }
 
 static double misfit(const targets *tg)
@@ -198,6 +216,17 @@ static int not_met(targets *tg, const char *why)
     const ctn_cable *c = tg->rec[worst];
     return ctn_error_at(tg->ctx, CTN_ERR_MODEL, tg->m->file, c->line, "%s: no unstressed length gives %s=%g: %s",
                         name_of(tg, worst, name, sizeof name), target_key[c->target], c->target_value, why);
+}
+
+/* Targets that the others determine: the lengths that meet them are not unique. */
+static int not_unique(targets *tg, size_t k)
+{
+    char name[48];
+    const ctn_cable *c = tg->rec[k];
+    return ctn_error_at(tg->ctx, CTN_ERR_MODEL, tg->m->file, c->line, "%s: %s=%g does not fix its length: the other "
+                        "targets already determine it (e.g. two cables in line at a free node, both set by H=, "
+                        "carry the same H whatever lengths they share), so the lengths are not unique; give one "
+                        "of them length=", name_of(tg, k, name, sizeof name), target_key[c->target], c->target_value);
 }
 
 /* The extremum of the target between lengths a < b that bracket it (sign 1: the
@@ -332,8 +361,10 @@ static int find_lengths(targets *tg)
         if ((rc = jacobian(tg, &ok))) return rc;
         if (!ok) return not_met(tg, "the equilibrium reached is not stable");
         for (size_t i = 0; i < tg->nt; i++) tg->dL[i] = tg->rec[i]->target_value - tg->Q[i];
-        if (!dense_solve(tg->nt, tg->J, tg->dL))
+        long dep = dense_solve(tg->nt, tg->J, tg->dL, tg->rs, tg->perm);
+        if (dep >= 0 && tg->nt == 1)
             return not_met(tg, "the target does not change with the length there (a slack or straight cable?)");
+        if (dep >= 0) return not_unique(tg, (size_t)dep);
         memcpy(tg->Lold, tg->L, tg->nt * sizeof(double));
         double scale = 1;                           /* at most halve or double a length */
         for (size_t i = 0; i < tg->nt; i++) {
@@ -365,7 +396,8 @@ static int alloc_targets(targets *tg)
     size_t nt = tg->nt ? tg->nt : 1, ns = tg->p->ns, nd = tg->p->ndof ? tg->p->ndof : 1;
     double **small[] = { &tg->L, &tg->Q, &tg->dL, &tg->Lold };
     double **state[] = { &tg->d, &tg->dp, &tg->f, &tg->fm };
-    if (!(tg->rec = ctn_calloc(ctx, nt, sizeof(ctn_cable *))) || !(tg->J = ctn_calloc(ctx, nt * nt, sizeof(double))))
+    if (!(tg->rec = ctn_calloc(ctx, nt, sizeof(ctn_cable *))) || !(tg->J = ctn_calloc(ctx, nt * nt, sizeof(double))) ||
+        !(tg->rs = ctn_calloc(ctx, nt, sizeof(double))) || !(tg->perm = ctn_calloc(ctx, nt, sizeof(size_t))))
         return CTN_ERR_NOMEM;
     for (size_t i = 0; i < 4; i++)
         if (!(*small[i] = ctn_calloc(ctx, nt, sizeof(double))) || !(*state[i] = ctn_calloc(ctx, ns, sizeof(double))))
@@ -381,6 +413,8 @@ static void free_targets(targets *tg)
     double *v[] = { tg->L, tg->Q, tg->dL, tg->Lold, tg->d, tg->dp, tg->f, tg->fm, tg->u3, tg->b, tg->v, tg->J };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
     ctn_free(tg->rec);
+    ctn_free(tg->rs);
+    ctn_free(tg->perm);
     ctn_problem_destroy(&tg->p);
 }
 
