@@ -18,9 +18,10 @@
  * told no and runs its work serially: nobody waits for a helper it did not start. A
  * helper that cannot be started (no memory, no thread) also means serial: the work is
  * done either way. */
-#define CTN_THR_HELPERS 2
 #ifndef CTN_CORE_THREADS_H
 #define CTN_CORE_THREADS_H
+
+#define CTN_THR_HELPERS 2
 
 #include "catena/core.h"
 

@@ -22,7 +22,7 @@ static void release(ctn_atomic_file *f)
 /* The file a write to path must replace: path itself when nothing is there or a regular
  * file is, the file a symbolic link leads to (written through, not replaced), never a
  * device, a directory, a pipe or a socket, nor a file this context has read. *target is
- * allocated (path's copy or the link's resolution). */
+ * allocated (path's copy or the link's resolution); target NULL: the checks only. */
 static int resolve_target(ctn_ctx *ctx, const char *path, char **target)
 {
     struct stat st;
@@ -51,12 +51,18 @@ static int resolve_target(ctn_ctx *ctx, const char *path, char **target)
             return rc;
         }
     }
+    if (!target) {
+        free(real);
+        return CTN_OK;
+    }
     size_t n = strlen(t) + 1;
     *target = ctn_malloc(ctx, n, 1);
     if (*target) memcpy(*target, t, n);
     free(real);
     return *target ? CTN_OK : CTN_ERR_NOMEM;
 }
+
+int ctn_atomic_check(ctn_ctx *ctx, const char *path) { return resolve_target(ctx, path, NULL); }
 
 int ctn_atomic_open(ctn_ctx *ctx, const char *path, ctn_atomic_file *f)
 {

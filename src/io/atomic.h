@@ -17,6 +17,11 @@ typedef struct ctn_atomic_file {
 /* An unopened file: commit and abort are harmless no-ops on it. */
 #define CTN_ATOMIC_FILE_INIT { NULL, NULL, NULL, -1 }
 
+/* CTN_OK when a write to path may replace what is there: nothing, a regular file, or a
+ * link to one (written through); else CTN_ERR_IO naming path (a device, directory, pipe
+ * or socket, a link to nothing, a file this context has read). ctn_atomic_open makes
+ * the same check; a set of files makes it for every file before staging any. */
+int ctn_atomic_check(ctn_ctx *ctx, const char *path);
 /* Create the temporary beside path. On failure f holds nothing to release. */
 int ctn_atomic_open(ctn_ctx *ctx, const char *path, ctn_atomic_file *f);
 /* The sink writing to the open temporary. */

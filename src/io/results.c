@@ -54,16 +54,14 @@ static int target(ctn_ctx *ctx, const char *dir, const char *name, char *path, s
     return ctn_error(ctx, CTN_ERR_IO, "%s: path too long", dir);
 }
 
-/* A target that exists must be a regular file (checked before anything is written). */
+/* Every target may be replaced (ctn_atomic_check), checked before anything is written. */
 static int check_targets(ctn_ctx *ctx, const char *dir, const job *jobs, size_t n)
 {
     for (size_t i = 0; i < n; i++) {
         char path[4096];
-        struct stat st;
         int rc = target(ctx, dir, jobs[i].name, path, sizeof path);
+        if (!rc) rc = ctn_atomic_check(ctx, path);
         if (rc) return rc;
-        if (!stat(path, &st) && !S_ISREG(st.st_mode))
-            return ctn_error(ctx, CTN_ERR_IO, "%s: exists and is not a regular file", path);
     }
     return CTN_OK;
 }

@@ -17,7 +17,6 @@ static void factorize(void *arg)
     o->t_fac = ctn_clock() - t0;
 }
 
-
 int ctn_overlap_possible(const ctn_asm *a, const ctn_linsolve *ls)
 {
     return ctn_asm_can_feed(a) && ctn_linsolve_feedable(ls) &&
