@@ -80,7 +80,7 @@ static int d_section(ctn_line *l)
     ctn_section_spec_init(&spec);
     int rc = ctn_parse_positional(l, 1, "section NAME material=MATERIAL A=AREA [w=WEIGHT] [mass=MASS] [mbl=FORCE] [safety=FACTOR] [Iy=] [Iz=] [J=] [Asy=] [Asz=]");
     const char *mat = rc ? NULL : ctn_parse_key(l, 2, "material");
-    if (!rc && !mat) return ctn_parse_missing(l, 2, "material", NULL);
+    if (!rc && !mat) return ctn_parse_missing(l, 2, NULL, "material", NULL);
     if (!rc) rc = ctn_parse_key_num(l, 2, "A", 1, &spec.A);
     if (!rc) rc = ctn_parse_key_num(l, 2, "w", 0, &spec.w);
     if (!rc && ctn_parse_key(l, 2, "mass")) {
@@ -184,7 +184,7 @@ static int d_element(ctn_line *l)
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[2], &a);
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[3], &b);
     const char *sec = rc ? NULL : ctn_parse_key(l, 4, "section");
-    if (!rc && !sec) return ctn_parse_missing(l, 4, "section", NULL);
+    if (!rc && !sec) return ctn_parse_missing(l, 4, NULL, "section", NULL);
     char what[8 + CTN_FMT_MAX];
     memcpy(what, "element ", 8);
     ctn_fmt_int(what + 8, id);                       /* once per line: not printf */
@@ -276,7 +276,7 @@ static int cable_length(ctn_line *l, ctn_cable_spec *spec)
             return ctn_parse_error(l, "cable: give one of length=, H=, sag=, tension= (found %s= and %s=)", keys[given], keys[k]);
         given = k;
     }
-    if (given < 0) return ctn_parse_missing(l, 3, "length", " (or a target H=, sag= or tension=)");
+    if (given < 0) return ctn_parse_missing(l, 3, NULL, "length", " (or a target H=, sag= or tension=)");
     double v = 0;
     int rc = ctn_parse_key_num(l, 3, keys[given], 1, &v);
     if (!rc && given && !(v > 0)) return ctn_parse_error(l, "cable: %s must be positive (found %g)", keys[given], v);
@@ -296,8 +296,8 @@ static int d_cable(ctn_line *l)
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[1], &a);
     if (!rc) rc = ctn_parse_int(l, "a node id", l->tok[2], &b);
     const char *sec = rc ? NULL : ctn_parse_key(l, 3, "section");
-    if (!rc && !sec) return ctn_parse_missing(l, 3, "section", NULL);
-    if (!rc && !ctn_parse_key(l, 3, "n")) return ctn_parse_missing(l, 3, "n", NULL);
+    if (!rc && !sec) return ctn_parse_missing(l, 3, NULL, "section", NULL);
+    if (!rc && !ctn_parse_key(l, 3, "n")) return ctn_parse_missing(l, 3, NULL, "n", NULL);
     if (!rc) rc = key_int(l, "n", 1, CTN_CABLE_MAX_N, &n);
     if (!rc) rc = cable_length(l, &spec);
     if (!rc) rc = cable_shape(l, &spec);
@@ -411,7 +411,7 @@ static int d_modes(ctn_line *l)
     o.count = 0;
     o.shift = 0;
     int rc = ctn_parse_positional(l, 0, "modes count=N [mass=lumped|consistent] [shift=HZ] [solver=auto|block|arpack]");
-    if (!rc && !ctn_parse_key(l, 1, "count")) return ctn_parse_missing(l, 1, "count", NULL);
+    if (!rc && !ctn_parse_key(l, 1, "count")) return ctn_parse_missing(l, 1, NULL, "count", NULL);
     if (!rc) rc = key_int(l, "count", 1, 0x7fffffff, &o.count);
     if (!rc) rc = key_word(l, "mass", masses, 2, &mass);
     if (!rc) rc = key_word(l, "solver", solvers, 3, &solver);

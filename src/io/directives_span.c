@@ -13,7 +13,7 @@ static int span_keys(ctn_line *l, int from, const char *what, ctn_element_spec *
 {
     spec->section = ctn_parse_key(l, from, "section");
     spec->group = ctn_parse_key(l, from, "group");
-    if (!spec->section) return ctn_parse_error(l, "%s: missing required key 'section='", what);
+    if (!spec->section) return ctn_parse_missing(l, from, what, "section", NULL);
     int rc = ctn_parse_prestress(l, from, what, NULL, &spec->prestress, &spec->prestress_value);
     if (rc || !ctn_parse_key(l, from, "length")) return rc;
     if (spec->prestress != CTN_PRESTRESS_NONE)

@@ -163,7 +163,7 @@ static int near_edits(const char *a, size_t n, const char *b, size_t m)
     return d[n][m] < 3 ? d[n][m] : 3;
 }
 
-int ctn_parse_missing(const ctn_line *l, int from, const char *key, const char *more)
+int ctn_parse_missing(const ctn_line *l, int from, const char *what, const char *key, const char *more)
 {
     size_t kl = strlen(key);
     for (int i = from; i < l->ntok && i < 64; i++) {
@@ -174,13 +174,13 @@ int ctn_parse_missing(const ctn_line *l, int from, const char *key, const char *
             return ctn_parse_error(l, "unknown key '%.*s' for directive '%s' (did you mean '%s='?)", (int)n,
                                    l->tok[i], l->tok[0], key);
     }
-    return ctn_parse_error(l, "%s: missing required key '%s='%s", l->tok[0], key, more ? more : "");
+    return ctn_parse_error(l, "%s: missing required key '%s='%s", what ? what : l->tok[0], key, more ? more : "");
 }
 
 int ctn_parse_key_num(ctn_line *l, int from, const char *key, int required, double *out)
 {
     const char *v = ctn_parse_key(l, from, key);
-    if (!v) return required ? ctn_parse_missing(l, from, key, NULL) : CTN_OK;
+    if (!v) return required ? ctn_parse_missing(l, from, NULL, key, NULL) : CTN_OK;
     char what[80];
     snprintf(what, sizeof what, "'%s'", key);
     return ctn_parse_num(l, what, v, out);

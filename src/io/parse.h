@@ -43,9 +43,10 @@ int ctn_parse_leftovers(const ctn_line *l, int from, const char *directive);
 /* The error for a required key that is missing: when an unused key of the line (from
  * token `from`) is a misspelling of it (within two edits, or another case), the message
  * names that unknown key and the one meant ("unknown key 'lenght' for directive 'cable'
- * (did you mean 'length='?)"); else "DIRECTIVE: missing required key 'KEY='" and `more`
- * (NULL, or a hint such as " (or a target H=, sag= or tension=)"). */
-int ctn_parse_missing(const ctn_line *l, int from, const char *key, const char *more);
+ * (did you mean 'length='?)"); else "WHAT: missing required key 'KEY='" and `more`
+ * (NULL, or a hint such as " (or a target H=, sag= or tension=)"), WHAT the directive's
+ * name, or `what` when given ("catenary 1"). */
+int ctn_parse_missing(const ctn_line *l, int from, const char *what, const char *key, const char *more);
 
 /* The reader's pieces (reader.c), shared with the form-finding writer, which walks the
  * same lines. Split one line (modified in place) into tokens; comments start with '#'. */
