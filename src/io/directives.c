@@ -2,7 +2,7 @@
 #include "io/fmt.h"
 #include "io/parse.h"
 #include "catena/formfind.h"
-#include "solve/problem.h"
+#include "problem/problem.h"
 
 #include <ctype.h>
 #include <stdio.h>

@@ -9,7 +9,7 @@
 #include "catena/io.h"
 #include "core/ctx.h"
 #include "core/threads.h"
-#include "solve/solution.h"
+#include "problem/solution.h"
 
 #include <errno.h>
 #include <stdio.h>
