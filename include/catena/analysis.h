@@ -46,6 +46,9 @@ typedef struct ctn_stability_options {
 void ctn_stability_options_default(ctn_stability_options *opt);
 /* The defaults of the modal analysis (count 0: set it to the modes wanted). */
 void ctn_modal_options_default(ctn_modal_options *opt);
+/* CTN_OK, or CTN_ERR_INVALID with a message naming the option out of range (a count of
+ * 0 is in range: no modal analysis). */
+int ctn_modal_options_check(ctn_ctx *ctx, const ctn_modal_options *opt);
 
 typedef struct ctn_analysis ctn_analysis;
 

@@ -65,6 +65,6 @@ void ctn_free(void *p);
  * writes) this is most of the cost of fresh memory. */
 #define CTN_HUGE_PAGE ((size_t)2 << 20)
 #define CTN_HUGE_MIN ((size_t)4 << 20)
-void ctn_mem_huge(void *p, size_t bytes);
+/* ctn_mem_huge is public (catena/core.h). */
 
 #endif

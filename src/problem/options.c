@@ -117,6 +117,16 @@ int ctn_solve_options_take(ctn_ctx *ctx, ctn_solve_options *dst, const ctn_solve
     return rc;
 }
 
+int ctn_modal_options_check(ctn_ctx *ctx, const ctn_modal_options *opt)
+{
+    char msg[256];
+    if (!opt) return ctn_error(ctx, CTN_ERR_INVALID, "modal options are NULL");
+    ctn_modal_options o;
+    int rc = ctn_modal_options_take(ctx, &o, opt);
+    if (rc) return rc;
+    return ctn_modal_options_fault(&o, msg, sizeof msg) ? ctn_error(ctx, CTN_ERR_INVALID, "%s", msg) : CTN_OK;
+}
+
 int ctn_modal_options_take(ctn_ctx *ctx, ctn_modal_options *dst, const ctn_modal_options *src)
 {
     ctn_modal_options_default(dst);
