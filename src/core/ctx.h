@@ -26,6 +26,7 @@ struct ctn_ctx {
     struct ctn_thr_pool *pool;  /* the helper thread (core/threads.c), NULL until needed */
     long thr_started;        /* threads started for this context (tests) */
     int thr_any_size;        /* tests: 1 takes every site's size threshold as met */
+    const struct ctn_comm *comm; /* the processes of an analysis (dist/comm.h), NULL: one */
 };
 
 /* Remember the file open as fd as an input of this context (the first CTN_INPUTS_MAX):

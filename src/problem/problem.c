@@ -46,13 +46,17 @@ static int alloc_vectors(ctn_problem *p)
 {
     ctn_ctx *ctx = p->ctx;
     double **vs[] = { &p->fint, &p->fext, &p->f0, &p->f1, &p->p0, &p->p1, &p->dsave, &p->react };
-    double **vn[] = { &p->r, &p->dd, &p->w };
+    ctn_dvec *vn[] = { &p->vr, &p->vdd, &p->vw };
+    double **an[] = { &p->r, &p->dd, &p->w };
     for (size_t i = 0; i < sizeof vs / sizeof *vs; i++)
         if (!(*vs[i] = ctn_calloc(ctx, p->ns, sizeof(double)))) return CTN_ERR_NOMEM;
-    for (size_t i = 0; i < sizeof vn / sizeof *vn; i++)
-        if (!(*vn[i] = ctn_calloc(ctx, p->ndof ? p->ndof : 1, sizeof(double)))) return CTN_ERR_NOMEM;
+    for (size_t i = 0; i < sizeof vn / sizeof *vn; i++) {
+        if (ctn_dvec_create(ctx, &p->eq, vn[i])) return CTN_ERR_NOMEM;
+        *an[i] = vn[i]->v;
+    }
     if (!(p->v3 = ctn_calloc(ctx, 3 * p->a->nn, sizeof(double)))) return CTN_ERR_NOMEM;
     if (!(p->Kx = ctn_calloc(ctx, p->a->nnz ? p->a->nnz : 1, sizeof(double)))) return CTN_ERR_NOMEM;
+    p->K = (ctn_dmat){ &p->eq, p->a->colptr, p->a->rowind, p->Kx };
     if (!(p->in_chain = chain_members(p))) return CTN_ERR_NOMEM;
     double **vt[] = { &p->dT0, &p->dT1, &p->dT };
     for (size_t i = 0; i < 3 && p->m->tloads.n; i++)
@@ -67,6 +71,8 @@ static int setup(ctn_problem *p)
     if (rc) return rc;
     p->ns = p->a->map.nstate;
     p->ndof = p->a->ndof;
+    ctn_layout_serial(&p->eq, p->ndof, ctn_ctx_comm(p->ctx));   /* one process: all owned */
+    ctn_layout_serial(&p->st, p->ns, ctn_ctx_comm(p->ctx));
     if ((rc = alloc_vectors(p))) return rc;
     p->lref = model_size(p->m);
     p->kscale = p->a->kscale;
@@ -204,8 +210,8 @@ int ctn_problem_residual(ctn_problem *p, const double *d, int with_K, double *rn
             rr += ri * ri;
             if (pi) work += fe * d[i];
         }
-        *rnorm = sqrt(rr);
-        if (pi) *pi = U - work;
+        *rnorm = sqrt(ctn_layout_sum(&p->st, rr));
+        if (pi) *pi = ctn_layout_sum(&p->st, U - work);
         *valid = isfinite(*rnorm) && (!pi || isfinite(*pi));
     }
     if (!*valid) ctn_problem_settle(p);
@@ -238,8 +244,10 @@ double ctn_problem_fref(const ctn_problem *p)
         if (eq[i] >= 0) ff += fe * fe;
         else fr += p->fint[i] * p->fint[i];
     }
-    if (ff > 0) return ctn_norm_from_ss(ff, p->ns, free_load, p);
-    return fr > 0 ? ctn_norm_from_ss(fr, p->ns, support_force, p) : 1.0;
+    ff = ctn_layout_sum(&p->st, ff);
+    fr = ctn_layout_sum(&p->st, fr);
+    if (ff > 0) return ctn_layout_norm_ss(&p->st, ff, free_load, p);
+    return fr > 0 ? ctn_layout_norm_ss(&p->st, fr, support_force, p) : 1.0;
 }
 
 void ctn_problem_settle(ctn_problem *p)

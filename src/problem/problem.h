@@ -12,6 +12,8 @@
 #define CTN_SOLVE_PROBLEM_H
 
 #include "assemble/asm.h"
+#include "dist/layout.h"
+#include "dist/matrix.h"
 #include "linalg/gmres.h"
 #include "linalg/linsolve.h"
 #include "problem/overlap.h"
@@ -46,6 +48,11 @@ struct ctn_problem {
     ctn_linsolve *ls;
     double *Kx;                /* nnz: the tangent's values, pattern order */
     size_t ns, ndof;           /* state length, equations */
+    ctn_layout eq, st;         /* the layouts of the equations (free DOFs) and of the state
+                                  over the processes (dist/layout.h): every reduction over
+                                  an ndof or state vector goes through them */
+    ctn_dvec vr, vdd, vw;      /* the ndof vectors r, dd, w below (their storage) */
+    ctn_dmat K;                /* the tangent over eq: the assembly's pattern, values Kx */
     unsigned mode;             /* CTN_EVAL_* passed to the elements */
     double *fint;              /* state: internal forces at the last residual() */
     double *fext;              /* state: external forces at the current t */
@@ -180,16 +187,14 @@ int ctn_problem_tangent_at(ctn_problem *p, const ctn_solution *s, double *d, con
  * members in tension or slack only, and every free DOF tied to a support by members in
  * tension (stability_tension.c); 0 when that cannot be shown (a factorization can). */
 int ctn_problem_stable_by_tension(ctn_problem *p, const ctn_solution *s, int *ok);
+/* a . b over the equations' layout (p->eq), for the Krylov solvers (data: the problem). */
+double ctn_problem_dot(void *p, const double *a, const double *b);
 /* y = A x (ndof), A symmetric with values Ax in the pattern's order (upper triangle). */
 void ctn_problem_symv(const ctn_problem *p, const double *Ax, const double *x, double *y);
 
-/* Small vector helpers (vec.c). */
+/* Small vector helpers for the local systems of one process (vec.c): a vector of the
+ * problem's equations or state is reduced through its layout (p->eq, p->st). */
 double ctn_vec_norm(const double *v, size_t n);      /* 2-norm, without overflow */
-/* One entry of a vector that is not stored as one (0 where it does not count). */
-typedef double (*ctn_entry_fn)(const void *ud, size_t i);
-/* sqrt(ss) for ss the plain sum of the entries' squares, recomputed scaled when that
- * overflowed or underflowed. */
-double ctn_norm_from_ss(double ss, size_t n, ctn_entry_fn entry, const void *ud);
 double ctn_vec_dot(const double *a, const double *b, size_t n);
 /* Monotonic wall clock in seconds. */
 double ctn_clock(void);

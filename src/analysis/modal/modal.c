@@ -227,14 +227,14 @@ static void complement(ctn_modal *md, double *V, int have, double *lambda)
         for (int k = 0; k < have; k++) {
             const double *v = V + n * (size_t)k;
             op_mass(md, x, Mx);
-            double c = ctn_vec_dot(v, Mx, n);
+            double c = ctn_layout_dot(&md->p->eq, v, Mx);
             for (size_t i = 0; i < n; i++) x[i] -= c * v[i];
         }
     op_mass(md, x, Mx);
-    double nrm = sqrt(ctn_vec_dot(x, Mx, n));
+    double nrm = sqrt(ctn_layout_dot(&md->p->eq, x, Mx));
     for (size_t i = 0; i < n; i++) x[i] /= nrm;
     ctn_problem_symv(md->p, md->p->Kx, x, Mx);
-    lambda[have] = ctn_vec_dot(x, Mx, n);
+    lambda[have] = ctn_layout_dot(&md->p->eq, x, Mx);
 }
 
 /* The eigenpairs: V (n x ncv, the first count columns the modes), lambda ascending.

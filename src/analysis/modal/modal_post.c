@@ -86,12 +86,16 @@ static void describe(fill_job *j, double *phi, double lam, ctn_mode *out, double
         int dir = p->a->map.dof_dir[q];
         if (dir < 3) out->participation[dir] += Mphi[q];          /* Gamma = phi^T M r */
     }
-    for (int k = 0; k < 3; k++) out->effective_mass[k] = out->participation[k] * out->participation[k];
+    for (int k = 0; k < 3; k++) {
+        out->participation[k] = ctn_layout_sum(&p->eq, out->participation[k]);
+        out->effective_mass[k] = out->participation[k] * out->participation[k];
+    }
     moving_nodes(p->m, out->shape, out);
     if (out->kind == CTN_MODE_ZERO) return;
     double rr = 0;
     for (size_t q = 0; q < n; q++) rr += (Kphi[q] - lam * Mphi[q]) * (Kphi[q] - lam * Mphi[q]);
-    double kn = ctn_vec_norm(Kphi, n), scale = kn + fabs(lam) * ctn_vec_norm(Mphi, n);
+    rr = ctn_layout_sum(&p->eq, rr);
+    double kn = ctn_layout_norm(&p->eq, Kphi), scale = kn + fabs(lam) * ctn_layout_norm(&p->eq, Mphi);
     if (kn > 0) j->max_residual = fmax(j->max_residual, sqrt(rr) / kn);
     double rel = scale > 0 ? sqrt(rr) / scale : sqrt(rr);
     if (!(rel <= CTN_MODE_RESIDUAL_MAX)) j->failed++;

@@ -42,12 +42,12 @@ static int weakest_mode(ctn_problem *p, ctn_linsolve *ldl, ctn_stability *out)
     for (int it = 0; it < 30; it++) {
         int rc = ctn_linsolve_solve(ldl, x, x);
         if (rc) return rc;
-        double n = ctn_vec_norm(x, p->ndof);
+        double n = ctn_layout_norm(&p->eq, x);
         if (!(n > 0) || !isfinite(n)) return CTN_OK;
         for (size_t i = 0; i < p->ndof; i++) x[i] /= n;
     }
     ctn_problem_symv(p, p->Kx, x, y);
-    if (!(ctn_vec_dot(x, y, p->ndof) < 0)) return CTN_OK;
+    if (!(ctn_layout_dot(&p->eq, x, y) < 0)) return CTN_OK;
     size_t imax = 0;
     for (size_t i = 1; i < p->ndof; i++)
         if (fabs(x[i]) > fabs(x[imax])) imax = i;

@@ -42,12 +42,15 @@ static int place(arc *a, double lambda, double *rn, int *valid)
 static int constraint_root(arc *a, double *dl)
 {
     size_t n = a->e->ndof;
-    double A = ctn_vec_dot(a->ut, a->ut, n), B = 0, C = -a->ds * a->ds, best = -INFINITY;
+    const ctn_layout *eq = &a->e->eq;
+    double A = ctn_layout_dot(eq, a->ut, a->ut), B = 0, C = 0, best = -INFINITY;
     for (size_t i = 0; i < n; i++) {
         double v = a->du[i] + a->ur[i];
         B += 2 * a->ut[i] * v;
         C += v * v;
     }
+    B = ctn_layout_sum(eq, B);
+    C = ctn_layout_sum(eq, C) - a->ds * a->ds;
     double disc = B * B - 4 * A * C;
     if (!(disc >= 0) || !(A > 0)) return 0;
     double q = -0.5 * (B + copysign(sqrt(disc), B)), roots[2] = { q / A, q != 0 ? C / q : 0 };
@@ -69,8 +72,8 @@ static int arc_step(arc *a, int first, int *ok)
     int valid, rc = place(a, a->lambda, &rn, &valid);   /* K at d0 */
     *ok = 0;
     if (rc || !valid || (rc = solve_rhs(a, a->F, a->ut, ok)) || !*ok) return rc;
-    double sign = first ? 1.0 : (ctn_vec_dot(a->du_prev, a->ut, n) >= 0 ? 1.0 : -1.0);
-    double dl = sign * a->ds / ctn_vec_norm(a->ut, n);
+    double sign = first ? 1.0 : (ctn_layout_dot(&a->e->eq, a->du_prev, a->ut) >= 0 ? 1.0 : -1.0);
+    double dl = sign * a->ds / ctn_layout_norm(&a->e->eq, a->ut);
     for (size_t i = 0; i < n; i++) a->du[i] = dl * a->ut[i];
     lam = a->lambda + dl;
     *ok = 0;
@@ -159,7 +162,7 @@ static int initial_radius(arc *a)
         a->s->sum.reason = CTN_DIVERGED_INDEFINITE;
         return CTN_OK;
     }
-    a->ds = fabs(a->e->opt.lambda_max) * ctn_vec_norm(a->ut, a->e->ndof) / a->e->opt.steps;
+    a->ds = fabs(a->e->opt.lambda_max) * ctn_layout_norm(&a->e->eq, a->ut) / a->e->opt.steps;
     return CTN_OK;
 }
 
@@ -177,7 +180,7 @@ static int land(arc *a, size_t count)
         if ((rc = solve_rhs(a, e->r, a->ur, &ok)) || !ok) break;
         for (size_t i = 0; i < e->ndof; i++) a->du[i] += a->ur[i];
         if ((rc = place(a, target, &rn, &valid)) || !valid) break;
-        if ((rc = ctn_problem_record(e, a->s, rn, ctn_vec_norm(a->ur, e->ndof)))) return rc;
+        if ((rc = ctn_problem_record(e, a->s, rn, ctn_layout_norm(&e->eq, a->ur)))) return rc;
         if (rn <= e->opt.tol * a->fref) {
             ctn_solution_drop_step(a->s);        /* the landing replaces that point */
             a->lambda = target;
@@ -233,7 +236,7 @@ int ctn_arclength_run(ctn_problem *e, ctn_solution *s, double *d)
     if (!rc) {
         for (size_t i = 0; i < e->ns; i++)
             if (e->a->map.eq[i] >= 0) a.F[e->a->map.eq[i]] = e->f1[i];
-        a.fref = ctn_vec_norm(a.F, e->ndof);
+        a.fref = ctn_layout_norm(&e->eq, a.F);
         if (!(a.fref > 0)) rc = ctn_error(e->ctx, CTN_ERR_MODEL, "%s: arc-length needs a load on free DOFs", e->m->file);
     }
     if (!rc) rc = initial_radius(&a);

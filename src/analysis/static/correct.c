@@ -119,9 +119,9 @@ static double reference(const corrector *c)
 static int lm_step(corrector *c, double *alpha, double *rn, double *pi)
 {
     ctn_problem *e = c->e;
-    double dd2 = ctn_vec_dot(e->dd, e->dd, e->ndof);
+    double dd2 = ctn_layout_dot(&e->eq, e->dd, e->dd);
     double pred = e->fl ? 0.5 * (c->rn * c->rn - c->mu * c->mu * dd2)       /* |r|^2 / 2 */
-                        : 0.5 * (ctn_vec_dot(e->r, e->dd, e->ndof) + c->mu * dd2);
+                        : 0.5 * (ctn_layout_dot(&e->eq, e->r, e->dd) + c->mu * dd2);
     int ok, rc = trial(c, 1.0, 1, rn, pi, &ok);
     *alpha = 0;
     if (rc || !ok) return rc;
@@ -170,14 +170,14 @@ static int iteration(corrector *c, ctn_reason *why)
     int rc = newton_step(c, why);
     c->quadratic = 0;
     if (rc || *why) return rc;
-    if (!isfinite(ctn_vec_norm(e->dd, e->ndof))) { *why = CTN_DIVERGED_NANORINF; return CTN_OK; }
+    if (!isfinite(ctn_layout_norm(&e->eq, e->dd))) { *why = CTN_DIVERGED_NANORINF; return CTN_OK; }
     int keep = c->globalized || e->opt.linesearch;   /* a step may be rejected */
     if (keep) memcpy(e->dsave, c->d, e->ns * sizeof(double));
     rc = c->globalized ? lm_step(c, &alpha, &rn, &pi) : newton_search(c, &alpha, &rn);
     if (rc) return rc;
     double shift = c->mu;
     if (alpha == 0) {                            /* back to the start of the iteration */
-        double tried = ctn_vec_norm(e->dd, e->ndof);
+        double tried = ctn_layout_norm(&e->eq, e->dd);
         if (keep) memcpy(c->d, e->dsave, e->ns * sizeof(double));
         else ctn_problem_update(e, c->d, -1.0, e->dd); /* pure Newton: undo the step */
         int valid;
@@ -191,7 +191,7 @@ static int iteration(corrector *c, ctn_reason *why)
     c->accepted = 1;
     c->quadratic = c->globalized && shift == 0 && alpha == 1 && rn <= CTN_QUADRATIC * r0;
     c->cut = r0 > 0 ? rn / r0 : 0;
-    return ctn_problem_record_ex(e, c->s, rn, alpha * ctn_vec_norm(e->dd, e->ndof), 0, shift);
+    return ctn_problem_record_ex(e, c->s, rn, alpha * ctn_layout_norm(&e->eq, e->dd), 0, shift);
 }
 
 /* The Newton correction is at the resolution of the coordinates with |r| above tol |f_ext|:
@@ -240,7 +240,7 @@ static int correct(ctn_problem *e, ctn_solution *s, double *d, ctn_reason *reaso
     double fref = ctn_problem_fref(e);                /* once per increment */
     c.fref = fref;
     int stalls = 0;
-    c.dmax = ctn_vec_norm(d, e->ns);
+    c.dmax = ctn_layout_norm(&e->st, d);
     for (int it = 1; it <= e->opt.maxit; it++) {
         ctn_reason why;
         if ((rc = iteration(&c, &why))) return rc;
@@ -249,7 +249,7 @@ static int correct(ctn_problem *e, ctn_solution *s, double *d, ctn_reason *reaso
         if (!c.accepted) continue;
         c.dmax += dnorm;                                 /* |d + a dd| <= |d| + |a dd| */
         if (dnorm > e->opt.dtol * (c.dmax + e->lref)) continue;
-        double size = ctn_vec_norm(d, e->ns) + e->lref;     /* only when it can matter */
+        double size = ctn_layout_norm(&e->st, d) + e->lref;     /* only when it can matter */
         c.dmax = size - e->lref;
         if (dnorm > e->opt.dtol * size) continue;
         if (c.rn <= e->opt.tol * fref) {

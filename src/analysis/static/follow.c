@@ -148,6 +148,7 @@ int ctn_follow_create(ctn_problem *p)
     f->gm.apply = apply;
     f->gm.precond = precond;
     f->gm.data = p;
+    f->gm.dot = ctn_problem_dot;
     return CTN_OK;
 }
 

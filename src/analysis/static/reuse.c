@@ -35,7 +35,7 @@ int ctn_problem_reuse_step(ctn_problem *p, double target, double rmax, int *ok)
     if (!p->cg || !p->ls || !p->spd_factor) return CTN_OK;
     double t0 = ctn_clock(), res;
     int iters, posdef;
-    ctn_pcg g = { .apply = apply, .precond = precond, .data = p };
+    ctn_pcg g = { .apply = apply, .precond = precond, .data = p, .dot = ctn_problem_dot };
     ctn_pcg_init(&g, p->ndof, p->cg);
     int rc = ctn_pcg_solve(&g, p->r, p->dd, target, CTN_REUSE_CG_MAX, &res, &iters, &posdef);
     p->sum->t_solve += ctn_clock() - t0;

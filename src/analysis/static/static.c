@@ -51,7 +51,7 @@ static double step_load_norm(const ctn_problem *p)
     double s = 0;
     for (size_t i = 0; i < p->ns; i++)
         if (p->a->map.eq[i] >= 0) s += p->f1[i] * p->f1[i];
-    return ctn_norm_from_ss(s, p->ns, step_load, p);
+    return ctn_layout_norm_ss(&p->st, ctn_layout_sum(&p->st, s), step_load, p);
 }
 
 /* The load-step strategies (auto, newton). */
