@@ -416,6 +416,9 @@ const double *ctn_solution_reactions(const ctn_solution *s);
  * (ctn_model_has_rotations). Owned by the solution. */
 const double *ctn_solution_rotations(const ctn_solution *s);
 const double *ctn_solution_reaction_moments(const ctn_solution *s);
+/* The threads= option of the solve that made it (0 auto, 1 one thread, n): what the
+ * result writers ask the thread policy with. */
+int ctn_solution_threads(const ctn_solution *s);
 /* Whether the solution holds rotations (its model has a node with 6 DOFs). */
 int ctn_solution_has_rotations(const ctn_solution *s);
 /* The same at the end of step k (either out-pointer may be NULL; both get NULL when the

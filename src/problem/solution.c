@@ -149,3 +149,5 @@ int ctn_solution_stability(const ctn_solution *s, ctn_stability *out)
     *out = s->stability;
     return CTN_OK;
 }
+
+int ctn_solution_threads(const ctn_solution *s) { return s ? s->threads : 1; }
