@@ -429,7 +429,8 @@ int ctn_psolve_solve(ctn_psolve *p, const cholmod_factor *L, const double *B, do
 
 int ctn_chol_psolve_plan(chol *c)
 {
-    if (c->ps_planned || (c->plain & CTN_LA_PLAIN_SOLVE) || !ctn_thr_allows(c->ctx, c->threads, CTN_THR_PSOLVE, (double)c->L->n)) return CTN_OK;
+    if (c->ps_planned || (c->plain & CTN_LA_PLAIN_SOLVE)
+        || !ctn_thr_allows(c->ctx, c->threads, CTN_THR_PSOLVE, (double)c->L->n)) return CTN_OK;
     c->ps_planned = 1;
     return ctn_psolve_create(c->ctx, c->L, &c->ps);
 }
