@@ -99,7 +99,7 @@ int main(int argc, char **argv)
         rc = B && X ? 0 : CTN_ERR_NOMEM;
     }
     ctn_pattern pat = { n, a ? a->colptr : NULL, a ? a->rowind : NULL };
-    if (!rc) rc = ctn_linsolve_create(ctx, "cholmod", &pat, CTN_ORDER_AUTO, &ls);
+    if (!rc) rc = ctn_linsolve_create(ctx, "cholmod", &pat, CTN_LA_ORDER_AUTO, &ls);
     if (!rc) ctn_linsolve_set_threads(ls, threads);
     if (!rc) rc = factor(ls, a, Kx, &tf, &cf);
     if (rc) {
@@ -109,7 +109,7 @@ int main(int argc, char **argv)
     srand(1);
     for (size_t i = 0; i < n * (size_t)kmax; i++) B[i] = (double)rand() / RAND_MAX - 0.5;
     printf("# %s: %zu DOFs, factor nnz %zu (%s), factorization %.3f s wall, %.3f s CPU; load average %.2f;"
-           " medians of %d; threads=%d\n", path, n, ctn_linsolve_factor_nnz(ls), ctn_ordering_name(ctn_linsolve_ordering(ls)), tf,
+           " medians of %d; threads=%d\n", path, n, ctn_linsolve_factor_nnz(ls), ctn_la_ordering_name(ctn_linsolve_ordering(ls)), tf,
            cf, load_average(), reps, threads);
     printf("%4s %12s %12s %12s %12s %14s %14s %10s\n", "k", "block[s]", "block CPU", "k singles[s]", "singles CPU",
            "block/col[s]", "single/col[s]", "speed-up");

@@ -4,7 +4,7 @@
  * E = 2e8 kN/m^2, A = 3.14e-4 m^2, w = 0.1 kN/m, gravity 0 -1 0 - generated with n
  * elements (shape=arc), built through the public API and solved with ctn_solve
  * (tol 1e-10). Then the floor: CHOLMOD's numeric factorization + solve alone, through
- * the library's backend (linalg/chol.h), on the same matrix - the tangent assembled at
+ * the library's backend (linalg/backends/cholmod/chol.h), on the same matrix - the tangent assembled at
  * the final displacements - with the natural and with the AMD ordering.
  *
  *   bench_cable N [--method auto|newton] [--start arc|catenary] [--ordering auto|natural|amd] [--tol T]
@@ -18,6 +18,7 @@
  * (converged or not), 1 on a usage error, 2 when a library call failed. */
 #include "assemble/asm.h"
 #include "linalg/linsolve.h"
+#include "problem/la_options.h"
 
 #include "bench_common.h"
 
@@ -334,7 +335,7 @@ static int floor_ordering(ctn_ctx *ctx, const ctn_asm *a, const double *d, ctn_o
     double *Kx = malloc((a->nnz ? a->nnz : 1) * sizeof *Kx);
     int rc = f && b && Kx ? CTN_OK : CTN_ERR_NOMEM;
     double t0 = now();
-    if (!rc) rc = ctn_linsolve_create(ctx, "cholmod", &pat, ord, &ch);
+    if (!rc) rc = ctn_linsolve_create(ctx, "cholmod", &pat, ctn_la_ordering_of(ord), &ch);
     r->t_analyze[ord] = now() - t0;
     if (!rc && ctn_asm_eval(a, d, 0, f, Kx, NULL, NULL)) rc = CTN_ERR_LINALG;
     if (!rc) rc = time_factor_solve(ch, Kx, a->ndof, b, reps, &r->floor_fac[ord], &r->floor[ord]);

@@ -4,7 +4,7 @@
  * (a prestressed net is stable there), K factored once (LL', sigma = 0: the factor a
  * modal analysis reuses from the static solve's stability check); then the nev lowest
  * eigenpairs of K x = lambda M x by ARPACK (one vector per solve) and by block Lanczos
- * (linalg/eigen.h), each timed (wall and CPU) with its solves, block solves and
+ * (linalg/eigen/eigen.h), each timed (wall and CPU) with its solves, block solves and
  * restarts, its largest residual |K x - lambda M x| / |K x|, and the largest relative
  * difference of its eigenvalues from the other's. The factorization, the solves and
  * ARPACK on one thread; the block solver's dense work on two from 50 000 DOFs, as in
@@ -13,7 +13,7 @@
  *   bench_eigen MODEL.cable [NEV]            (default NEV 20)
  */
 #include "assemble/asm.h"
-#include "linalg/eigen.h"
+#include "linalg/eigen/eigen.h"
 #include "linalg/linsolve.h"
 #include "linalg/pcg.h"
 
@@ -137,7 +137,7 @@ int main(int argc, char **argv)
     B.Mx = Mx;
     ctn_factor_info info = { 0, -1 };
     double t0 = now(), c0 = cpu_now();
-    if (!rc) rc = ctn_linsolve_create(ctx, "cholmod", &B.pat, CTN_ORDER_AUTO, &B.ls);
+    if (!rc) rc = ctn_linsolve_create(ctx, "cholmod", &B.pat, CTN_LA_ORDER_AUTO, &B.ls);
     double t1 = now(), c1 = cpu_now();
     ctn_linsolve_set_threads(B.ls, 1);
     if (!rc) rc = ctn_linsolve_factor(B.ls, Kx, 0.0, &info);

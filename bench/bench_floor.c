@@ -141,7 +141,7 @@ static int time_catena(ctn_ctx *ctx, ctn_asm *a, const double *Kx0, const double
     ctn_factor_info info;
     double tf[MAX_REPEAT], ts[MAX_REPEAT], tc[MAX_REPEAT], ta[MAX_REPEAT];
     double *f = malloc(a->map.nstate * sizeof *f), *Kx = malloc(a->nnz * sizeof *Kx);
-    int rc = f && Kx ? ctn_linsolve_create(ctx, "cholmod", &pat, CTN_ORDER_NATURAL, &ls) : CTN_ERR_NOMEM;
+    int rc = f && Kx ? ctn_linsolve_create(ctx, "cholmod", &pat, CTN_LA_ORDER_NATURAL, &ls) : CTN_ERR_NOMEM;
     if (!rc) memcpy(Kx, Kx0, a->nnz * sizeof *Kx);
     for (int k = -1; !rc && k < reps; k++) {
         for (size_t i = 0; !d && i < a->ndof; i++) f[i] = 1.0;
@@ -176,7 +176,7 @@ static int time_paired(ctn_ctx *ctx, ctn_asm *a, const double *Kx0, const double
     cholmod_common cm;
     double ti[MAX_REPEAT], tb[MAX_REPEAT], r[MAX_REPEAT];
     double *f = malloc(a->map.nstate * sizeof *f), *Kx = malloc(a->nnz * sizeof *Kx);
-    int rc = f && Kx ? ctn_linsolve_create(ctx, "cholmod", &pat, CTN_ORDER_NATURAL, &ls) : CTN_ERR_NOMEM;
+    int rc = f && Kx ? ctn_linsolve_create(ctx, "cholmod", &pat, CTN_LA_ORDER_NATURAL, &ls) : CTN_ERR_NOMEM;
     cholmod_l_start(&cm);
     cm.nmethods = 1;
     cm.method[0].ordering = CHOLMOD_NATURAL;

@@ -9,6 +9,7 @@
  */
 #include "assemble/asm.h"
 #include "linalg/linsolve.h"
+#include "problem/la_options.h"
 
 #include "bench_common.h"
 
@@ -44,11 +45,11 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < sizeof ords / sizeof *ords; i++) {
         ctn_linsolve *ls = NULL;
         double t0 = now(), c0 = cpu_now();
-        int r = ctn_linsolve_create(ctx, "cholmod", &pat, ords[i], &ls);
+        int r = ctn_linsolve_create(ctx, "cholmod", &pat, ctn_la_ordering_of(ords[i]), &ls);
         double t1 = now(), c1 = cpu_now();
         if (r) printf("%-8s failed: %s\n", ctn_ordering_name(ords[i]), ctn_ctx_message(ctx));
         else printf("%-8s %-8s %12.3f %12.3f %14zu %12.4g\n", ctn_ordering_name(ords[i]),
-                    ctn_ordering_name(ctn_linsolve_ordering(ls)), t1 - t0, c1 - c0, ctn_linsolve_factor_nnz(ls),
+                    ctn_la_ordering_name(ctn_linsolve_ordering(ls)), t1 - t0, c1 - c0, ctn_linsolve_factor_nnz(ls),
                     ctn_linsolve_flops(ls));
         ctn_ctx_clear(ctx);
         ctn_linsolve_destroy(&ls);

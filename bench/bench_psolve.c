@@ -16,7 +16,7 @@
  */
 #include "assemble/asm.h"
 #include "linalg/linsolve.h"
-#include "linalg/psolve.h"
+#include "linalg/backends/cholmod/psolve.h"
 
 #include "bench_common.h"
 #include "bench_tangent.h"

@@ -15,6 +15,7 @@
 #include "bench_common.h"
 #include "assemble/asm.h"
 #include "linalg/linsolve.h"
+#include "problem/la_options.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -63,7 +64,7 @@ static int run_once(const char *path, int no_setup, double *wall, double *cpu, s
     t[3] = now(), c[3] = cpu_now();
     if (!rc && !no_setup && a->ndof) {
         ctn_pattern pat = { a->ndof, a->colptr, a->rowind };
-        rc = ctn_linsolve_create(ctx, opt.linear_solver ? opt.linear_solver : "cholmod", &pat, opt.ordering, &ls);
+        rc = ctn_linsolve_create(ctx, opt.linear_solver ? opt.linear_solver : "cholmod", &pat, ctn_la_ordering_of(opt.ordering), &ls);
     }
     t[4] = now(), c[4] = cpu_now();
     for (int k = 0; k < NPHASES; k++) wall[k] = t[k + 1] - t[k], cpu[k] = c[k + 1] - c[k];

@@ -1,4 +1,4 @@
-/* The block Lanczos solver (linalg/blanczos*.c) on one and on two threads:
+/* The block Lanczos solver (linalg/eigen/blanczos*.c) on one and on two threads:
  * - a pencil whose eigenvalues are known independently: a membrane of springs and
  *   masses, separable (A = A1 (x) B2 + B1 (x) A2, B = B1 (x) B2 with tridiagonal A1, A2
  *   and diagonal B1, B2), so that its eigenvalues are the sums of two rows', which
@@ -10,7 +10,7 @@
  *   1e-9, up to sign), on a basis that holds every DOF (no restart) and on one that
  *   restarts;
  * - every allocation may fail on the two-thread path: CTN_ERR_NOMEM, no leak (ASan). */
-#include "linalg/eigen.h"
+#include "linalg/eigen/eigen.h"
 #include "linalg/linsolve.h"
 #include "check.h"
 

@@ -1,4 +1,4 @@
-/* The assembly overlapped with the factorization (solve/overlap.c, linalg/cholmod_feed.c):
+/* The assembly overlapped with the factorization (solve/overlap.c, linalg/backends/cholmod/cholmod_feed.c):
  * - on a chain of 36 000 DOFs, at a state off the equilibrium: the internal forces, the
  *   tangent, the energy, the factorization's outcome and the solution are those of
  *   ctn_asm_eval then ctn_linsolve_factor, to the bit;
@@ -47,8 +47,8 @@ static int rig_open(ctn_ctx *ctx, rig *r)
     r->x1 = calloc(r->a->ndof, sizeof(double));
     r->x2 = calloc(r->a->ndof, sizeof(double));
     int ok = r->d && r->f1 && r->f2 && r->K1 && r->K2 && r->x1 && r->x2 &&
-             !ctn_linsolve_create(ctx, "cholmod", &pat, CTN_ORDER_NATURAL, &r->seq) &&
-             !ctn_linsolve_create(ctx, "cholmod", &pat, CTN_ORDER_NATURAL, &r->ovl);
+             !ctn_linsolve_create(ctx, "cholmod", &pat, CTN_LA_ORDER_NATURAL, &r->seq) &&
+             !ctn_linsolve_create(ctx, "cholmod", &pat, CTN_LA_ORDER_NATURAL, &r->ovl);
     if (ok) {
         ctn_dofmap_from3(&r->a->map, ctn_solution_displacements(s), r->d);
         for (size_t i = 0; i < ns; i++)
@@ -156,7 +156,7 @@ static void test_not_followed(ctn_ctx *ctx)
     if (K && f && d) {
         ctn_pattern pat = { a->ndof, a->colptr, a->rowind };
         ctn_factor_info info;
-        CHECK(!ctn_linsolve_create(ctx, "cholmod", &pat, CTN_ORDER_AMD, &ls));
+        CHECK(!ctn_linsolve_create(ctx, "cholmod", &pat, CTN_LA_ORDER_AMD, &ls));
         CHECK(!ctn_asm_eval(a, d, 0, f, K, NULL, NULL) && !ctn_linsolve_factor(ls, K, 0.0, &info));
         CHECK(!ctn_linsolve_feedable(ls) && !ctn_overlap_possible(a, ls));
     }

@@ -9,8 +9,8 @@
  * supernodes. */
 /* ctest-cost: 20 (about the seconds it takes under ASan: ctest -j starts it early) */
 #include "linalg/linsolve.h"
-#include "linalg/psolve.h"
-#include "linalg/psolve_k4.h"
+#include "linalg/backends/cholmod/psolve.h"
+#include "linalg/backends/cholmod/psolve_k4.h"
 
 #include "check.h"
 
@@ -316,7 +316,7 @@ static void backend(cholmod_common *cm)
     double kappa = L ? condition(A, L, cm, 30) : INFINITY;
     cholmod_l_free_factor(&L, cm);
     if (ctx && colptr && rowind && B && X && S && S2 && T) {
-        CHECK(ctn_linsolve_create(ctx, "cholmod", &pat, CTN_ORDER_METIS, &ls) == CTN_OK);
+        CHECK(ctn_linsolve_create(ctx, "cholmod", &pat, CTN_LA_ORDER_METIS, &ls) == CTN_OK);
         if (ls) CHECK(ctn_linsolve_factor(ls, A->x, 0, &info) == CTN_OK && info.ok);
         for (int threads = 0; ls && info.ok && threads < 2; threads++) {
             ctn_linsolve_set_threads(ls, threads);      /* 0: the default, two; then one */

@@ -9,7 +9,7 @@
  * - threads and the BLAS are reported. */
 #include "catena.h"
 #include "check.h"
-#include "linalg/chol.h"
+#include "linalg/backends/cholmod/chol.h"
 #include "linalg/linsolve.h"
 #include "linalg/pcg.h"
 
@@ -130,8 +130,8 @@ static void test_pcg(void)
     ctn_pattern pat = { N, colptr, rowind };
     ctn_linsolve *exact = NULL, *near = NULL;
     ctn_factor_info info;
-    CHECK(ctn_linsolve_create(ctx, "cholmod", &pat, CTN_ORDER_AUTO, &exact) == CTN_OK);
-    CHECK(ctn_linsolve_create(ctx, "cholmod", &pat, CTN_ORDER_AUTO, &near) == CTN_OK);
+    CHECK(ctn_linsolve_create(ctx, "cholmod", &pat, CTN_LA_ORDER_AUTO, &exact) == CTN_OK);
+    CHECK(ctn_linsolve_create(ctx, "cholmod", &pat, CTN_LA_ORDER_AUTO, &near) == CTN_OK);
     if (exact && near) {
         CHECK(ctn_linsolve_factor(exact, A, 0, &info) == CTN_OK && info.ok);
         CHECK(ctn_linsolve_factor(near, B, 0, &info) == CTN_OK && info.ok);

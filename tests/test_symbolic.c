@@ -1,4 +1,4 @@
-/* The symbolic analysis from the quotient graph (src/linalg/cholmod_symbolic.c) against
+/* The symbolic analysis from the quotient graph (src/linalg/backends/cholmod/cholmod_symbolic.c) against
  * CHOLMOD's own (cholmod_l_analyze_p of the full pattern with the same permutation):
  * the same factor, array by array: permutation, column counts, non-zeros and flops, and
  * for a supernodal factor its supernodes, their patterns and sizes. On node graphs blown
@@ -7,7 +7,7 @@
  * the node graph, simplicial and supernodal; and a clean out-of-memory error whichever of
  * its allocations fails. */
 #include "check.h"
-#include "linalg/chol.h"
+#include "linalg/backends/cholmod/chol.h"
 
 #include <stdlib.h>
 #include <string.h>

@@ -28,10 +28,10 @@
 typedef enum ctn_thr_site {
     CTN_THR_ASSEMBLY,          /* assemble/gather.c: the nodes in two halves (size: nodes) */
     CTN_THR_OVERLAP,           /* solve/overlap.c: the factorization beside the assembly (DOFs) */
-    CTN_THR_ORDER,             /* linalg/cholmod_order.c: AMD beside METIS (DOFs) */
-    CTN_THR_TOUCH,             /* linalg/cholmod_touch.c: a new factor's pages (bytes) */
-    CTN_THR_PSOLVE,            /* linalg/cholmod_psolve.c: the triangular sweeps (factor order) */
-    CTN_THR_LANCZOS,           /* linalg/blanczos_par.c: the basis's rows in two halves, its
+    CTN_THR_ORDER,             /* linalg/backends/cholmod/cholmod_order.c: AMD beside METIS (DOFs) */
+    CTN_THR_TOUCH,             /* linalg/backends/cholmod/cholmod_touch.c: a new factor's pages (bytes) */
+    CTN_THR_PSOLVE,            /* linalg/backends/cholmod/cholmod_psolve.c: the triangular sweeps (factor order) */
+    CTN_THR_LANCZOS,           /* linalg/eigen/blanczos_par.c: the basis's rows in two halves, its
                                   pages written ahead (rows) */
     CTN_THR_MODES,             /* solve/modes_post.c: the modes described in two halves (DOFs) */
     CTN_THR_WRITE,             /* io/results.c: the result files on two threads (nodes + elements) */

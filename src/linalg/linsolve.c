@@ -40,15 +40,35 @@ const ctn_linsolve_ops *ctn_linsolve_find(const char *name)
     return NULL;
 }
 
-int ctn_linsolve_create(ctn_ctx *ctx, const char *name, const ctn_pattern *p, ctn_ordering ord,
+const char *ctn_la_ordering_name(ctn_la_ordering o)
+{
+    static const char *const names[] = { "auto", "natural", "amd", "metis" };
+    return o >= CTN_LA_ORDER_AUTO && o <= CTN_LA_ORDER_METIS ? names[o] : "?";
+}
+
+int ctn_linsolve_create(ctn_ctx *ctx, const char *name, const ctn_pattern *p, ctn_la_ordering ord,
                         ctn_linsolve **out)
 {
     return ctn_linsolve_create_threads(ctx, name, p, ord, 0, out);
 }
 
-int ctn_linsolve_create_threads(ctn_ctx *ctx, const char *name, const ctn_pattern *p, ctn_ordering ord,
+int ctn_linsolve_create_threads(ctn_ctx *ctx, const char *name, const ctn_pattern *p, ctn_la_ordering ord,
                                 int threads, ctn_linsolve **out)
 {
+    ctn_la_options o = { sizeof o, ord, threads, 0 };
+    return ctn_linsolve_create_opts(ctx, name, p, &o, out);
+}
+
+int ctn_linsolve_create_opts(ctn_ctx *ctx, const char *name, const ctn_pattern *p, const ctn_la_options *opt,
+                             ctn_linsolve **out)
+{
+    ctn_la_options o = { sizeof o, CTN_LA_ORDER_AUTO, 0, 0 };
+    if (opt && opt->size) {                    /* the fields the caller's struct has */
+        size_t sz = opt->size < sizeof o ? opt->size : sizeof o;
+        memcpy(&o, opt, sz);
+        o.size = sizeof o;
+    }
+    int threads = o.threads;
     *out = NULL;
     const ctn_linsolve_ops *ops = ctn_linsolve_find(name);
     if (!ops) return ctn_error(ctx, CTN_ERR_INVALID, "unknown linear solver '%s'", name ? name : "");
@@ -58,7 +78,7 @@ int ctn_linsolve_create_threads(ctn_ctx *ctx, const char *name, const ctn_patter
     s->ctx = ctx;
     s->n = p->n;
     s->threads = threads > 0 ? threads : 0;
-    int rc = ops->create(ctx, p, ord, threads, &s->impl);
+    int rc = ops->create(ctx, p, &o, &s->impl);
     if (rc) {
         ctn_free(s);
         return rc;
@@ -149,7 +169,7 @@ int ctn_linsolve_inertia(ctn_linsolve *s, double tol, long *negative, long *zero
     return s->ops->inertia(s->impl, tol, negative, zero, first);
 }
 
-ctn_ordering ctn_linsolve_ordering(const ctn_linsolve *s) { return s->ops->ordering(s->impl); }
+ctn_la_ordering ctn_linsolve_ordering(const ctn_linsolve *s) { return s->ops->ordering(s->impl); }
 
 size_t ctn_linsolve_factor_nnz(const ctn_linsolve *s) { return s->ops->factor_nnz(s->impl); }
 

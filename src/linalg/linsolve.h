@@ -12,9 +12,39 @@
 #ifndef CTN_LINALG_LINSOLVE_H
 #define CTN_LINALG_LINSOLVE_H
 
-#include "catena/solve.h"
 #include "core/ctx.h"
 #include "core/feed.h"
+
+/* linalg's own options (the solve layer translates its public ones into these: linalg
+ * knows no public solve header). The fill-reducing ordering: AUTO lets the backend
+ * choose (the CHOLMOD backends: cholmod_order.c). */
+typedef enum ctn_la_ordering {
+    CTN_LA_ORDER_AUTO = 0,
+    CTN_LA_ORDER_NATURAL,
+    CTN_LA_ORDER_AMD,
+    CTN_LA_ORDER_METIS
+} ctn_la_ordering;
+/* "auto", "natural", "amd", "metis" ("?" if none). */
+const char *ctn_la_ordering_name(ctn_la_ordering o);
+
+/* The library's own call instead of a hand-written kernel (bench/bench_kernels.c
+ * measures one against the other; bench/RESULTS.md, "Hand-written kernels"). */
+enum {
+    CTN_LA_PLAIN_SYMBOLIC = 1u,  /* cholmod_l_analyze_p on the DOF pattern, not the
+                                    analysis from the node graph (cholmod_symbolic.c) */
+    CTN_LA_PLAIN_ORDER = 2u,     /* AUTO: cholmod_l_analyze's own choice (nmethods), not
+                                    the candidates counted on the node graph */
+    CTN_LA_PLAIN_SOLVE = 4u      /* cholmod_l_solve2 always, not the two-thread sweeps
+                                    (cholmod_psolve.c) */
+};
+
+/* A solver's options; size first (sizeof, or 0 for the defaults of every field). */
+typedef struct ctn_la_options {
+    size_t size;
+    ctn_la_ordering ordering;
+    int threads;              /* the solve's threads= (0 auto, 1, n) */
+    unsigned plain;           /* CTN_LA_PLAIN_* bits; 0 in catena's own use */
+} ctn_la_options;
 
 /* A symmetric matrix's upper triangle in compressed columns, rows sorted. */
 typedef struct ctn_pattern {
@@ -33,14 +63,14 @@ typedef struct ctn_factor_info {
 typedef struct ctn_linsolve_ops {
     const char *name;
     int indefinite;           /* 1: factors indefinite matrices and gives their inertia */
-    int (*create)(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, int threads, void **impl);
+    int (*create)(ctn_ctx *ctx, const ctn_pattern *p, const ctn_la_options *o, void **impl);
     void (*destroy)(void *impl);
     int (*factor)(void *impl, const double *Kx, double shift, ctn_factor_info *info);
     int (*solve)(void *impl, const double *b, double *x);
     /* Optional (NULL): pivots of the last factorization below -tol (negative) and within
      * +-tol (zero), and the column (pattern order) of the first of either, -1 if none. */
     int (*inertia)(void *impl, double tol, long *negative, long *zero, long *first);
-    ctn_ordering (*ordering)(const void *impl);    /* the ordering chosen */
+    ctn_la_ordering (*ordering)(const void *impl);    /* the ordering chosen */
     size_t (*factor_nnz)(const void *impl);        /* non-zeros of the factor */
     double (*flops)(const void *impl);             /* of one numeric factorization */
     /* Optional (NULL: column by column with solve): X = K \ B for an n x k block stored
@@ -66,10 +96,13 @@ typedef struct ctn_linsolve ctn_linsolve;
 const ctn_linsolve_ops *ctn_linsolve_find(const char *name);
 /* Set up solver `name` on pattern p (symbolic work, done once) for a solve that asked
  * for `threads` (its threads= option: 0 auto, 1, n; ctn_linsolve_create: 0). */
-int ctn_linsolve_create(ctn_ctx *ctx, const char *name, const ctn_pattern *p, ctn_ordering ord,
+int ctn_linsolve_create(ctn_ctx *ctx, const char *name, const ctn_pattern *p, ctn_la_ordering ord,
                         ctn_linsolve **out);
-int ctn_linsolve_create_threads(ctn_ctx *ctx, const char *name, const ctn_pattern *p, ctn_ordering ord,
+int ctn_linsolve_create_threads(ctn_ctx *ctx, const char *name, const ctn_pattern *p, ctn_la_ordering ord,
                                 int threads, ctn_linsolve **out);
+/* The same with every option (o NULL or o->size 0: the defaults). */
+int ctn_linsolve_create_opts(ctn_ctx *ctx, const char *name, const ctn_pattern *p, const ctn_la_options *o,
+                             ctn_linsolve **out);
 void ctn_linsolve_destroy(ctn_linsolve **s);
 const ctn_linsolve_ops *ctn_linsolve_type(const ctn_linsolve *s);
 /* Factor K + shift I from values Kx (pattern order). A failed pivot is an outcome in
@@ -91,7 +124,7 @@ int ctn_linsolve_solve_block(ctn_linsolve *s, const double *B, double *X, size_t
  * column of the first non-positive one, -1 if none): CTN_ERR_INVALID if the solver
  * cannot tell. */
 int ctn_linsolve_inertia(ctn_linsolve *s, double tol, long *negative, long *zero, long *first);
-ctn_ordering ctn_linsolve_ordering(const ctn_linsolve *s);
+ctn_la_ordering ctn_linsolve_ordering(const ctn_linsolve *s);
 size_t ctn_linsolve_factor_nnz(const ctn_linsolve *s);
 double ctn_linsolve_flops(const ctn_linsolve *s);
 /* The solve's threads= option: the OpenMP threads of the numeric factorizations (n > 0

@@ -1,6 +1,7 @@
 /* The problem: setup once per model, residual and potential at a load parameter t,
  * factorization with an optional shift, solves. */
 #include "analysis/modal/modal.h"
+#include "problem/la_options.h"
 
 #include <math.h>
 #include <string.h>
@@ -80,7 +81,7 @@ static int setup(ctn_problem *p)
     if (p->ndof == 0) return CTN_OK;        /* statically determinate: nothing to factor */
     const char *name = p->opt.linear_solver ? p->opt.linear_solver : p->strategy->linear_solver;
     ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
-    if ((rc = ctn_linsolve_create_threads(p->ctx, name, &pat, p->opt.ordering, p->opt.threads, &p->ls))) return rc;
+    if ((rc = ctn_linsolve_create_threads(p->ctx, name, &pat, ctn_la_ordering_of(p->opt.ordering), p->opt.threads, &p->ls))) return rc;
     int reuse = p->strategy->globalized && p->opt.reuse && !p->fl && !ctn_linsolve_type(p->ls)->indefinite;
     if (reuse && !(p->cg = ctn_calloc(p->ctx, 4 * p->ndof, sizeof(double)))) return CTN_ERR_NOMEM;
     /* Pure Newton factorizes every tangent it assembles (but the converged state's) */

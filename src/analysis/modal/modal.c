@@ -1,11 +1,12 @@
 /* Modal analysis about a converged state: K_T phi = omega^2 M phi by shift-invert
- * Lanczos (linalg/eigen.h), the shifted matrix K_T - sigma M factored once by the
+ * Lanczos (linalg/eigen/eigen.h), the shifted matrix K_T - sigma M factored once by the
  * problem's linear solver on the problem's pattern (LDL' on the same pattern when LL'
  * fails: an interior shift, or an unstable state). docs/theory.md, "Modal analysis". */
-#include "linalg/eigen.h"
+#include "linalg/eigen/eigen.h"
 #include "linalg/pcg.h"
 #include "analysis/analysis.h"
 #include "analysis/modal/modal.h"
+#include "problem/la_options.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -119,7 +120,7 @@ static int factor_shifted(ctn_modal *md, const ctn_solution *s)
     md->ls = p->ls;
     if (!rc && !info.ok) {
         ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
-        rc = ctn_linsolve_create_threads(p->ctx, "cholmod-ldl", &pat, p->opt.ordering, p->opt.threads, &md->ldl);
+        rc = ctn_linsolve_create_threads(p->ctx, "cholmod-ldl", &pat, ctn_la_ordering_of(p->opt.ordering), p->opt.threads, &md->ldl);
         if (!rc) rc = ctn_linsolve_factor(md->ldl, md->Ax, 0.0, &info);
         md->sum.factorizations++;
         md->ls = md->ldl;

@@ -3,6 +3,7 @@
  * halved (cut back) up to maxcuts times; the state of each step is kept. Arc-length has
  * its own driver (arclength.c). */
 #include "analysis/analysis.h"
+#include "problem/la_options.h"
 
 #include <math.h>
 #include <string.h>
@@ -205,7 +206,7 @@ static int static_solve(ctn_problem *p, ctn_solution **out)
         if (s->sum.reason == CTN_CONVERGED) s->sum.fail_element = 0;
         if (!rc && s->sum.reason == CTN_CONVERGED && p->opt.modal.count > 0) rc = ctn_problem_modes(p, s, &p->opt.modal);
         if (!s->sum.fext_norm) s->sum.fext_norm = ctn_problem_fref(p);
-        s->sum.ordering = p->ls ? ctn_linsolve_ordering(p->ls) : CTN_ORDER_NATURAL;
+        s->sum.ordering = p->ls ? ctn_ordering_of_la(ctn_linsolve_ordering(p->ls)) : CTN_ORDER_NATURAL;
         s->sum.ndof = p->ndof;
         s->sum.nnz_factor = p->ls ? ctn_linsolve_factor_nnz(p->ls) : 0;
         s->sum.flops_factor = p->ls ? ctn_linsolve_flops(p->ls) : 0;

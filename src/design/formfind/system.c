@@ -102,7 +102,7 @@ static int system_create(ctn_ff *f, int k, ctn_ff_system *s)
     if (rc || !s->n) return rc;
     if ((rc = build_pattern(f, s)) || (rc = build_slots(f, s))) return rc;
     ctn_pattern p = { s->n, s->colptr, s->rowind };
-    return ctn_linsolve_create(f->ctx, "cholmod", &p, CTN_ORDER_AUTO, &s->ls);
+    return ctn_linsolve_create(f->ctx, "cholmod", &p, CTN_LA_ORDER_AUTO, &s->ls);
 }
 
 /* 1 if coordinates j and k have the same free nodes. */

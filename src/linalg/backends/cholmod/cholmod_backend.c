@@ -10,8 +10,8 @@
  * factorization, its right-hand side and solution arrays for each solve (no copy).
  * CHOLMOD's long-integer interface throughout (chol.h). */
 #include "core/threads.h"
-#include "linalg/chol.h"
-#include "linalg/psolve.h"
+#include "linalg/backends/cholmod/chol.h"
+#include "linalg/backends/cholmod/psolve.h"
 
 #include <math.h>
 #include <string.h>
@@ -43,10 +43,10 @@ static int check_memory(chol *c)
     if (!(have > 0) || need < have) return CTN_OK;
     return ctn_error(c->ctx, CTN_ERR_NOMEM, "the factorization needs %.1f GB for its factor (%.0f non-zeros, "
                      "ordering %s), more than this machine's %.1f GB of memory", 1e-9 * need, c->lnz,
-                     ctn_ordering_name(c->ordering), 1e-9 * have);
+                     ctn_la_ordering_name(c->ordering), 1e-9 * have);
 }
 
-static int chol_create(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, int threads, int indefinite, void **out)
+static int chol_create(ctn_ctx *ctx, const ctn_pattern *p, const ctn_la_options *o, int indefinite, void **out)
 {
     *out = NULL;
     chol *c = ctn_calloc(ctx, 1, sizeof(chol));
@@ -54,7 +54,8 @@ static int chol_create(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, int
     c->ctx = ctx;
     cholmod_l_start(&c->cm);
     c->indefinite = indefinite;
-    c->threads = threads;
+    c->threads = o->threads;
+    c->plain = o->plain;
     c->cm.final_ll = 0;
     if (indefinite) c->cm.supernodal = CHOLMOD_SIMPLICIAL;
     c->cm.quick_return_if_not_posdef = 1;
@@ -68,7 +69,7 @@ static int chol_create(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, int
     SuiteSparse_long *Ap = c->A->p, *Ai = c->A->i;
     for (size_t j = 0; j <= n; j++) Ap[j] = p->colptr[j];
     for (size_t k = 0; k < nnz; k++) Ai[k] = p->rowind[k];
-    if ((rc = ctn_chol_analyze(c, ord)) || (rc = check_memory(c))) goto fail;
+    if ((rc = ctn_chol_analyze(c, o->ordering)) || (rc = check_memory(c))) goto fail;
     *out = c;
     return CTN_OK;
 fail:
@@ -76,14 +77,14 @@ fail:
     return rc;
 }
 
-static int ll_create(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, int threads, void **out)
+static int ll_create(ctn_ctx *ctx, const ctn_pattern *p, const ctn_la_options *o, void **out)
 {
-    return chol_create(ctx, p, ord, threads, 0, out);
+    return chol_create(ctx, p, o, 0, out);
 }
 
-static int ldl_create(ctn_ctx *ctx, const ctn_pattern *p, ctn_ordering ord, int threads, void **out)
+static int ldl_create(ctn_ctx *ctx, const ctn_pattern *p, const ctn_la_options *o, void **out)
 {
-    return chol_create(ctx, p, ord, threads, 1, out);
+    return chol_create(ctx, p, o, 1, out);
 }
 
 /* The first pivot d <= 0 of a simplicial LDL' factor (its column's first entry), -1 if
@@ -199,7 +200,7 @@ static int chol_factor_feed(void *impl, const double *Kx, double shift, ctn_feed
     return ctn_chol_factor_feed(impl, Kx, shift, feed, info);
 }
 
-static ctn_ordering chol_ordering(const void *impl) { return ((const chol *)impl)->ordering; }
+static ctn_la_ordering chol_ordering(const void *impl) { return ((const chol *)impl)->ordering; }
 
 static void chol_set_threads(void *impl, int asked)
 {

@@ -10,7 +10,7 @@
  * MADV_POPULATE_WRITE, on a helper beside the factorization, did not help: the host
  * still backs each page at its first write.) */
 #include "core/threads.h"
-#include "linalg/chol.h"
+#include "linalg/backends/cholmod/chol.h"
 
 #include <stdint.h>
 #include <unistd.h>

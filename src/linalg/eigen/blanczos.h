@@ -6,7 +6,7 @@
 #ifndef CTN_LINALG_BLANCZOS_H
 #define CTN_LINALG_BLANCZOS_H
 
-#include "linalg/eigen.h"
+#include "linalg/eigen/eigen.h"
 
 #include <pthread.h>
 #include <stddef.h>

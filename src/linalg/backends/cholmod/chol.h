@@ -16,7 +16,9 @@ typedef struct chol {
     cholmod_sparse *A;                  /* pattern only between factorizations */
     cholmod_factor *L;
     cholmod_dense *B, *Y, *E;           /* right-hand side (its shape) and solve2 workspace */
-    ctn_ordering ordering;
+    ctn_la_ordering ordering;
+    unsigned plain;                     /* CTN_LA_PLAIN_* (linsolve.h): library calls
+                                           instead of catena's kernels (benchmarks) */
     double lnz;                         /* non-zeros of L from the analysis */
     double fl;                          /* flops of one factorization, from the analysis */
     int indefinite;                     /* simplicial LDL' instead of LL' */
@@ -33,9 +35,9 @@ typedef struct chol {
 int ctn_chol_error(chol *c, const char *what);
 /* The meaning of a CHOLMOD status. */
 const char *ctn_chol_status(int status);
-/* Choose the ordering (ord, or by the analyses' flops for CTN_ORDER_AUTO) and do the
+/* Choose the ordering (ord, or by the analyses' flops for CTN_LA_ORDER_AUTO) and do the
  * symbolic analysis: c->L, c->ordering, c->lnz, c->fl. */
-int ctn_chol_analyze(chol *c, ctn_ordering ord);
+int ctn_chol_analyze(chol *c, ctn_la_ordering ord);
 /* Write one byte of every page of a new factor's values, on two threads, before its
  * first factorization (cholmod_touch.c), when the thread policy allows it. */
 void ctn_chol_touch(chol *c);

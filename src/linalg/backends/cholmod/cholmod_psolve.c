@@ -14,9 +14,9 @@
  * solved on two threads: only rows of their common ancestors (the top) are written by
  * both, forward, and those updates go to each thread's own buffer, summed after. */
 #include "core/threads.h"
-#include "linalg/psolve.h"
-#include "linalg/psolve_k4.h"
-#include "linalg/chol.h"
+#include "linalg/backends/cholmod/psolve.h"
+#include "linalg/backends/cholmod/psolve_k4.h"
+#include "linalg/backends/cholmod/chol.h"
 #include "linalg/lapack.h"
 #include "linalg/linsolve.h"
 
@@ -429,7 +429,8 @@ int ctn_psolve_solve(ctn_psolve *p, const cholmod_factor *L, const double *B, do
 
 int ctn_chol_psolve_plan(chol *c)
 {
-    if (c->ps_planned || !ctn_thr_allows(c->ctx, c->threads, CTN_THR_PSOLVE, (double)c->L->n)) return CTN_OK;
+    if (c->ps_planned || (c->plain & CTN_LA_PLAIN_SOLVE)
+        || !ctn_thr_allows(c->ctx, c->threads, CTN_THR_PSOLVE, (double)c->L->n)) return CTN_OK;
     c->ps_planned = 1;
     return ctn_psolve_create(c->ctx, c->L, &c->ps);
 }

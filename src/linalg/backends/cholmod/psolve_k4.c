@@ -1,9 +1,9 @@
 /* The 4-column supernode sweeps for x86-64's baseline, and the choice between them and
  * the AVX2 copy (psolve_k4.h). */
-#include "linalg/psolve_k4.h"
+#include "linalg/backends/cholmod/psolve_k4.h"
 
 #define CTN_PS4(name) ctn_ps4_##name##_base
-#include "linalg/psolve_k4_impl.h"
+#include "linalg/backends/cholmod/psolve_k4_impl.h"
 
 void ctn_ps4_choose(ctn_ps4_kernels *k)
 {

@@ -9,7 +9,7 @@
  * column by column ahead of the Lanczos process, which claims a column itself when it
  * gets there first. docs/solver.md, "Threads". */
 #include "core/threads.h"
-#include "linalg/blanczos.h"
+#include "linalg/eigen/blanczos.h"
 #include "linalg/lapack.h"
 #include "linalg/linsolve.h"
 

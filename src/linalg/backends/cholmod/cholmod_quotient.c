@@ -10,7 +10,7 @@
  * each supervariable's columns kept together in their order. The fill and the flops of
  * the expanded ordering are those of ordering the node graph, the usual practice of
  * structural codes; the analysis of the full pattern then counts them exactly. */
-#include "linalg/chol.h"
+#include "linalg/backends/cholmod/chol.h"
 
 #include <string.h>
 

@@ -7,7 +7,7 @@
  * the same order as cholmod_l_factorize_p: the same factor, to the bit. Told to stop
  * (the factorization is no longer wanted), it returns between two blocks, the factor
  * then half new: the next factorization starts it again. */
-#include "linalg/chol.h"
+#include "linalg/backends/cholmod/chol.h"
 
 #define FEED_ROWS 8192          /* rows factorized per call */
 

@@ -1,7 +1,7 @@
 /* Shift-invert Lanczos by ARPACK (dsaupd/dseupd, mode 3, bmat "G", which "LM"): the
  * eigenvalues theta = 1 / (lambda - sigma) of the operator (A - sigma B)^-1 B of
  * largest magnitude are those lambda nearest sigma; dseupd maps them back. */
-#include "linalg/eigen.h"
+#include "linalg/eigen/eigen.h"
 #include "linalg/linsolve.h"
 
 #include <arpack/arpack.h>

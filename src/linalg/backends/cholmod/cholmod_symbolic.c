@@ -21,7 +21,7 @@
  *   rows before the supernode's first column, once each, and nothing else).
  * The factor is the one cholmod_l_analyze_p gives for the expanded, postordered
  * permutation: tests/test_symbolic.c checks it array by array. */
-#include "linalg/chol.h"
+#include "linalg/backends/cholmod/chol.h"
 
 #include <string.h>
 

@@ -11,7 +11,7 @@
  * for the ordering kept: from the node graph (cholmod_symbolic.c) when nodes were
  * merged, else by cholmod_l_analyze_p. */
 #include "core/threads.h"
-#include "linalg/chol.h"
+#include "linalg/backends/cholmod/chol.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -42,9 +42,9 @@ int ctn_chol_error(chol *c, const char *what)
                      "CHOLMOD %s failed: %s (status %d)", what, ctn_chol_status(s), s);
 }
 
-static int cholmod_method(ctn_ordering o)
+static int cholmod_method(ctn_la_ordering o)
 {
-    return o == CTN_ORDER_AMD ? CHOLMOD_AMD : o == CTN_ORDER_METIS ? CHOLMOD_METIS : CHOLMOD_NATURAL;
+    return o == CTN_LA_ORDER_AMD ? CHOLMOD_AMD : o == CTN_LA_ORDER_METIS ? CHOLMOD_METIS : CHOLMOD_NATURAL;
 }
 
 /* One ordering's analysis on the graph H the orderings see (the quotient graph, or the
@@ -56,7 +56,7 @@ typedef struct cand {
     chol *c;
     const ctn_chol_quot *q;
     cholmod_sparse *H;
-    ctn_ordering o;
+    ctn_la_ordering o;
     cholmod_common own, *cm;
     SuiteSparse_long *a[ARRAYS];
     double fl, lnz;
@@ -114,16 +114,16 @@ static void cand_count(cand *k)
 }
 
 /* Order H by o (natural: the identity) and, if analyse, count its factor. */
-static void cand_run(cand *k, ctn_ordering o, int analyse)
+static void cand_run(cand *k, ctn_la_ordering o, int analyse)
 {
     SuiteSparse_long **a = k->a;
     size_t m = k->H->ncol;
     int ok = 1;
     k->o = o;
     k->counted = 0;
-    if (o == CTN_ORDER_NATURAL)
+    if (o == CTN_LA_ORDER_NATURAL)
         for (size_t j = 0; j < m; j++) a[PERM][j] = (SuiteSparse_long)j;
-    else if (o == CTN_ORDER_AMD) ok = cholmod_l_amd(k->H, NULL, 0, a[PERM], k->cm);
+    else if (o == CTN_LA_ORDER_AMD) ok = cholmod_l_amd(k->H, NULL, 0, a[PERM], k->cm);
     else ok = cholmod_l_metis(k->H, NULL, 0, 0, a[PERM], k->cm);
     k->status = k->cm->status;
     k->ok = ok && k->status == CHOLMOD_OK;
@@ -160,8 +160,8 @@ static int better(const cand *k, int i, int j)
 {
     if (i < 0 || !k[i].ok) return j >= 0 && k[j].ok ? j : -1;
     if (j < 0 || !k[j].ok) return i;
-    if (k[j].o == CTN_ORDER_NATURAL) return k[j].fl <= 1.1 * k[i].fl ? j : i;
-    if (k[i].o == CTN_ORDER_NATURAL) return k[j].fl < k[i].fl / 1.1 ? j : i;
+    if (k[j].o == CTN_LA_ORDER_NATURAL) return k[j].fl <= 1.1 * k[i].fl ? j : i;
+    if (k[i].o == CTN_LA_ORDER_NATURAL) return k[j].fl < k[i].fl / 1.1 ? j : i;
     return k[j].fl < k[i].fl ? j : i;
 }
 
@@ -174,24 +174,24 @@ static int better(const cand *k, int i, int j)
  * NATURAL_ENVELOPE times the better one's factor (a mesh numbered row by row: its
  * factor fills the envelope, and counting it costs as much as the others together). */
 #define NATURAL_ENVELOPE 4.0
-static int pick(chol *c, ctn_ordering ord, cand *k, int *status)
+static int pick(chol *c, ctn_la_ordering ord, cand *k, int *status)
 {
     size_t n = c->A->ncol;
     double env = envelope(c->A), anz = (double)((SuiteSparse_long *)c->A->p)[n];
     int best;
-    if (ord != CTN_ORDER_AUTO || env <= anz) {
-        cand_run(&k[0], ord == CTN_ORDER_AUTO ? CTN_ORDER_NATURAL : ord, 0);
+    if (ord != CTN_LA_ORDER_AUTO || env <= anz) {
+        cand_run(&k[0], ord == CTN_LA_ORDER_AUTO ? CTN_LA_ORDER_NATURAL : ord, 0);
         best = k[0].ok ? 0 : -1;
     } else {
-        k[1].o = CTN_ORDER_AMD;
+        k[1].o = CTN_LA_ORDER_AMD;
         int ticket = ctn_thr_start(c->ctx, c->threads, CTN_THR_ORDER, (double)n, cand_thread, &k[1]);
-        cand_run(&k[0], CTN_ORDER_METIS, 1);
+        cand_run(&k[0], CTN_LA_ORDER_METIS, 1);
         if (ticket) ctn_thr_wait(c->ctx, ticket);
-        else cand_run(&k[1], CTN_ORDER_AMD, 1);
+        else cand_run(&k[1], CTN_LA_ORDER_AMD, 1);
         best = better(k, 1, 0);                               /* AMD on ties */
         if (best < 0 || env <= NATURAL_ENVELOPE * k[best].lnz) {
             int spare = best == 0 ? 1 : 0;
-            cand_run(&k[spare], CTN_ORDER_NATURAL, 1);
+            cand_run(&k[spare], CTN_LA_ORDER_NATURAL, 1);
             best = better(k, best, spare);
         }
     }
@@ -199,38 +199,66 @@ static int pick(chol *c, ctn_ordering ord, cand *k, int *status)
     return best;
 }
 
-int ctn_chol_analyze(chol *c, ctn_ordering ord)
+/* CTN_LA_PLAIN_ORDER: cholmod_l_analyze's own choice on the DOF pattern (its default
+ * nmethods: AMD, and METIS too when AMD's factor is dense enough). */
+static int plain_analyze(chol *c)
 {
+    c->L = cholmod_l_analyze(c->A, &c->cm);
+    if (!c->L) return ctn_chol_error(c, "analysis");
+    int m = c->cm.method[c->cm.selected].ordering;
+    c->ordering = m == CHOLMOD_NATURAL ? CTN_LA_ORDER_NATURAL : m == CHOLMOD_AMD ? CTN_LA_ORDER_AMD : CTN_LA_ORDER_METIS;
+    c->fl = c->cm.fl;
+    c->lnz = c->cm.lnz;
+    return CTN_OK;
+}
+
+/* The analysis of ordering b (of the graph its candidate ordered) by
+ * cholmod_l_analyze_p on the DOF pattern: b's permutation expanded to the DOFs when it
+ * orders the node graph (CTN_LA_PLAIN_SYMBOLIC), postordered unless natural. */
+static int analyze_p(chol *c, const ctn_chol_quot *q, const cand *b)
+{
+    SuiteSparse_long *perm = b->o == CTN_LA_ORDER_NATURAL ? NULL : b->a[PERM], *full = NULL;
+    if (perm && q->G) {
+        if (!(full = ctn_malloc(c->ctx, c->A->ncol ? c->A->ncol : 1, sizeof *full))) return CTN_ERR_NOMEM;
+        ctn_chol_quotient_expand(q, perm, full);
+        perm = full;
+    }
+    c->cm.nmethods = 1;
+    c->cm.method[0].ordering = perm ? CHOLMOD_GIVEN : CHOLMOD_NATURAL;
+    c->cm.postorder = perm != NULL;
+    c->L = cholmod_l_analyze_p(c->A, perm, NULL, 0, &c->cm);
+    ctn_free(full);
+    return c->L ? CTN_OK : ctn_chol_error(c, "analysis");
+}
+
+int ctn_chol_analyze(chol *c, ctn_la_ordering ord)
+{
+    if (ord == CTN_LA_ORDER_AUTO && (c->plain & CTN_LA_PLAIN_ORDER)) return plain_analyze(c);
     cand k[2];
     ctn_chol_quot q;
     memset(k, 0, sizeof k);
     memset(&q, 0, sizeof q);
     int rc = CTN_OK, status = CHOLMOD_OK;
-    if (ord != CTN_ORDER_NATURAL) rc = ctn_chol_quotient(c, &q);
+    if (ord != CTN_LA_ORDER_NATURAL) rc = ctn_chol_quotient(c, &q);
     for (int i = 0; !rc && i < 2; i++) rc = cand_alloc(&k[i], c, &q);
     int best = rc ? -1 : pick(c, ord, k, &status);
     if (!rc && best < 0) {
         c->cm.status = status;
-        rc = ctn_chol_error(c, ord == CTN_ORDER_AUTO ? "analysis (every ordering)" : "analysis");
+        rc = ctn_chol_error(c, ord == CTN_LA_ORDER_AUTO ? "analysis (every ordering)" : "analysis");
     }
     if (!rc) {
         cand *b = &k[best];
         c->ordering = b->o;
         c->lnz = b->lnz;                   /* counted: what a failure below says it needs */
-        if (q.G && b->o != CTN_ORDER_NATURAL) {         /* from the node graph */
+        if (q.G && b->o != CTN_LA_ORDER_NATURAL && !(c->plain & CTN_LA_PLAIN_SYMBOLIC)) {  /* from the node graph */
             if (!b->counted) cand_count(b);           /* an ordering asked for */
             if (b->ok) rc = ctn_chol_symbolic(c, &q, b->a[PERM], b->a[PARENT], b->a[COUNT]);
             else {
                 c->cm.status = b->status;
                 rc = ctn_chol_error(c, "analysis");
             }
-        } else {
-            c->cm.nmethods = 1;
-            c->cm.method[0].ordering = b->o == CTN_ORDER_NATURAL ? CHOLMOD_NATURAL : CHOLMOD_GIVEN;
-            c->cm.postorder = b->o != CTN_ORDER_NATURAL;
-            c->L = cholmod_l_analyze_p(c->A, b->o == CTN_ORDER_NATURAL ? NULL : b->a[PERM], NULL, 0, &c->cm);
-            if (!c->L) rc = ctn_chol_error(c, "analysis");
-        }
+        } else
+            rc = analyze_p(c, &q, b);
         c->fl = c->cm.fl;
         c->lnz = c->cm.lnz;
     }

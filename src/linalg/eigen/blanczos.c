@@ -8,7 +8,7 @@
  * start it again (T then diagonal plus the block's column). B V is not kept: B is
  * sparse and cheap beside the solves, and a second basis of that size would double the
  * memory that the process writes for the first time. docs/theory.md, "Modal analysis". */
-#include "linalg/blanczos.h"
+#include "linalg/eigen/blanczos.h"
 #include "linalg/lapack.h"
 #include "linalg/linsolve.h"
 

@@ -3,7 +3,7 @@
  * QR twice; a block whose columns are (nearly) linearly dependent goes column by column
  * with deflation instead. Every inner product is x^T (B y); B y is formed for the few
  * columns of the block (the basis's B V is not kept: blanczos.c). */
-#include "linalg/blanczos.h"
+#include "linalg/eigen/blanczos.h"
 #include "linalg/lapack.h"
 
 #include <math.h>
