@@ -80,5 +80,6 @@ int ctn_parse_add_element(ctn_line *l, int rc, int from, const char *type, int i
                           ctn_element_spec *spec);
 int ctn_parse_catenary(ctn_line *l);
 int ctn_parse_pulley(ctn_line *l);
+int ctn_parse_beam(ctn_line *l);      /* directives_beam.c */
 
 #endif
