@@ -232,10 +232,12 @@ int ctn_model_add_cable(ctn_model *m, int a, int b, const char *section,
 /* A beam member from spec->nodes[0] to spec->nodes[1] (spec->type is taken as "beam")
  * meshed into n elements (1 <= n <= CTN_BEAM_MAX_N) of equal length: the n - 1 interior
  * nodes are numbered after the largest existing node id, in order; the first element
- * takes spec->id, the others are numbered after the largest existing element id. Should
- * an element be rejected, the model keeps the part already made and should be
- * discarded. */
+ * takes spec->id, the others are numbered from CTN_BEAM_GEN_ID + 1 up (after the
+ * largest element id when that is larger), so that they keep out of the way of the ids
+ * of the members defined next. Should an element be rejected, the model keeps the part
+ * already made and should be discarded. */
 #define CTN_BEAM_MAX_N 100000
+#define CTN_BEAM_GEN_ID 1000000
 int ctn_model_add_beam(ctn_model *m, const ctn_element_spec *spec, int n);
 /* Concentrated force F at a node (summed with earlier loads on that node). Belongs
  * to the current step (see ctn_model_add_step). */

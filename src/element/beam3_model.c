@@ -30,6 +30,7 @@ static void axis_orient(const ctn_model *m, const ctn_element *e, double e1[3], 
         v[0] = sin(e->par[1]) * cos(e->par[0]);
         v[1] = sin(e->par[1]) * sin(e->par[0]);
         v[2] = cos(e->par[1]);
+        for (int k = 0; k < 3; k++) v[k] = fabs(v[k]) < 1e-15 ? 0 : v[k];   /* the direction given */
     } else {                                           /* global z; global x if vertical */
         int vertical = hypot(e1[0], e1[1]) < 1e-6;
         v[0] = vertical;
@@ -60,7 +61,7 @@ static int beam_check(const ctn_model *m, const ctn_element *e)
         return ctn_model_error(m, CTN_ERR_MODEL, "beam %d: length must be positive and finite (got %g)", e->id, e->l0);
     axis_orient(m, e, e1, v);
     if (sine(e1, v) < 1e-6)
-        return ctn_model_error(m, CTN_ERR_MODEL, "beam %d: orient (%g, %g, %g) is parallel to the member: it must "
+        return ctn_model_error(m, CTN_ERR_MODEL, "beam %d: orient (direction %g, %g, %g) is parallel to the member: it must "
                                "point across it, in the local x-z plane", e->id, v[0], v[1], v[2]);
     return CTN_OK;
 }

@@ -1,7 +1,8 @@
 /* A beam member meshed into n elements (ctn_model_add_beam): n - 1 nodes evenly spaced
  * on the chord, numbered after the largest node id; the first element takes the spec's
- * id, the others are numbered after the largest element id, in order from the first
- * node to the second. */
+ * id, the others are numbered from CTN_BEAM_GEN_ID + 1 on (after the largest element id
+ * once it is there), out of the way of the ids of the members that follow, in order
+ * from the first node to the second. */
 #include "model/model.h"
 
 #include <string.h>
@@ -15,7 +16,7 @@ int ctn_model_add_beam(ctn_model *m, const ctn_element_spec *spec, int n)
                                CTN_BEAM_MAX_N, n);
     if ((rc = ctn_model_node_lookup(m, spec->nodes[0], &ia)) || (rc = ctn_model_node_lookup(m, spec->nodes[1], &ib)))
         return rc;
-    if (m->max_node_id > 0x7fffffff - n || m->max_element_id > 0x7fffffff - n)
+    if (m->max_node_id > 0x7fffffff - n || m->max_element_id > 0x7fffffff - n - CTN_BEAM_GEN_ID)
         return ctn_model_error(m, CTN_ERR_MODEL, "beam %d: generated ids would overflow", spec->id);
     double A[3], B[3];
     memcpy(A, m->nodes.v[ia].X, sizeof A);
@@ -32,7 +33,7 @@ int ctn_model_add_beam(ctn_model *m, const ctn_element_spec *spec, int n)
             nodes[1] = m->max_node_id + 1;
             if ((rc = ctn_model_add_node(m, nodes[1], X, 0))) return rc;
         }
-        if (k > 1) s.id = m->max_element_id + 1;
+        if (k > 1) s.id = (m->max_element_id > CTN_BEAM_GEN_ID ? m->max_element_id : CTN_BEAM_GEN_ID) + 1;
         if ((rc = ctn_model_add_element_spec(m, &s))) return rc;
         nodes[0] = nodes[1];
     }
