@@ -48,6 +48,24 @@ static const char *const cantilever_head =
     "beam 1 1 2 section=s orient=%s n=4\n"
     "load 2 %g %g %g %g 0 0\n";
 
+/* The root element's end forces (ctn_solution_beam) against the statics of the
+ * cantilever: the clamp holds the member against the load F (3) at the tip, displaced
+ * to x (3): the root node applies -F and the moment -(x x F), in the root element's
+ * local axes (x, y, z here: the chord turns by 1e-5 at most, so a component of F of
+ * 1e-5 |F| moves between the axes). */
+static void check_root(const run *r, const double F[3], const double x[3])
+{
+    ctn_beam_result b = { .size = sizeof b };
+    CHECK(ctn_solution_beam(r->m, r->s, 0, 0, &b) == CTN_OK);
+    CHECK(ctn_solution_beam(r->m, r->s, 1, 0, &b) == CTN_ERR_INVALID);
+    const double M[3] = { x[1] * F[2] - x[2] * F[1], x[2] * F[0] - x[0] * F[2], x[0] * F[1] - x[1] * F[0] };
+    for (int j = 0; j < 3; j++) {
+        CHECK_CLOSE(b.end[0][j], -F[j], 1e-6, 1e-5);
+        CHECK_CLOSE(b.end[0][3 + j], -M[j], 1e-6, 1e-5);
+    }
+    CHECK_CLOSE(b.M_max, hypot(M[1], M[2]), 1e-6, 1e-9);
+}
+
 /* One cantilever run: tip translations and rotations. */
 static int cantilever(const char *shear, const char *orient, double Fy, double Fz, double T, double u[3], double rot[3])
 {
@@ -56,6 +74,10 @@ static int cantilever(const char *shear, const char *orient, double Fy, double F
     run r = run_text("cantilever", text);
     int rc = r.rc || node_state(&r, 0, 2, u, rot);
     CHECK_MSG(rc == 0, "%s", r.ctx ? ctn_ctx_message(r.ctx) : "");
+    if (!rc && !strcmp(orient, "0,0,1") && T == 0) {
+        const double F[3] = { 0, Fy, Fz }, x[3] = { 4 + u[0], u[1], u[2] };
+        check_root(&r, F, x);
+    }
     done(&r);
     return rc;
 }

@@ -167,6 +167,6 @@ int ctn_beam_end_forces(const ctn_beam_props *p, const double *X, const double *
     double Mz[2] = { 2 * p->cz0 * t[0][2] + p->cz1 * t[1][2], 2 * p->cz0 * t[1][2] + p->cz1 * t[0][2] };
     double Fy2 = -(Mz[0] + Mz[1]) / l.v, Fz2 = (My[0] + My[1]) / l.v;   /* the member's moment balance */
     const double e[12] = { -N, -Fy2, -Fz2, -T, My[0], Mz[0], N, Fy2, Fz2, T, My[1], Mz[1] };
-    memcpy(out, e, sizeof e);
+    for (int k = 0; k < 12; k++) out[k] = e[k] + 0.0;   /* no negative zeros */
     return 0;
 }
