@@ -14,7 +14,8 @@
  * - a stiff straight beam pulled along its axis gives the answer of the same member of
  *   cable elements (engineering strain) to round-off;
  * - a guyed mast (beam mast clamped at its base, three cables to anchors, a side load):
- *   the reactions and the base moment balance the loads. */
+ *   the reactions and the base moment balance the loads;
+ * - sections by their dimensions against independent sums (grid integration, plates). */
 #include "check.h"
 #include "run_text.h"
 #include "element/beam3.h"
@@ -317,8 +318,69 @@ static void test_guyed_mast(void)
     done(&r);
 }
 
+/* Rectangle b x h (h along z) centred at (y, z): A, and its second moments about the
+ * section's axes by Steiner's rule: Iy = b h^3 / 12 + A z^2, Iz = h b^3 / 12 + A y^2. */
+static void rect(double b, double h, double y, double z, double *A, double *Iy, double *Iz)
+{
+    *A += b * h;
+    *Iy += b * h * h * h / 12 + b * h * z * z;
+    *Iz += h * b * b * b / 12 + b * h * y * y;
+}
+
+/* Sections by their dimensions (d=, t=, b=, h=, tf=, tw=) against independent sums: the
+ * circle and the tube by midpoint integration on a 2000 x 2000 grid (1e-5), the box and
+ * the I-section as their plates by Steiner's rule (1e-12); J = Iy + Iz for the circles. */
+static void test_shapes(void)
+{
+    static const char *const text =
+        "material steel E=2.1e11 nu=0.3\n"
+        "section rod material=steel d=0.05\n"
+        "section tube material=steel d=0.2 t=0.01\n"
+        "section rhs material=steel b=0.1 h=0.2 t=0.008\n"
+        "section ipe material=steel b=0.1 h=0.2 tf=0.0085 tw=0.0056 J=1e-7\n";
+    ctn_ctx *ctx = NULL;
+    ctn_model *m = NULL;
+    ctn_solve_options opt;
+    CHECK(ctn_ctx_create(&ctx) == CTN_OK && ctn_read_string(ctx, "shapes", text, strlen(text), &m, &opt) == CTN_OK);
+    if (!m) { ctn_ctx_destroy(&ctx); return; }
+    const ctn_section *sec = m->sections.v;
+    for (int c = 0; c < 2; c++) {                       /* rod, tube */
+        double D = c ? 0.2 : 0.05, Di = c ? 0.18 : 0, A = 0, I = 0, h = D / 2000;
+        for (int i = 0; i < 2000; i++)
+            for (int j = 0; j < 2000; j++) {
+                double y = -D / 2 + (i + 0.5) * h, z = -D / 2 + (j + 0.5) * h, r2 = y * y + z * z;
+                if (r2 <= D * D / 4 && r2 >= Di * Di / 4) {
+                    A += h * h;
+                    I += z * z * h * h;
+                }
+            }
+        CHECK_CLOSE(sec[c].A, A, 1e-3, 0);
+        CHECK_CLOSE(sec[c].Iy, I, 1e-3, 0);
+        CHECK(sec[c].Iy == sec[c].Iz && sec[c].J == 2 * sec[c].Iy);
+    }
+    double A = 0, Iy = 0, Iz = 0, t = 0.008;            /* the box: two flanges, two webs */
+    rect(0.1, t, 0, 0.1 - t / 2, &A, &Iy, &Iz);
+    rect(0.1, t, 0, -0.1 + t / 2, &A, &Iy, &Iz);
+    rect(t, 0.2 - 2 * t, 0.05 - t / 2, 0, &A, &Iy, &Iz);
+    rect(t, 0.2 - 2 * t, -0.05 + t / 2, 0, &A, &Iy, &Iz);
+    CHECK_CLOSE(sec[2].A, A, 1e-12, 0);
+    CHECK_CLOSE(sec[2].Iy, Iy, 1e-12, 0);
+    CHECK_CLOSE(sec[2].Iz, Iz, 1e-12, 0);
+    A = Iy = Iz = 0;                                    /* the I: two flanges and the web */
+    rect(0.1, 0.0085, 0, 0.1 - 0.0085 / 2, &A, &Iy, &Iz);
+    rect(0.1, 0.0085, 0, -0.1 + 0.0085 / 2, &A, &Iy, &Iz);
+    rect(0.0056, 0.2 - 2 * 0.0085, 0, 0, &A, &Iy, &Iz);
+    CHECK_CLOSE(sec[3].A, A, 1e-12, 0);
+    CHECK_CLOSE(sec[3].Iy, Iy, 1e-12, 0);
+    CHECK_CLOSE(sec[3].Iz, Iz, 1e-12, 0);
+    CHECK(sec[3].J == 1e-7);                            /* a key given replaces the shape's */
+    ctn_model_destroy(&m);
+    ctn_ctx_destroy(&ctx);
+}
+
 int main(void)
 {
+    test_shapes();
     test_cantilever();
     test_roll_up();
     test_bend45();

@@ -92,10 +92,12 @@ static int d_section(ctn_line *l)
 {
     ctn_section_spec spec;
     ctn_section_spec_init(&spec);
-    int rc = ctn_parse_positional(l, 1, "section NAME material=MATERIAL A=AREA [w=WEIGHT] [mass=MASS] [mbl=FORCE] [safety=FACTOR] [Iy=] [Iz=] [J=] [Asy=] [Asz=]");
+    int rc = ctn_parse_positional(l, 1, "section NAME material=MATERIAL A=AREA|d= [t=]|b= h= t=|b= h= tf= tw= [w=WEIGHT] [mass=MASS] [mbl=FORCE] [safety=FACTOR] [Iy=] [Iz=] [J=] [Asy=] [Asz=]");
     const char *mat = rc ? NULL : ctn_parse_key(l, 2, "material");
     if (!rc && !mat) return ctn_parse_missing(l, 2, NULL, "material", NULL);
-    if (!rc) rc = ctn_parse_key_num(l, 2, "A", 1, &spec.A);
+    int shaped = 0;
+    if (!rc) rc = ctn_parse_section_shape(l, &spec, &shaped);
+    if (!rc) rc = ctn_parse_key_num(l, 2, "A", !shaped, &spec.A);
     if (!rc) rc = ctn_parse_key_num(l, 2, "w", 0, &spec.w);
     if (!rc && ctn_parse_key(l, 2, "mass")) {
         rc = ctn_parse_key_num(l, 2, "mass", 1, &spec.mass);
