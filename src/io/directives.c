@@ -350,7 +350,8 @@ static int nodal(ctn_line *l, int moment)
     if (rc) return rc;
     if (moment) return ctn_model_add_moment(l->m, id, F);
     rc = ctn_model_add_load(l->m, id, F);
-    return rc || npos == 4 ? rc : ctn_model_add_moment(l->m, id, M);
+    if (rc || npos == 4 || (M[0] == 0 && M[1] == 0 && M[2] == 0)) return rc;   /* no moment: any node */
+    return ctn_model_add_moment(l->m, id, M);
 }
 
 static int d_load(ctn_line *l) { return nodal(l, 0); }
