@@ -21,7 +21,7 @@ def _num(x):
 
 def _value(key, v):
     if isinstance(v, str):
-        if not v or any(c.isspace() or c in "#=" for c in v):
+        if not v or any(c.isspace() or c in "#" for c in v) or (key != "argument" and "=" in v):
             raise ValueError(f"{key}={v!r}: a value of a .cable file is one word")
         return v
     if isinstance(v, (tuple, list, np.ndarray)):
@@ -42,7 +42,7 @@ def _keys(kw):
 
 
 def _positional(args):
-    return "".join(" " + (a if isinstance(a, str) else _num(a)) for a in args)
+    return "".join(" " + (_value("argument", a) if isinstance(a, str) else _num(a)) for a in args)
 
 
 def _fix_words(fix, n):
