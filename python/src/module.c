@@ -64,7 +64,7 @@ static PyObject *mod_version(PyObject *self, PyObject *noargs)
 
 PyObject *pyctn_read(PyObject *module, PyObject *args);
 PyObject *pyctn_read_string(PyObject *module, PyObject *args);
-PyObject *pyctn_analytic(PyObject *module, PyObject *args);
+PyObject *pyctn_formfind(PyObject *module, PyObject *args);
 
 static PyMethodDef mod_methods[] = {
     { "version", mod_version, METH_NOARGS, "version() -> str: the library's version (ctn_version)." },
@@ -72,6 +72,8 @@ static PyMethodDef mod_methods[] = {
       "read(path, interruptible) -> Model: read a .cable file (ctn_read_file)." },
     { "read_string", pyctn_read_string, METH_VARARGS,
       "read_string(name, text, interruptible) -> Model: read .cable text; name stands for the file in messages." },
+    { "formfind", pyctn_formfind, METH_VARARGS,
+      "formfind(name, text, out, tol, maxit, interruptible) -> report: find the shape, write it to out." },
     { NULL, NULL, 0, NULL }
 };
 
