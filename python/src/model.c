@@ -86,11 +86,14 @@ static PyObject *model_solve(PyObject *op, PyObject *args)
         PyThread_release_lock(self->lock);
         return NULL;
     }
-    int limit = opt.threads > 1 ? opt.threads : 1, rc;
+    /* The context's limit is the catena command's (0: the solve's threads= and the machine
+     * decide): the same helper threads, results and timings as `catena solve`; threads=1
+     * runs the solve on the caller's thread alone. */
+    int rc;
     pyctn_irq q;
     pyctn_irq_begin(&q, self->ctx, irq_on);
     Py_BEGIN_ALLOW_THREADS
-    rc = ctn_ctx_set_threads(self->ctx, limit);
+    rc = ctn_ctx_set_threads(self->ctx, 0);
     if (!rc) rc = ctn_model_validate(self->m);
     if (!rc && !self->resolved) rc = ctn_model_resolve_targets(self->ctx, self->m, &opt, NULL);
     if (!rc) self->resolved = 1;
