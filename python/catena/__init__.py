@@ -14,8 +14,9 @@ from . import _catena
 from .errors import CatenaError, CatenaIOError, ModelError, NotConvergedError
 from .model import Model, read
 from .formfind import formfind
+from . import analytic
 from .solution import Modes, Solution, Step
 
 __version__ = _catena.version()
-__all__ = ["read", "formfind", "Model", "Solution", "Step", "Modes", "CatenaError", "ModelError", "NotConvergedError",
+__all__ = ["read", "formfind", "analytic", "Model", "Solution", "Step", "Modes", "CatenaError", "ModelError", "NotConvergedError",
            "CatenaIOError", "__version__"]

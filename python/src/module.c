@@ -65,6 +65,9 @@ static PyObject *mod_version(PyObject *self, PyObject *noargs)
 PyObject *pyctn_read(PyObject *module, PyObject *args);
 PyObject *pyctn_read_string(PyObject *module, PyObject *args);
 PyObject *pyctn_formfind(PyObject *module, PyObject *args);
+PyObject *pyctn_catenary(PyObject *module, PyObject *args);
+PyObject *pyctn_ecatenary(PyObject *module, PyObject *args);
+PyObject *pyctn_parabola(PyObject *module, PyObject *args);
 
 static PyMethodDef mod_methods[] = {
     { "version", mod_version, METH_NOARGS, "version() -> str: the library's version (ctn_version)." },
@@ -74,6 +77,9 @@ static PyMethodDef mod_methods[] = {
       "read_string(name, text, interruptible) -> Model: read .cable text; name stands for the file in messages." },
     { "formfind", pyctn_formfind, METH_VARARGS,
       "formfind(name, text, out, tol, maxit, interruptible) -> report: find the shape, write it to out." },
+    { "catenary", pyctn_catenary, METH_VARARGS, "catenary(l, h, w, S, x) -> dict (ctn_catenary_solve)" },
+    { "ecatenary", pyctn_ecatenary, METH_VARARGS, "ecatenary(l, h, w, EA, L0, x) -> dict (ctn_ecatenary_solve)" },
+    { "parabola", pyctn_parabola, METH_VARARGS, "parabola(l, h, q, L0, EA, x) -> dict (ctn_parabola_solve)" },
     { NULL, NULL, 0, NULL }
 };
 
