@@ -58,7 +58,8 @@ class Solution:
     displacements, reactions, coordinates ((n, 3), model node order: the order of the
     JSON's `nodes`), forces, stresses, strains, lengths, slack, utilisation (per element,
     the order of the JSON's `elements`); steps (a list of Step, one per load step);
-    residual_history, increment_history; summary (a dict of the solve's summary:
+    residual_history, increment_history; groups(step) and cables (dicts: few, not per
+    element); summary (a dict of the solve's summary:
     iterations, residual, factorizations, timings ...); stability (a dict, None when not
     checked); modes (a Modes, None without a modal analysis). Arrays are numpy arrays
     read in place from the C solution where it holds them (displacements, reactions,
@@ -113,6 +114,19 @@ class Solution:
     @property
     def stability(self):
         return self._c.stability()
+
+    def groups(self, step=-1):
+        """The groups at the end of a step: {name: dict of max_force, min_force, max_stress,
+        max_strain, max_utilisation, worst_element, slack, length, stressed_length, weight}."""
+        return {g["name"]: g for g in self._c.groups(step)}
+
+    @property
+    def cables(self):
+        """The generated cables (a `cable` line each): nodes, first_element, count, length
+        (for a target: the length found), sag (mid-span, nan when the cable does not cross
+        mid-span), max_sag_from_chord, target ("", "H", "sag", "tension"), target_value,
+        target_achieved, target_iterations."""
+        return self._c.cables()
 
     @property
     def modes(self):

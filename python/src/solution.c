@@ -171,6 +171,59 @@ static PyObject *sol_stability(PyObject *op, PyObject *noargs)
 
 PyObject *pyctn_solution_modes(PyObject *op, PyObject *noargs);
 
+/* groups(k) -> list of dicts (ctn_group_result), one per group (few: not per element). */
+static PyObject *sol_groups(PyObject *op, PyObject *args)
+{
+    pyctn_solution *self = (pyctn_solution *)op;
+    Py_ssize_t k;
+    size_t j, n = ctn_model_group_count(self->model->m);
+    if (!PyArg_ParseTuple(args, "n", &k) || step_index(self, k, &j)) return NULL;
+    PyObject *list = PyList_New(0);
+    for (size_t g = 0; list && g < n; g++) {
+        ctn_group_result r;
+        if (ctn_solution_group(self->model->m, self->s, j, g, &r)) {
+            Py_DECREF(list);
+            return pyctn_raise_msg(sol_state(self), CTN_ERR_INVALID, "a group could not be read");
+        }
+        PyObject *d = Py_BuildValue("{s:s,s:n,s:d,s:d,s:d,s:d,s:O,s:d,s:i,s:n,s:d,s:d,s:d}", "name", r.name,
+                                    "elements", (Py_ssize_t)r.elements, "max_force", r.max_force, "min_force",
+                                    r.min_force, "max_stress", r.max_stress, "max_strain", r.max_strain,
+                                    "has_capacity", r.has_capacity ? Py_True : Py_False, "max_utilisation",
+                                    r.max_utilisation, "worst_element", r.worst_element, "slack", (Py_ssize_t)r.slack,
+                                    "length", r.length, "stressed_length", r.stressed_length, "weight", r.weight);
+        if (!d || PyList_Append(list, d)) Py_CLEAR(list);
+        Py_XDECREF(d);
+    }
+    return list;
+}
+
+/* cables() -> list of dicts, one per generated cable: ends, elements, length, sag, target. */
+static PyObject *sol_cables(PyObject *op, PyObject *noargs)
+{
+    (void)noargs;
+    pyctn_solution *self = (pyctn_solution *)op;
+    const ctn_model *m = self->model->m;
+    size_t n = ctn_model_cable_count(m);
+    static const char *const kinds[] = { "", "H", "sag", "tension" };
+    PyObject *list = PyList_New(0);
+    for (size_t i = 0; list && i < n; i++) {
+        ctn_cable_info c;
+        double sag = 0, far = 0;
+        if (ctn_model_cable(m, i, &c)) break;
+        int has_sag = ctn_solution_cable_sag(m, self->s, i, &sag) == CTN_OK;
+        ctn_solution_cable_max_sag_from_chord(m, self->s, i, &far);
+        int t = (int)c.target;
+        PyObject *d = Py_BuildValue("{s:(ii),s:n,s:n,s:d,s:d,s:d,s:s,s:d,s:d,s:i}", "nodes", c.node[0], c.node[1],
+                                    "first_element", (Py_ssize_t)c.first, "count", (Py_ssize_t)c.count, "length",
+                                    c.length, "sag", has_sag ? sag : Py_NAN, "max_sag_from_chord", far, "target",
+                                    t >= 0 && t < 4 ? kinds[t] : "?", "target_value", c.target_value,
+                                    "target_achieved", c.target_achieved, "target_iterations", c.target_iterations);
+        if (!d || PyList_Append(list, d)) Py_CLEAR(list);
+        Py_XDECREF(d);
+    }
+    return list;
+}
+
 /* Calls that record errors in the model's context hold the model's lock. */
 static void lock(pyctn_solution *self)
 {
@@ -249,6 +302,8 @@ static PyMethodDef sol_methods[] = {
     { "step_count", sol_step_count, METH_NOARGS, "step_count() -> int" },
     { "step", sol_step, METH_VARARGS, "step(k) -> (name, reason, load_factor, iterations, d, reactions, rotations, moments)" },
     { "elements", sol_elements, METH_VARARGS, "elements(k) -> (force, stress, strain, length, slack, utilisation)" },
+    { "groups", sol_groups, METH_VARARGS, "groups(k) -> list of dicts" },
+    { "cables", sol_cables, METH_NOARGS, "cables() -> list of dicts" },
     { "histories", sol_histories, METH_NOARGS, "histories() -> (residual, increment)" },
     { "stability", sol_stability, METH_NOARGS, "stability() -> dict or None" },
     { "modes", pyctn_solution_modes, METH_NOARGS, "modes() -> None or dict of arrays" },

@@ -91,3 +91,26 @@ def test_element_arrays_are_consistent():
     assert sol.residual_history.size == sol.iterations + 1
     assert sol.increment_history.size == sol.iterations
     assert sol.stability["stable"] is True
+
+
+def test_groups_and_cable_targets():
+    """A cable set by its sag (docs/format.md, `cable`): the target is reached, the JSON's
+    cables and groups are the arrays'."""
+    text = """units kN m
+gravity 0 0 -1
+material steel E=2e8 strain=engineering
+section s material=steel A=3.14e-4 w=0.1 mbl=300
+node 1 0 0 0 fix=xyz
+node 2 200 0 30 fix=xyz
+cable 1 2 section=s n=40 sag=12 group=main
+"""
+    sol = catena.Model.from_string(text, name="sag.cable").solve(check=True)
+    (cab,) = sol.cables
+    assert cab["target"] == "sag" and abs(cab["target_achieved"] - 12) < 1e-9 * 12
+    j = sol.to_dict()
+    assert cab["length"] == j["cables"][0]["length"] or abs(cab["length"] - j["cables"][0]["length"]) < 1e-12 * 250
+    g = sol.groups()["main"]
+    assert g["elements"] == 40 and g["max_force"] == sol.forces.max() and g["min_force"] == sol.forces.min()
+    assert g["max_utilisation"] == pytest.approx(sol.utilisation.max(), rel=0, abs=0)
+    assert np.allclose(sol.utilisation, sol.forces / 300, rtol=1e-15)
+    assert g["weight"] == pytest.approx(0.1 * sol.model.l0.sum(), rel=1e-12)
