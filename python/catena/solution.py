@@ -120,6 +120,16 @@ class Solution:
         max_strain, max_utilisation, worst_element, slack, length, stressed_length, weight}."""
         return {g["name"]: g for g in self._c.groups(step)}
 
+    def catenary(self, element, step=-1):
+        """A catenary element's forces (element: its index in model order): H, tension at
+        both ends, end_forces, V, sag, stretched_length."""
+        return self._c.catenary(step, element)
+
+    def element_shape(self, element, n=21, step=-1):
+        """The deformed shape of an element (index) as n points (n, 3): on the elastic
+        catenary for a catenary element, on its straight segments otherwise."""
+        return np.asarray(self._c.element_shape(step, element, n))
+
     @property
     def cables(self):
         """The generated cables (a `cable` line each): nodes, first_element, count, length

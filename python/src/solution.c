@@ -197,6 +197,44 @@ static PyObject *sol_groups(PyObject *op, PyObject *args)
     return list;
 }
 
+/* catenary(k, i) -> dict: catenary element i at the end of step k (ctn_solution_catenary). */
+static PyObject *sol_catenary(PyObject *op, PyObject *args)
+{
+    pyctn_solution *self = (pyctn_solution *)op;
+    Py_ssize_t k, i;
+    size_t j;
+    if (!PyArg_ParseTuple(args, "nn", &k, &i) || step_index(self, k, &j)) return NULL;
+    ctn_catenary_result r;
+    r.size = sizeof r;
+    int rc = i < 0 ? CTN_ERR_INVALID : ctn_solution_catenary(self->model->m, self->s, j, (size_t)i, &r);
+    if (rc) return pyctn_raise_msg(sol_state(self), rc, "not a catenary element, or its state has no solution");
+    return Py_BuildValue("{s:d,s:(dd),s:((ddd)(ddd)),s:(dd),s:d,s:d}", "H", r.H, "tension", r.tension[0], r.tension[1],
+                         "end_forces", r.force[0][0], r.force[0][1], r.force[0][2], r.force[1][0], r.force[1][1],
+                         r.force[1][2], "V", r.V[0], r.V[1], "sag", r.sag, "stretched_length", r.length);
+}
+
+/* element_shape(k, i, n) -> Array (n, 3): the deformed shape of element i at step k. */
+static PyObject *sol_element_shape(PyObject *op, PyObject *args)
+{
+    pyctn_solution *self = (pyctn_solution *)op;
+    Py_ssize_t k, i, n;
+    size_t j;
+    if (!PyArg_ParseTuple(args, "nnn", &k, &i, &n) || step_index(self, k, &j)) return NULL;
+    if (n < 2 || n > 1000000 || i < 0) {
+        PyErr_SetString(PyExc_ValueError, "element_shape: n must be 2 to 1e6 and the element an index");
+        return NULL;
+    }
+    Py_ssize_t shape[2] = { n, 3 };
+    pyctn_array *a = pyctn_array_new(sol_state(self), NULL, NULL, "d", 2, shape);
+    if (!a) return NULL;
+    int rc = ctn_solution_element_shape(self->model->m, self->s, j, (size_t)i, (int)n, a->data);
+    if (rc) {
+        Py_DECREF(a);
+        return pyctn_raise_msg(sol_state(self), rc, "element_shape: no such element");
+    }
+    return (PyObject *)a;
+}
+
 /* cables() -> list of dicts, one per generated cable: ends, elements, length, sag, target. */
 static PyObject *sol_cables(PyObject *op, PyObject *noargs)
 {
@@ -304,6 +342,8 @@ static PyMethodDef sol_methods[] = {
     { "elements", sol_elements, METH_VARARGS, "elements(k) -> (force, stress, strain, length, slack, utilisation)" },
     { "groups", sol_groups, METH_VARARGS, "groups(k) -> list of dicts" },
     { "cables", sol_cables, METH_NOARGS, "cables() -> list of dicts" },
+    { "catenary", sol_catenary, METH_VARARGS, "catenary(k, i) -> dict" },
+    { "element_shape", sol_element_shape, METH_VARARGS, "element_shape(k, i, n) -> Array (n, 3)" },
     { "histories", sol_histories, METH_NOARGS, "histories() -> (residual, increment)" },
     { "stability", sol_stability, METH_NOARGS, "stability() -> dict or None" },
     { "modes", pyctn_solution_modes, METH_NOARGS, "modes() -> None or dict of arrays" },

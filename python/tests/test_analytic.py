@@ -43,3 +43,22 @@ def test_parabola_sag():
 def test_no_solution_is_an_error():
     with pytest.raises(catena.CatenaError):
         catena.analytic.catenary(200.0, 0.0, 0.1, 199.0)      # shorter than the chord
+
+
+def test_catenary_element_is_irvines():
+    """One `catenary` element over the paper's span (any EA, w) gives Irvine's H, V and
+    sag, as the closed form solved from the unstressed length does."""
+    EA, w, L0 = 2.0e8 * 3.14e-4, 0.1, 250.8777
+    m = catena.Model(units=("kN", "m"), gravity=(0, -1, 0))
+    m.material("steel", E=2.0e8).section("s", material="steel", A=3.14e-4, w=w)
+    m.nodes([1, 2], [[0, 0, 0], [200, 30, 0]], fix="xyz")
+    m.elements([1], [[1, 2]], family="catenary", section="s", length=L0)
+    sol = m.solve(check=True)
+    ec = catena.analytic.elastic_catenary(200.0, 30.0, w, EA, L0)
+    r = sol.catenary(0)
+    assert r["H"] == pytest.approx(ec.H, rel=1e-10)
+    assert r["V"][0] == pytest.approx(ec.V_left, rel=1e-10)
+    assert r["stretched_length"] == pytest.approx(ec.length, rel=1e-10)
+    pts = sol.element_shape(0, n=5)
+    assert pts.shape == (5, 3) and np.allclose(pts[0], [0, 0, 0]) and np.allclose(pts[-1], [200, 30, 0])
+    assert sol.reactions[0, 0] == pytest.approx(-ec.H, rel=1e-10)
