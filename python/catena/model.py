@@ -1,6 +1,8 @@
 """catena models in Python: read from a .cable file, or built from arrays and keywords
 (each directive of docs/format.md has its method, or the generic Model.add) and written
 back as a .cable file that `catena solve` reads unchanged."""
+from __future__ import annotations
+
 import os
 import tempfile
 import threading
@@ -108,7 +110,7 @@ class Model:
 
     # ---- reading ----------------------------------------------------------------------
     @classmethod
-    def read(cls, path):
+    def read(cls, path: str | os.PathLike) -> "Model":
         """Read a .cable file (the C reader); ModelError (with .path, .line) on a bad model,
         CatenaIOError when it cannot be read."""
         path = os.fspath(path)
@@ -119,7 +121,7 @@ class Model:
         return m
 
     @classmethod
-    def from_string(cls, text, name="<string>"):
+    def from_string(cls, text: str, name: str = "<string>") -> "Model":
         """A model from .cable text; name stands for the file in messages."""
         m = cls(name=name)
         m._lines = text.splitlines()
@@ -153,7 +155,7 @@ class Model:
     def node(self, id, x, y, z, fix=None, mass=None):
         return self.add("node", id, x, y, z, fix=fix or None, mass=mass)
 
-    def nodes(self, ids, X, fix=None, mass=None):
+    def nodes(self, ids, X, fix=None, mass=None) -> "Model":
         """Nodes from arrays: ids (n,), X (n, 3); fix one word for all ("xyz"), a word per
         node, or a bool array (n, 3); mass None, a number or an array (n,)."""
         X = np.asarray(X, dtype=float).reshape(-1, 3)
@@ -171,7 +173,7 @@ class Model:
     def element(self, id, n1, n2, family="element", **keys):
         return self.add(family, id, n1, n2, **keys)
 
-    def elements(self, ids, conn, family="element", **keys):
+    def elements(self, ids, conn, family: str = "element", **keys) -> "Model":
         """Elements from arrays: ids (ne,), conn (ne, 2) node ids; family "element" (a cable
         element), "spring", "rspring", "catenary"; keys each one value for all (section=,
         k=, group=) or an array with a value per element (l0=, N0=, s0=, eps0=, k= ...)."""
@@ -245,14 +247,14 @@ class Model:
         return self.add("solve", **keys)
 
     # ---- text ---------------------------------------------------------------------------
-    def to_cable(self):
+    def to_cable(self) -> str:
         """The model as .cable text (a file read: its text as it is on disk)."""
         if self._lines is None:
             with open(self.path, encoding="utf-8", errors="surrogateescape") as f:
                 return f.read()
         return "\n".join(self._lines) + "\n"
 
-    def write(self, path):
+    def write(self, path: str | os.PathLike) -> None:
         """Write the model as a .cable file (temporary beside it, then renamed)."""
         path = os.fspath(path)
         text = self.to_cable()
@@ -273,7 +275,7 @@ class Model:
         return self._c
 
     # ---- solving ------------------------------------------------------------------------
-    def solve(self, check=False, **options):
+    def solve(self, check: bool = False, **options) -> Solution:
         """Solve (as `catena solve` does: validate, resolve targets, solve) -> Solution."""
         if "lambda_max" in options:
             options["lambda"] = options.pop("lambda_max")
@@ -320,6 +322,6 @@ def _main_thread():
     return threading.current_thread() is threading.main_thread()
 
 
-def read(path):
+def read(path: str | os.PathLike) -> Model:
     """Read a .cable model file: catena.read("m.cable") -> Model."""
     return Model.read(path)

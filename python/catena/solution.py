@@ -1,4 +1,6 @@
 """The result of a solve, as numpy arrays."""
+from __future__ import annotations
+
 import json as _json
 
 from . import errors
@@ -146,20 +148,20 @@ class Solution:
             self._modes = None if d is None else Modes(d)
         return self._modes
 
-    def check(self):
+    def check(self) -> "Solution":
         """Raise NotConvergedError (carrying this solution) unless it converged; self."""
         if not self.converged:
             raise errors.NotConvergedError(f"not converged: {self.reason}", self)
         return self
 
-    def to_json(self, pretty=True):
+    def to_json(self, pretty: bool = True) -> str:
         """The text of `catena solve --json` (ctn_result_json)."""
         return errors.call(self._c.json, pretty)
 
     def to_dict(self):
         return _json.loads(self.to_json(False))
 
-    def to_vtu(self, path, step=-1):
+    def to_vtu(self, path, step: int = -1) -> None:
         """Write step `step` (default the last) as a ParaView .vtu file (the C writer)."""
         errors.call(self._c.write_vtu, str(path), step, path=str(path))
 
