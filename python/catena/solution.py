@@ -34,7 +34,7 @@ class Step:
 
     def _elements(self):
         if self._el is None:
-            self._el = [np.asarray(b) for b in self._sol._c.elements(self.index)]
+            self._el = [np.asarray(b) for b in errors.call(self._sol._c.elements, self.index)]
         return self._el
 
     @property
@@ -120,17 +120,17 @@ class Solution:
     def groups(self, step=-1):
         """The groups at the end of a step: {name: dict of max_force, min_force, max_stress,
         max_strain, max_utilisation, worst_element, slack, length, stressed_length, weight}."""
-        return {g["name"]: g for g in self._c.groups(step)}
+        return {g["name"]: g for g in errors.call(self._c.groups, step)}
 
     def catenary(self, element, step=-1):
         """A catenary element's forces (element: its index in model order): H, tension at
         both ends, end_forces, V, sag, stretched_length."""
-        return self._c.catenary(step, element)
+        return errors.call(self._c.catenary, step, element)
 
     def element_shape(self, element, n=21, step=-1):
         """The deformed shape of an element (index) as n points (n, 3): on the elastic
         catenary for a catenary element, on its straight segments otherwise."""
-        return np.asarray(self._c.element_shape(step, element, n))
+        return np.asarray(errors.call(self._c.element_shape, step, element, n))
 
     @property
     def cables(self):
@@ -144,7 +144,7 @@ class Solution:
     def modes(self):
         """The modal analysis (Modes), None when none was asked (modes= or a `modes` line)."""
         if self._modes is False:
-            d = self._c.modes()
+            d = errors.call(self._c.modes)
             self._modes = None if d is None else Modes(d)
         return self._modes
 

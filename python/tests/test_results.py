@@ -114,3 +114,12 @@ cable 1 2 section=s n=40 sag=12 group=main
     assert g["max_utilisation"] == pytest.approx(sol.utilisation.max(), rel=0, abs=0)
     assert np.allclose(sol.utilisation, sol.forces / 300, rtol=1e-15)
     assert g["weight"] == pytest.approx(0.1 * sol.model.l0.sum(), rel=1e-12)
+
+
+def test_accessor_errors_are_catena_errors():
+    sol = catena.read(PAPER[0]).solve()
+    with pytest.raises(catena.CatenaError):
+        sol.catenary(0)                          # a cable element, not a catenary
+    with pytest.raises(IndexError):
+        sol.steps[0].forces if False else sol._c.elements(5)
+    assert sol.modes is None                     # no modal analysis asked
