@@ -73,6 +73,7 @@ setup(
     version=version(),
     packages=["catena"],
     install_requires=["numpy"],
+    python_requires=">=3.10",   # Py_NewRef, PyModule_AddObjectRef
     ext_modules=[ext],
     # Build products go to the CMake build directory, not into the source tree.
     options={"build": {"build_base": str(BUILD / "python")}},

@@ -36,7 +36,7 @@ def _tag():
 def _metadata():
     return (f"Metadata-Version: 2.1\nName: {NAME}\nVersion: {_version()}\n"
             "Summary: Geometrically non-linear static analysis of 3D cable structures (libcatena)\n"
-            "Requires-Python: >=3.9\nRequires-Dist: numpy\n"
+            "Requires-Python: >=3.10\nRequires-Dist: numpy\n"
             "Provides-Extra: pandas\nRequires-Dist: pandas; extra == \"pandas\"\n"
             "Provides-Extra: plot\nRequires-Dist: matplotlib; extra == \"plot\"\n")
 
