@@ -4,7 +4,10 @@
 # in the OpenMP pool CHOLMOD uses: one threading layer, sized by catena for each
 # factorization. The machine's BLAS alternatives are left as they were.
 set -eu
-pkgs="gcc binutils make cmake pkg-config libsuitesparse-dev libopenblas0-openmp libarpack2-dev liblapack-dev libcjson-dev gnuplot-nox clang libclang-rt-14-dev python3"
+# python3-dev, -pip, -setuptools, -numpy, -pytest: the Python package (python/, docs/python.md)
+# built offline from the tree and its tests (ctest cli_python).
+pkgs="gcc binutils make cmake pkg-config libsuitesparse-dev libopenblas0-openmp libarpack2-dev liblapack-dev libcjson-dev gnuplot-nox clang libclang-rt-14-dev python3
+      python3-dev python3-pip python3-setuptools python3-numpy python3-pytest"
 # CTN_DEPS_VTK=1: also VTK's Python reader (76 packages), which tests/cli/vtu.sh then
 # uses besides its plain XML reader to read result.vtu back.
 [ "${CTN_DEPS_VTK:-0}" = 1 ] && pkgs="$pkgs python3-vtk9"

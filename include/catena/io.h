@@ -62,6 +62,13 @@ int ctn_write_json(ctn_ctx *ctx, FILE *out, const ctn_model *m, const ctn_soluti
 int ctn_write_results(ctn_ctx *ctx, const char *dir, const ctn_model *m,
                       const ctn_solution *s);
 
+/* Write step k (0-based, < ctn_solution_step_count) of the solution as one ParaView
+ * .vtu file at path: the content of result.vtu (or result_K.vtu) of ctn_write_results,
+ * staged beside path and renamed onto it (atomic). CTN_ERR_INVALID for k out of range or
+ * a result holding a NaN or Inf (nothing written); CTN_ERR_IO when it cannot be written. */
+int ctn_write_vtu(ctn_ctx *ctx, const char *path, const ctn_model *m, const ctn_solution *s,
+                  size_t k);
+
 /* CTN_OK when every number the writers would print (summary, histories, the model's
  * coordinates and lengths, every step's displacements, reactions and element states,
  * the modes) is finite; else CTN_ERR_INVALID, recorded as "the result holds a NaN or
