@@ -80,5 +80,9 @@ int ctn_parse_add_element(ctn_line *l, int rc, int from, const char *type, int i
                           ctn_element_spec *spec);
 int ctn_parse_catenary(ctn_line *l);
 int ctn_parse_pulley(ctn_line *l);
+/* Loads and cases (directives_loads.c). */
+int ctn_parse_lineload(ctn_line *l);
+int ctn_parse_case(ctn_line *l);
+int ctn_parse_combination(ctn_line *l);
 
 #endif

@@ -30,22 +30,32 @@ struct ctn_follow {
     double *tmp;              /* ndof */
 };
 
-/* Total q of the deformed-projection hloads on element e at the end of model step k. */
-static double element_q(const ctn_model *m, size_t e, size_t k)
+/* Total q of the deformed-projection hloads of a selection on element e. */
+static double element_q_sel(const ctn_model *m, size_t e, const ctn_loadsel *sel)
 {
     double q = 0;
-    int step = (int)k + 1;
     for (size_t h = 0; h < m->hloads.n; h++) {
         const ctn_hload *hl = &m->hloads.v[h];
-        if (!hl->reference && hl->step <= step && ctn_hload_on(m, hl, e)) q += hl->q;
+        double w = ctn_loadsel_weight(sel, hl->step);
+        if (!hl->reference && w != 0 && ctn_hload_on(m, hl, e)) q += w * hl->q;
     }
     return q;
+}
+
+/* The same at the end of model step k, or (k >= the step count) in case k - steps alone. */
+static double element_q(const ctn_model *m, size_t e, size_t k)
+{
+    size_t ns = ctn_model_step_count(m);
+    int tag = CTN_CASE_TAG0 + (int)(k - ns);
+    double one = 1.0;
+    ctn_loadsel sel = k < ns ? ctn_loadsel_step(k) : (ctn_loadsel){ -1, 1, &tag, &one };
+    return element_q_sel(m, e, &sel);
 }
 
 /* Segments under a deformed-projection hload in some step (count, or fill when f). */
 static size_t scan(const ctn_model *m, struct ctn_follow *f)
 {
-    size_t n = 0, last = ctn_model_step_count(m) - 1;
+    size_t n = 0, last = ctn_model_step_count(m) - 1 + m->cases.n;
     for (size_t e = 0; e < m->elements.n; e++) {
         int hit = 0;
         for (size_t k = 0; k <= last && !hit; k++) hit = element_q(m, e, k) != 0;
@@ -153,11 +163,17 @@ int ctn_follow_create(ctn_problem *p)
 
 void ctn_follow_step(ctn_problem *p, size_t k)
 {
+    ctn_loadsel sel = ctn_loadsel_step(k);
+    ctn_follow_sel(p, &sel);
+}
+
+void ctn_follow_sel(ctn_problem *p, const ctn_loadsel *sel)
+{
     struct ctn_follow *f = p->fl;
     if (!f) return;
     for (size_t s = 0; s < f->n; s++) {
         f->qa[s] = f->qb[s];
-        f->qb[s] = element_q(p->m, (size_t)f->elem[s], k);
+        f->qb[s] = element_q_sel(p->m, (size_t)f->elem[s], sel);
     }
 }
 
