@@ -237,6 +237,11 @@ static inline int ctn_model_load_tag(const ctn_model *m)
     return m->in_case ? CTN_CASE_TAG0 + (int)m->cases.n - 1 : (int)m->steps.n;
 }
 
+/* Convert v, carrying `unit`, to the model's units for a quantity of force^f length^l
+ * (units.c); 1 with a message when the unit is unknown, of another dimension, or the
+ * model has no units. */
+int ctn_model_convert(ctn_model *m, const char *unit, int f, int l, double *v, char *msg, size_t size);
+
 /* Report an error located at the model's current origin (file:line if known). */
 int ctn_model_error(const ctn_model *m, int code, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
