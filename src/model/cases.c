@@ -83,8 +83,9 @@ int ctn_model_add_combination(ctn_model *m, const char *name, const char *const 
         int from = m->cases.v[c].from;
         if (cb.from >= 0 && from != cb.from)
             return ctn_model_error(m, CTN_ERR_MODEL, "combination '%s': its cases start from different states ('%s' "
-                                   "from step %d, '%s' from step %d): combine cases of one installed state", name,
-                                   cases[0], cb.from + 1, cases[i], from + 1);
+                                   "from step '%s', '%s' from step '%s'): combine cases of one installed state", name,
+                                   cases[0], ctn_model_step_name(m, (size_t)cb.from), cases[i],
+                                   ctn_model_step_name(m, (size_t)from));
         cb.from = from;
     }
     for (size_t i = 0; i < n; i++) {

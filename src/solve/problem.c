@@ -118,6 +118,10 @@ int ctn_problem_create_any(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_opt
         return ctn_error_at(ctx, CTN_ERR_MODEL, m->file, m->tloads.v[0].line,
                             "temperature changes are applied in load steps: method=arclength follows a single load "
                             "pattern (use method=auto or method=newton)");
+    if (m->cases.n && o.method == CTN_METHOD_ARCLENGTH)
+        return ctn_error_at(ctx, CTN_ERR_MODEL, m->file, m->cases.v[0].line,
+                            "load cases are solved by load steps: method=arclength follows a single load pattern "
+                            "(use method=auto or method=newton)");
     double t0 = ctn_clock();
     ctn_problem *p = ctn_calloc(ctx, 1, sizeof *p);
     if (!p) return CTN_ERR_NOMEM;
