@@ -27,6 +27,8 @@ static int solve_case(ctn_problem *p, const ctn_solution *s, size_t i, double *d
     ctn_loadsel sel;
     ctn_model_case_info(m, i, &name, &from, &comb);
     ctn_model_case_sel(m, i, &sel, tags, factors);
+    if ((size_t)from >= s->nsteps || s->steps[from].reason != CTN_CONVERGED)
+        return ctn_error(p->ctx, CTN_ERR_INVALID, "case '%s': its installed state (step %d) was not solved", name, from + 1);
     ctn_solution *cs = NULL;
     size_t idx = 0;
     int rc = ctn_solution_create(p->ctx, m->nodes.n, m->elements.n, &cs);

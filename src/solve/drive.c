@@ -202,7 +202,7 @@ int ctn_problem_solve(ctn_problem *p, ctn_solution **out)
         if (!rc && s->sum.reason == CTN_CONVERGED) rc = check_stability(p, s);
         if (s->sum.reason == CTN_CONVERGED) s->sum.fail_element = 0;
         if (!rc && s->sum.reason == CTN_CONVERGED && p->opt.modal.count > 0) rc = ctn_problem_modes(p, s, &p->opt.modal);
-        if (!rc && s->sum.reason == CTN_CONVERGED && ctn_model_case_count(p->m)) rc = ctn_problem_cases(p, s);
+        if (!rc && s->sum.reason == CTN_CONVERGED && !p->max_steps && ctn_model_case_count(p->m)) rc = ctn_problem_cases(p, s);
         if (!s->sum.fext_norm) s->sum.fext_norm = ctn_problem_fref(p);
         s->sum.ordering = p->ls ? ctn_linsolve_ordering(p->ls) : CTN_ORDER_NATURAL;
         s->sum.ndof = p->ndof;
