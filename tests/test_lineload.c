@@ -129,9 +129,44 @@ static void test_catenary(void)
     ctn_ctx_destroy(&ctx);
 }
 
+/* ice: a 10 mm radial sleeve of 900 kg/m3 on a 28.1 mm conductor weighs
+ * 900 x 9.80665 x pi x 0.010 x 0.0381 N/m; the iced span is the catenary of w + that. */
+static void test_ice(void)
+{
+    const double wi = 900 * 9.80665 * 3.14159265358979323846 * 0.010 * (0.0281 + 0.010) / 1000;   /* kN/m */
+    char text[1024];
+    snprintf(text, sizeof text,
+             "units kN m\ngravity 0 0 -1\nmaterial acsr E=6.9e7 strain=engineering\n"
+             "section drake material=acsr A=4.68e-4 w=0.01594\nnode 1 0 0 0 fix=xyz\nnode 2 350 0 0 fix=xyz\n"
+             "cable 1 2 section=drake n=800 length=351\nice all thickness=10mm density=900kg/m3 d=28.1mm\n"
+             "solve tol=1e-12\n");
+    ctn_ctx *ctx = NULL;
+    ctn_model *m = NULL;
+    ctn_solution *s = NULL;
+    ctn_solve_options opt;
+    ctn_ctx_create(&ctx);
+    int rc = ctn_read_string(ctx, "ice", text, strlen(text), &m, &opt);
+    if (!rc) rc = ctn_solve(ctx, m, &opt, &s);
+    CHECK_MSG(rc == CTN_OK, "%s", ctn_ctx_message(ctx));
+    ctn_ecatenary_in in = { 350, 0, 0.01594 + wi, 6.9e7 * 4.68e-4, 351 };
+    ctn_ecatenary cat;
+    CHECK(ctn_ecatenary_solve(ctx, &in, &cat) == CTN_OK);
+    if (s) {
+        const double *R = ctn_solution_reactions(s);
+        CHECK_CLOSE(R[2] + R[5], (0.01594 + wi) * 351, 1e-12, 0);     /* the weight, exactly */
+        CHECK_CLOSE(-R[0], cat.H, 1e-6, 0);
+        CHECK_CLOSE(sqrt(R[0] * R[0] + R[1] * R[1] + R[2] * R[2]), cat.sum.T_max, 1e-6, 0);
+        printf("ice: H %.10g against %.10g (%+.2e)\n", -R[0], cat.H, -R[0] / cat.H - 1);
+    }
+    ctn_solution_destroy(&s);
+    ctn_model_destroy(&m);
+    ctn_ctx_destroy(&ctx);
+}
+
 int main(void)
 {
     test_funicular();
     test_catenary();
+    test_ice();
     CHECK_DONE();
 }

@@ -498,7 +498,7 @@ static const directive directives[] = {
     { "modes", d_modes },     { "moment", d_moment },   { "rspring", d_rspring },
         { "catenary", ctn_parse_catenary }, { "pulley", ctn_parse_pulley },
     { "lineload", ctn_parse_lineload }, { "case", ctn_parse_case },
-    { "combination", ctn_parse_combination },
+    { "combination", ctn_parse_combination }, { "ice", ctn_parse_ice },
 };
 
 int ctn_parse_directive(ctn_line *l)

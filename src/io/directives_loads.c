@@ -2,6 +2,7 @@
  * (docs/format.md). */
 #include "io/parse.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -83,4 +84,26 @@ int ctn_parse_combination(ctn_line *l)
     if (!rc && text[pos]) return ctn_parse_error(l, "combination: too many terms (at most %d)", CTN_MAX_TOKENS);
     l->used = ~0ull;
     return rc ? rc : ctn_model_add_combination(l->m, l->tok[1], np, f, n);
+}
+
+/* ice TARGET thickness=T density=RHO d=DIAMETER: the weight of a radial ice sleeve,
+ * rho g pi t (d + t) per unstressed length along gravity, as a lineload. */
+int ctn_parse_ice(ctn_line *l)
+{
+    double t = 0, rho = 0, d = 0, g[3];
+    int rc = ctn_parse_positional(l, 1, "ice TARGET thickness=LENGTH density=MASS_PER_VOLUME d=DIAMETER");
+    if (!rc) rc = ctn_parse_key_num(l, 2, "thickness", 1, &t);
+    if (!rc) rc = ctn_parse_key_num(l, 2, "density", 1, &rho);
+    if (!rc) rc = ctn_parse_key_num(l, 2, "d", 1, &d);
+    if (!rc) rc = ctn_parse_leftovers(l, 2, "ice");
+    if (rc) return rc;
+    if (!(t >= 0 && rho >= 0 && d >= 0)) return ctn_parse_error(l, "ice: thickness, density and d must be >= 0");
+    double g0 = ctn_model_standard_gravity(l->m), gn = 0;
+    if (!(g0 > 0)) return ctn_parse_error(l, "ice: the weight of a density needs the model's units (give 'units FORCE LENGTH')");
+    ctn_model_gravity(l->m, g);
+    gn = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    if (!(gn > 0)) return ctn_parse_error(l, "ice: its weight acts along gravity, and there is none (give gravity on an earlier line)");
+    double w = rho * g0 * 3.14159265358979323846 * t * (d + t), q[3];
+    for (int k = 0; k < 3; k++) q[k] = w * g[k] / gn;
+    return ctn_model_add_lineload(l->m, l->tok[1], q);
 }

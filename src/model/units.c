@@ -1,7 +1,8 @@
 /* Units: the model's force and length units (`units F L`) and the units a value may carry
  * (`E=200GPa`, `A=314mm2`, `w=100N/m`), converted to the model's. A unit is a product of
  * named units with integer powers, divided by another: N, kN, MN, lbf, kip (force);
- * mm, cm, m, km, in, ft (length); Pa, kPa, MPa, GPa, psi, ksi (stress). */
+ * mm, cm, m, km, in, ft (length); Pa, kPa, MPa, GPa, psi, ksi (stress); kg, t (mass, in
+ * force s^2/length: time is always in seconds). */
 #include "model/model.h"
 
 #include <ctype.h>
@@ -25,6 +26,7 @@ static const unit_def units[] = {
     { "Pa", 1, -2, 1.0 },      { "kPa", 1, -2, 1e3 },     { "MPa", 1, -2, 1e6 },
     { "GPa", 1, -2, 1e9 },     { "psi", 1, -2, CTN_LBF / (0.0254 * 0.0254) },
     { "ksi", 1, -2, 1e3 * CTN_LBF / (0.0254 * 0.0254) },
+    { "kg", 1, -1, 1.0 },      { "t", 1, -1, 1e3 },       /* mass: N s^2/m (seconds fixed) */
 };
 
 static const unit_def *find_unit(const char *s, size_t n)
@@ -92,6 +94,7 @@ static const char *dim_name(int f, int l, char *buf, size_t size)
     if (f == 0 && l == 1) snprintf(buf, size, "length");
     if (f == 1 && l == -1) snprintf(buf, size, "force/length");
     if (f == 1 && l == 1) snprintf(buf, size, "force length");
+    if (f == 1 && l == -4) snprintf(buf, size, "density (mass/length^3)");
     return buf;
 }
 
@@ -102,7 +105,7 @@ int ctn_model_convert(ctn_model *m, const char *unit, int f, int l, double *v, c
     char a[32], b[32];
     if (!parse_unit(unit, &si, &uf, &ul)) {
         snprintf(msg, size, "unknown unit '%.40s' (units: N kN MN lbf kip, mm cm m km in ft, Pa kPa MPa GPa psi "
-                 "ksi, with powers and one '/': mm2, kN/m, N/mm2)", unit);
+                 "ksi, kg t, with powers and one '/': mm2, kN/m, N/mm2, kg/m3)", unit);
         return 1;
     }
     if (uf != f || ul != l) {
