@@ -499,6 +499,7 @@ static const directive directives[] = {
         { "catenary", ctn_parse_catenary }, { "pulley", ctn_parse_pulley },
     { "lineload", ctn_parse_lineload }, { "case", ctn_parse_case },
     { "combination", ctn_parse_combination }, { "ice", ctn_parse_ice },
+    { "wind", ctn_parse_wind },
 };
 
 int ctn_parse_directive(ctn_line *l)

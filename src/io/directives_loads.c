@@ -107,3 +107,45 @@ int ctn_parse_ice(ctn_line *l)
     for (int k = 0; k < 3; k++) q[k] = w * g[k] / gn;
     return ctn_model_add_lineload(l->m, l->tok[1], q);
 }
+
+/* dir=X,Y,Z: three numbers. */
+static int parse_dir(ctn_line *l, const char *v, double dir[3])
+{
+    char buf[128];
+    snprintf(buf, sizeof buf, "%s", v);
+    char *p = buf;
+    for (int k = 0; k < 3; k++) {
+        char *c = strchr(p, ',');
+        if ((k < 2) != (c != NULL)) return ctn_parse_error(l, "wind: dir= takes three numbers X,Y,Z (found '%.40s')", v);
+        if (c) *c = '\0';
+        int rc = ctn_parse_num(l, "a wind direction component", p, &dir[k]);
+        if (rc) return rc;
+        p = c ? c + 1 : p;
+    }
+    return CTN_OK;
+}
+
+/* wind TARGET dir=X,Y,Z (pressure=P | speed=V rho=RHO) [cd=CD] d=D: drag cd p d per unit
+ * length of each chord projected on the plane normal to the wind, p = 1/2 rho V^2. */
+int ctn_parse_wind(ctn_line *l)
+{
+    double dir[3], p = 0, V = 0, rho = 0, cd = 1, d = 0;
+    int rc = ctn_parse_positional(l, 1, "wind TARGET dir=X,Y,Z pressure=P|speed=V rho=RHO [cd=CD] d=DIAMETER");
+    const char *dv = rc ? NULL : ctn_parse_key(l, 2, "dir");
+    if (!rc) ctn_parse_key(l, 2, "d");                      /* d= is not a misspelt dir= */
+    if (!rc && !dv) return ctn_parse_missing(l, 2, NULL, "dir", " (the wind's direction X,Y,Z)");
+    if (!rc) rc = parse_dir(l, dv, dir);
+    int hp = !rc && ctn_parse_key(l, 2, "pressure"), hv = !rc && ctn_parse_key(l, 2, "speed");
+    if (!rc && hp == hv) return ctn_parse_error(l, "wind: give pressure= or speed= (with rho=), one of them");
+    if (!rc && hp) rc = ctn_parse_key_num(l, 2, "pressure", 1, &p);
+    if (!rc && hv) rc = ctn_parse_key_num(l, 2, "speed", 1, &V);
+    if (!rc && hv) rc = ctn_parse_key_num(l, 2, "rho", 1, &rho);
+    if (!rc) rc = ctn_parse_key_num(l, 2, "cd", 0, &cd);
+    if (!rc) rc = ctn_parse_key_num(l, 2, "d", 1, &d);
+    if (!rc) rc = ctn_parse_leftovers(l, 2, "wind");
+    if (rc) return rc;
+    if (hv) p = 0.5 * rho * V * V;
+    if (!(p >= 0 && cd >= 0 && d >= 0 && rho >= 0))
+        return ctn_parse_error(l, "wind: pressure, rho, cd and d must be >= 0");
+    return ctn_model_add_wind(l->m, l->tok[1], dir, cd * p * d);
+}

@@ -89,5 +89,6 @@ int ctn_parse_lineload(ctn_line *l);
 int ctn_parse_case(ctn_line *l);
 int ctn_parse_combination(ctn_line *l);
 int ctn_parse_ice(ctn_line *l);
+int ctn_parse_wind(ctn_line *l);
 
 #endif

@@ -100,7 +100,7 @@ void ctn_model_sel_loads(const ctn_model *m, const ctn_loadsel *sel, int dead_on
         add_nodal(m->ploads.v, m->ploads.n, sel, f);
         add_element_loads(m, f);
         add_hloads(m, sel, dead_only, f);
-        ctn_model_add_lineloads(m, sel, f);
+        ctn_model_add_lineloads(m, sel, dead_only, f);
     }
     if (u) add_prescribed(m, sel, 0, u);
 }

@@ -89,9 +89,11 @@ typedef struct ctn_hload {
 typedef struct ctn_lload {
     int kind;        /* CTN_TARGET_* */
     int target;      /* element index or group index */
-    double q[3];
+    double q[3];     /* drag: q_w times the wind's unit direction */
     int step;        /* the record's tag, as ctn_pload's */
     int line;
+    int drag;        /* 1: wind drag, q_w per unit length of the chord projected on the
+                        plane normal to the wind, following the geometry (follow.c) */
 } ctn_lload;
 
 /* A load case (cases.c): the load records tagged CTN_CASE_TAG0 + its index, solved from
@@ -259,8 +261,11 @@ void ctn_model_sel_loads(const ctn_model *m, const ctn_loadsel *sel, int dead_on
 void ctn_model_sel_moments(const ctn_model *m, const ctn_loadsel *sel, double *M, double *r);
 /* Temperature changes of a selection (ne). */
 void ctn_model_sel_temperatures(const ctn_model *m, const ctn_loadsel *sel, double *dT);
-/* Add the lineloads of a selection to f (3 per node): q l0 / 2 at each end (lineload.c). */
-void ctn_model_add_lineloads(const ctn_model *m, const ctn_loadsel *sel, double *f);
+/* Add the lineloads of a selection to f (3 per node): q l0 / 2 at each end; with
+ * !dead_only the winds too, on the reference geometry (lineload.c). */
+void ctn_model_add_lineloads(const ctn_model *m, const ctn_loadsel *sel, int dead_only, double *f);
+/* wind TARGET: drag q_w [force/length] along the unit direction dir (lineload.c). */
+int ctn_model_add_wind(ctn_model *m, const char *target, const double dir[3], double q);
 /* Whether lineload l acts on element e (cable elements of its target). */
 int ctn_lload_on(const ctn_model *m, const ctn_lload *l, size_t e);
 /* Checks made when the model is solved: every lineload reaches an element, and none a
