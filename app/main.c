@@ -1,6 +1,5 @@
 /* catena: command-line entry, dispatch to sub-commands (the table is in help.c). */
 #include "app.h"
-#include "core/ctx.h"
 
 #include <SuiteSparse_config.h>
 #include <errno.h>

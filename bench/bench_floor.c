@@ -17,7 +17,7 @@
  */
 #include "assemble/asm.h"
 #include "linalg/linsolve.h"
-#include "solve/overlap.h"
+#include "problem/overlap.h"
 
 #include "bench_common.h"
 

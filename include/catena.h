@@ -87,6 +87,7 @@
 #include "catena/model.h"
 #include "catena/io.h"
 #include "catena/solve.h"
+#include "catena/analysis.h"
 #include "catena/analytic.h"
 #include "catena/compare.h"
 #include "catena/plot.h"

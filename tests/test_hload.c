@@ -10,7 +10,7 @@
  * - arc-length refuses a follower load with a model error. */
 #include "catena.h"
 #include "check.h"
-#include "solve/problem.h"
+#include "problem/problem.h"
 
 #include <stdio.h>
 #include <stdlib.h>

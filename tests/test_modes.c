@@ -16,7 +16,7 @@
  * - errors: count out of range, no mass, a weight without units (file:line); every
  *   allocation failure: CTN_ERR_NOMEM and no leak. */
 #include "element/cable2.h"
-#include "solve/modes.h"
+#include "analysis/modal/modal.h"
 #include "catena.h"
 #include "check.h"
 
@@ -385,7 +385,7 @@ static void test_net_pairs(void)
             CHECK_MSG(ms.factorizations == 0 && ms.reused_factor == 1, "factorizations %d, reused %d",
                       ms.factorizations, ms.reused_factor); /* Newton's last steps reused an older
                                                      factor: the stability check factored K_T here */
-            ctn_modal_options o = { .count = 5, .mass = lumped ? CTN_MASS_LUMPED : CTN_MASS_CONSISTENT };
+            ctn_modal_options o = { .size = sizeof(ctn_modal_options), .count = 5, .mass = lumped ? CTN_MASS_LUMPED : CTN_MASS_CONSISTENT };
             o.shift = sqrt(w[20]) / (2 * PI);           /* nearest the 21st: modes 19 .. 23 */
             CHECK(ctn_problem_modes(r.p, r.s, &o) == CTN_OK);
             check_pairs(&r, lumped, w, 18);
@@ -444,7 +444,7 @@ static void both_solvers(const char *text, int lumped, int count)
     CHECK(dense_eigenvalues(&r, lumped, w) == 0);
     check_pairs(&r, lumped, w, 0);
     for (int k = 0; k < count; k++) lb[k] = mode_eigenvalue(&r, (size_t)k);
-    ctn_modal_options o = { .count = count, .mass = lumped ? CTN_MASS_LUMPED : CTN_MASS_CONSISTENT,
+    ctn_modal_options o = { .size = sizeof(ctn_modal_options), .count = count, .mass = lumped ? CTN_MASS_LUMPED : CTN_MASS_CONSISTENT,
                             .solver = CTN_EIGEN_ARPACK };
     CHECK(ctn_problem_modes(r.p, r.s, &o) == CTN_OK);
     CHECK(ctn_solution_modal_summary(r.s, &ms) == CTN_OK && ms.solver == CTN_EIGEN_ARPACK && ms.block_solves == 0);

@@ -12,7 +12,7 @@
  * - pure Newton solves the chain to the same bits with the overlap (default threads)
  *   and without it (threads=1), in the same iterations, one factorization each (the
  *   converged state's, started beside its assembly, is dropped). */
-#include "solve/problem.h"
+#include "problem/problem.h"
 #include "catena.h"
 #include "chain_model.h"
 #include "check.h"

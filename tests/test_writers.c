@@ -534,6 +534,46 @@ static void test_failing_sink(ctn_ctx *ctx, const model_case *c)
     }
 }
 
+/* Pieces of 1, 2, ... 7 nodes in turn, from the solution's arrays: what a distributed
+ * run's source would bring (each process's owned nodes). */
+static int small_pieces(void *ud, const ctn_solution *s, size_t k, size_t lo, size_t n, ctn_node_piece *out)
+{
+    size_t *turn = ud;
+    int rc = ctn_pieces_local.nodes(NULL, s, k, lo, n, out);
+    size_t size = 1 + (*turn)++ % 7;
+    if (!rc && out->hi - out->lo > size) out->hi = out->lo + size;
+    return rc;
+}
+
+static char *run_bytes(ctn_ctx *ctx, const ctn_writer_ops *ops, const ctn_pieces *pieces, const model_case *c)
+{
+    ctn_mem_sink mb;
+    ctn_sink sink = ctn_sink_mem(&mb, ctx);
+    size_t n = ctn_solution_step_count(c->s);
+    char *text = NULL;
+    int rc = ctn_writer_run_pieces(ctx, ops, 1, n - 1, pieces, &sink, c->m, c->s);
+    if (!rc) rc = ctn_sink_mem_take(&mb, &text);
+    ctn_sink_mem_free(&mb);
+    CHECK_MSG(rc == CTN_OK, "%s: %s", ops->name, ctn_ctx_message(ctx));
+    return text;
+}
+
+/* The writers take the nodes' results a piece at a time: pieces of any size give the
+ * bytes of the solution's own. */
+static void test_pieces(ctn_ctx *ctx, const model_case *c)
+{
+    const ctn_writer_ops *ops[3] = { &ctn_writer_json, &ctn_writer_nodes_csv, &ctn_writer_vtu };
+    size_t turn = 0;
+    ctn_pieces small = { small_pieces, &turn };
+    for (int i = 0; i < 3; i++) {
+        char *a = run_bytes(ctx, ops[i], &ctn_pieces_local, c), *b = run_bytes(ctx, ops[i], &small, c);
+        CHECK_MSG(a && b && !strcmp(a, b), "%s: pieces of 1-7 nodes change the bytes", ops[i]->name);
+        ctn_free(a);
+        ctn_free(b);
+    }
+    CHECK(turn >= 2);
+}
+
 /* A full device (FILE sink): CTN_ERR_IO with the cause. */
 static void test_full_device(ctn_ctx *ctx, const model_case *c)
 {
@@ -681,6 +721,7 @@ int main(void)
         check_json(ctx, &cases[i], 1);
         check_json(ctx, &cases[i], 0);
         check_files(ctx, &cases[i]);
+        test_pieces(ctx, &cases[i]);
     }
     const model_case *small = &cases[0], *steps = &cases[1], *big = &cases[NFILE + 1];
     if (small->s && steps->s && big->s) {

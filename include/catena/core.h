@@ -105,6 +105,12 @@ void ctn_ctx_fail_alloc_at(ctn_ctx *ctx, long n);
 /* Number of allocations made through this context so far. */
 long ctn_ctx_alloc_count(const ctn_ctx *ctx);
 
+/* Advise the kernel to back the 2 MB-aligned part of [p, p + bytes) with transparent
+ * huge pages (a hint, nothing below 4 MB): what the library does with its own large
+ * blocks, for a program that installs its own allocator for SuiteSparse (the catena
+ * command does; the library never changes a process-wide allocator). */
+void ctn_mem_huge(void *p, size_t bytes);
+
 CTN_API_END
 #ifdef __cplusplus
 }

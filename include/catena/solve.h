@@ -85,6 +85,8 @@ typedef enum ctn_eigen_solver {
 
 /* A modal analysis about a converged state: K_T phi = omega^2 M phi. */
 typedef struct ctn_modal_options {
+    size_t size;          /* sizeof(ctn_modal_options): ctn_modal_options_default sets it
+                             (catena/analysis.h); keys are only ever added at the end */
     int count;            /* the number of modes N >= 1, at most the free DOFs that carry
                              mass (0: no modal analysis; the default) */
     ctn_mass_matrix mass; /* default CTN_MASS_CONSISTENT */
@@ -96,6 +98,10 @@ typedef struct ctn_modal_options {
 
 /* Solver options; ctn_solve_options_default() fills the defaults. */
 typedef struct ctn_solve_options {
+    size_t size;          /* sizeof(ctn_solve_options): ctn_solve_options_default sets it;
+                             keys are only ever added at the end, so a program built
+                             against an older header passes a smaller size and the
+                             library takes the defaults for the keys it does not know */
     double tol;           /* residual test |r| <= tol * |f_ext| (default 1e-10) */
     double dtol;          /* increment test |dd| <= dtol * (|d| + L_ref), L_ref the
                              diagonal of the model's bounding box (default 1e-8).
@@ -134,7 +140,7 @@ typedef struct ctn_solve_options {
                              always factors */
 } ctn_solve_options;
 
-/* Fill the defaults. Options belong to a solve, not to a model: a model file's `solve`
+/* Fill the defaults (and size). Options belong to a solve, not to a model: a model file's `solve`
  * line is read into options by ctn_read_file (catena/io.h). */
 void ctn_solve_options_default(ctn_solve_options *opt);
 /* CTN_OK, or CTN_ERR_INVALID with a message naming the option out of range. */
@@ -410,6 +416,9 @@ const double *ctn_solution_reactions(const ctn_solution *s);
  * (ctn_model_has_rotations). Owned by the solution. */
 const double *ctn_solution_rotations(const ctn_solution *s);
 const double *ctn_solution_reaction_moments(const ctn_solution *s);
+/* The threads= option of the solve that made it (0 auto, 1 one thread, n): what the
+ * result writers ask the thread policy with. */
+int ctn_solution_threads(const ctn_solution *s);
 /* Whether the solution holds rotations (its model has a node with 6 DOFs). */
 int ctn_solution_has_rotations(const ctn_solution *s);
 /* The same at the end of step k (either out-pointer may be NULL; both get NULL when the

@@ -1,7 +1,7 @@
 /* The span's plane (from gravity, or the resultant load) and its loads: self-weight,
  * a load per unit horizontal length, point loads. */
 #include "compare/cmp.h"
-#include "solve/sag.h"
+#include "post/sag.h"
 
 #include <math.h>
 #include <string.h>

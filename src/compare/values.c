@@ -1,6 +1,6 @@
 /* Values of a polyline (FEA nodes, funicular joints) in the span's plane. */
 #include "compare/cmp.h"
-#include "solve/sag.h"
+#include "post/sag.h"
 
 #include <math.h>
 

@@ -26,6 +26,7 @@ struct ctn_ctx {
     struct ctn_thr_pool *pool;  /* the helper thread (core/threads.c), NULL until needed */
     long thr_started;        /* threads started for this context (tests) */
     int thr_any_size;        /* tests: 1 takes every site's size threshold as met */
+    const struct ctn_comm *comm; /* the processes of an analysis (dist/comm.h), NULL: one */
 };
 
 /* Remember the file open as fd as an input of this context (the first CTN_INPUTS_MAX):
@@ -65,6 +66,6 @@ void ctn_free(void *p);
  * writes) this is most of the cost of fresh memory. */
 #define CTN_HUGE_PAGE ((size_t)2 << 20)
 #define CTN_HUGE_MIN ((size_t)4 << 20)
-void ctn_mem_huge(void *p, size_t bytes);
+/* ctn_mem_huge is public (catena/core.h). */
 
 #endif

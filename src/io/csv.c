@@ -54,15 +54,18 @@ static void node_row(ctn_wbuf *b, const ctn_node_info *p, const double *d, const
 static int nodes_step(void *p, const ctn_solution *s, size_t k)
 {
     ctn_writer *w = p;
-    ctn_step_result st;
-    const double *th = NULL, *m = NULL;
     if (k + 1 < ctn_solution_step_count(s)) return CTN_OK;
-    if (ctn_solution_step(s, k, &st) || ctn_solution_step_rotations(s, k, &th, &m)) return ctn_writer_mismatch(w);
-    if (!th != !ctn_model_has_rotations(w->m)) return ctn_writer_mismatch(w);
-    for (size_t i = 0; i < ctn_model_node_count(w->m) && !w->out.err; i++) {
-        ctn_node_info n;
-        if (ctn_model_node(w->m, i, &n)) return ctn_writer_mismatch(w);
-        node_row(&w->out, &n, st.d + 3 * i, st.react + 3 * i, th ? th + 3 * i : NULL, m ? m + 3 * i : NULL);
+    size_t nn = ctn_model_node_count(w->m);
+    ctn_node_piece pc;
+    for (size_t lo = 0; lo < nn && !w->out.err; lo = pc.hi) {
+        if (w->pieces->nodes(w->pieces->ud, s, k, lo, nn, &pc)) return ctn_writer_mismatch(w);
+        if (!pc.rot != !ctn_model_has_rotations(w->m)) return ctn_writer_mismatch(w);
+        for (size_t i = pc.lo; i < pc.hi && !w->out.err; i++) {
+            ctn_node_info n;
+            if (ctn_model_node(w->m, i, &n)) return ctn_writer_mismatch(w);
+            node_row(&w->out, &n, ctn_piece_d(&pc, i), ctn_piece_react(&pc, i), ctn_piece_rot(&pc, i),
+                     ctn_piece_mom(&pc, i));
+        }
     }
     return w->out.err;
 }

@@ -1,8 +1,8 @@
 /* The directives of the .cable format (docs/format.md), one handler each. */
 #include "io/fmt.h"
 #include "io/parse.h"
+#include "catena/analysis.h"
 #include "catena/formfind.h"
-#include "solve/problem.h"
 
 #include <ctype.h>
 #include <stdio.h>
@@ -367,6 +367,14 @@ static int d_hload(ctn_line *l)
                  : ctn_model_add_hload_projected(l->m, q, first, last, (ctn_projection)proj);
 }
 
+/* The options' check (the solver's own, catena/solve.h) as an error at this line. */
+static int options_error(const ctn_line *l)
+{
+    char msg[256];
+    snprintf(msg, sizeof msg, "%s", ctn_ctx_message(l->m->ctx));
+    return ctn_parse_error(l, "%s", msg);
+}
+
 static int d_solve(ctn_line *l)
 {
     static const char *const orderings[] = { "auto", "natural", "amd", "metis" };
@@ -397,8 +405,7 @@ static int d_solve(ctn_line *l)
     opt.linesearch = ls;
     opt.reuse = reuse;
     if (lin >= 0) opt.linear_solver = solvers[lin];
-    char msg[256];
-    if (ctn_solve_options_fault(&opt, msg, sizeof msg)) return ctn_parse_error(l, "%s", msg);
+    if (ctn_solve_options_check(l->m->ctx, &opt)) return options_error(l);
     *l->opt = opt;
     return CTN_OK;
 }
@@ -421,8 +428,7 @@ static int d_modes(ctn_line *l)
     o.mass = (ctn_mass_matrix)mass;
     o.solver = (ctn_eigen_solver)solver;
     o.line = l->line;
-    char msg[256];
-    if (ctn_modal_options_fault(&o, msg, sizeof msg)) return ctn_parse_error(l, "%s", msg);
+    if (ctn_modal_options_check(l->m->ctx, &o)) return options_error(l);
     if (l->opt->modal.count > 0) return ctn_parse_error(l, "modes: given twice (first on line %d)", l->opt->modal.line);
     l->opt->modal = o;
     return CTN_OK;

@@ -95,33 +95,45 @@ static void put3(ctn_jw *j, const char *const *k, const double *v)
 /* "nodes" (coordinates, displacements and, in a model with rotations, the rotations rx,
  * ry, rz) and "reactions" (of the supported nodes; with rotations, the moments mx, my,
  * mz too) of step k. */
-static void put_nodes(json_writer *jw, const ctn_solution *s, size_t k, const ctn_step_result *st)
+static void put_nodes(json_writer *jw, const ctn_solution *s, size_t k)
 {
     static const char *const uk[3] = { "ux", "uy", "uz" }, *const fk[3] = { "fx", "fy", "fz" };
     static const char *const rk[3] = { "rx", "ry", "rz" }, *const mk[3] = { "mx", "my", "mz" };
     ctn_jw *j = &jw->j;
     size_t nn = ctn_model_node_count(jw->w.m);
-    const double *rot = NULL, *mom = NULL;
-    ctn_solution_step_rotations(s, k, &rot, &mom);
+    const ctn_pieces *src = jw->w.pieces;
+    ctn_node_piece pc;
     ctn_node_info p;
     ctn_jw_array(j, "nodes");
-    for (size_t i = 0; i < nn && !ctn_model_node(jw->w.m, i, &p); i++) {
-        ctn_jw_object(j, NULL);
-        ctn_jw_number(j, "id", p.id);
-        put3(j, xyz, p.X);
-        put3(j, uk, st->d + 3 * i);
-        if (rot) put3(j, rk, rot + 3 * i);
-        ctn_jw_end(j);
+    for (size_t lo = 0; lo < nn; lo = pc.hi) {
+        if (src->nodes(src->ud, s, k, lo, nn, &pc)) {
+            ctn_writer_mismatch(&jw->w);
+            return;
+        }
+        for (size_t i = pc.lo; i < pc.hi && !ctn_model_node(jw->w.m, i, &p); i++) {
+            ctn_jw_object(j, NULL);
+            ctn_jw_number(j, "id", p.id);
+            put3(j, xyz, p.X);
+            put3(j, uk, ctn_piece_d(&pc, i));
+            if (pc.rot) put3(j, rk, ctn_piece_rot(&pc, i));
+            ctn_jw_end(j);
+        }
     }
     ctn_jw_end(j);
     ctn_jw_array(j, "reactions");
-    for (size_t i = 0; i < nn && !ctn_model_node(jw->w.m, i, &p); i++) {
-        if (!p.fix) continue;
-        ctn_jw_object(j, NULL);
-        ctn_jw_number(j, "node", p.id);
-        put3(j, fk, st->react + 3 * i);
-        if (mom) put3(j, mk, mom + 3 * i);
-        ctn_jw_end(j);
+    for (size_t lo = 0; lo < nn; lo = pc.hi) {
+        if (src->nodes(src->ud, s, k, lo, nn, &pc)) {
+            ctn_writer_mismatch(&jw->w);
+            return;
+        }
+        for (size_t i = pc.lo; i < pc.hi && !ctn_model_node(jw->w.m, i, &p); i++) {
+            if (!p.fix) continue;
+            ctn_jw_object(j, NULL);
+            ctn_jw_number(j, "node", p.id);
+            put3(j, fk, ctn_piece_react(&pc, i));
+            if (pc.mom) put3(j, mk, ctn_piece_mom(&pc, i));
+            ctn_jw_end(j);
+        }
     }
     ctn_jw_end(j);
 }
@@ -278,7 +290,7 @@ static void put_step_body(json_writer *jw, const ctn_solution *s, size_t k, cons
     ctn_jw_string(j, "reason", ctn_reason_name(st->reason));
     ctn_jw_number(j, "load_factor", st->load_factor);
     ctn_jw_number(j, "iterations", st->iterations);
-    put_nodes(jw, s, k, st);
+    put_nodes(jw, s, k);
     put_elements(jw, s, k);
     if (ctn_model_group_count(jw->w.m)) put_groups(jw, s, k);
 }
@@ -418,7 +430,7 @@ static int json_step(void *p, const ctn_solution *s, size_t k)
     if (k == 0) {
         if (ctn_solution_step(s, jw->nsteps - 1, &st)) return ctn_writer_mismatch(&jw->w);
         put_summary(jw, s);
-        put_nodes(jw, s, jw->nsteps - 1, &st);
+        put_nodes(jw, s, jw->nsteps - 1);
         put_elements(jw, s, jw->nsteps - 1);
         put_cables(jw, s);
         if (ctn_model_group_count(jw->w.m)) put_groups(jw, s, jw->nsteps - 1);

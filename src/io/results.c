@@ -9,7 +9,6 @@
 #include "catena/io.h"
 #include "core/ctx.h"
 #include "core/threads.h"
-#include "solve/solution.h"
 
 #include <errno.h>
 #include <stdio.h>
@@ -110,7 +109,7 @@ static int stage_all(ctn_ctx *ctx, const char *dir, const job *jobs, size_t n, c
 {
     part main = { ctx, dir, jobs, 0, n, m, s, f, CTN_OK };
     size_t size = ctn_model_node_count(m) + ctn_model_element_count(m);
-    if (n < 2 || ctx->alloc_fail_at || !ctn_thr_allows(ctx, s->threads, CTN_THR_WRITE, (double)size)) {
+    if (n < 2 || ctx->alloc_fail_at || !ctn_thr_allows(ctx, ctn_solution_threads(s), CTN_THR_WRITE, (double)size)) {
         stage_part(&main);
         return main.rc;
     }
@@ -121,7 +120,7 @@ static int stage_all(ctn_ctx *ctx, const char *dir, const job *jobs, size_t n, c
     other.threads = 1;
     other.pool = NULL;
     part rest = { &other, dir, jobs, 1, n, m, s, f, CTN_OK };
-    int ticket = ctn_thr_start(ctx, s->threads, CTN_THR_WRITE, (double)size, stage_part, &rest);
+    int ticket = ctn_thr_start(ctx, ctn_solution_threads(s), CTN_THR_WRITE, (double)size, stage_part, &rest);
     main.hi = ticket ? 1 : n;
     stage_part(&main);
     if (!ticket) return main.rc;

@@ -27,6 +27,12 @@ int ctn_writer_run(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, ctn_sink
 int ctn_writer_run_step(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, size_t k, ctn_sink *sink,
                         const ctn_model *m, const ctn_solution *s)
 {
+    return ctn_writer_run_pieces(ctx, ops, pretty, k, &ctn_pieces_local, sink, m, s);
+}
+
+int ctn_writer_run_pieces(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, size_t k, const ctn_pieces *pieces,
+                          ctn_sink *sink, const ctn_model *m, const ctn_solution *s)
+{
     size_t n = ctn_solution_step_count(s);
     if (!n) return ctn_error(ctx, CTN_ERR_INVALID, "%s: the solution has no step", ops->name);
     if (k >= n) return ctn_error(ctx, CTN_ERR_INVALID, "%s: no step %zu", ops->name, k + 1);
@@ -35,6 +41,7 @@ int ctn_writer_run_step(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, siz
     w->ctx = ctx;
     w->pretty = pretty;
     w->step = k;
+    w->pieces = pieces;
     int rc = ops->begin(w, m, sink);
     for (size_t i = 0; i < n && !rc; i++) rc = ops->step(w, s, i);
     if (!rc) rc = ops->end(w);

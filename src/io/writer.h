@@ -13,6 +13,7 @@
 
 #include "catena/model.h"
 #include "catena/solve.h"
+#include "io/piece.h"
 #include "io/sink.h"
 
 /* The head of every writer's state. */
@@ -24,6 +25,8 @@ typedef struct ctn_writer {
     ctn_wbuf out;          /* opened by ctn_writer_open, closed by the driver */
     size_t step;           /* set by the driver: the step a one-step writer (result.vtu)
                               writes; ctn_writer_run: the last */
+    const ctn_pieces *pieces; /* set by the driver: where the nodes' results come from, a
+                              piece at a time (piece.h; one process: ctn_pieces_local) */
 } ctn_writer;
 
 typedef struct ctn_writer_ops {
@@ -47,6 +50,10 @@ extern const ctn_writer_ops ctn_writer_pvd;           /* result.pvd: the steps' 
 #define CTN_VTU_NAME_MAX 48
 void ctn_vtu_step_name(char *name, size_t k, size_t n);
 
+/* The same with the nodes' results taken from pieces (piece.h) in place of the
+ * solution's own (a distributed run's gathering source; tests). */
+int ctn_writer_run_pieces(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, size_t k, const ctn_pieces *pieces,
+                          ctn_sink *sink, const ctn_model *m, const ctn_solution *s);
 /* For begin: remember the model, open the buffered output over sink. */
 int ctn_writer_open(ctn_writer *w, const ctn_model *m, ctn_sink *sink);
 /* Record and return CTN_ERR_INVALID: an accessor refused an index (a solution of

@@ -8,11 +8,16 @@
 #include <math.h>
 #include <string.h>
 
-static double dot(const double *a, const double *b, size_t n)
+static double local_dot(const double *a, const double *b, size_t n)
 {
     double s = 0;
     for (size_t i = 0; i < n; i++) s += a[i] * b[i];
     return s;
+}
+
+static double gdot(const ctn_gmres *g, const double *a, const double *b)
+{
+    return g->dot ? g->dot(g->data, a, b) : local_dot(a, b, g->n);
 }
 
 /* x += M^-1 (V y), V's first k columns; z: scratch. */
@@ -48,7 +53,7 @@ static int cycle(ctn_gmres *g, const double *b, double *x, double target, double
     double *cs = g->H + (size_t)ld * m, *sn = cs + m, *s = sn + m, *y = s + m + 1;
     if ((rc = g->apply(g->data, x, w))) return rc;               /* r0 = b - A x */
     for (size_t i = 0; i < n; i++) w[i] = b[i] - w[i];
-    double beta = sqrt(dot(w, w, n));
+    double beta = sqrt(gdot(g, w, w));
     *rnorm = beta;
     if (beta <= target || !(beta > 0)) return CTN_OK;
     for (size_t i = 0; i < n; i++) g->V[i] = w[i] / beta;
@@ -58,11 +63,11 @@ static int cycle(ctn_gmres *g, const double *b, double *x, double target, double
         double *v = g->V + (size_t)k * n, *vn = v + n;
         if ((rc = g->precond(g->data, v, z)) || (rc = g->apply(g->data, z, w))) return rc;
         for (int i = 0; i <= k; i++) {                          /* modified Gram-Schmidt */
-            double h = dot(w, g->V + (size_t)i * n, n);
+            double h = gdot(g, w, g->V + (size_t)i * n);
             g->H[k * ld + i] = h;
             for (size_t r = 0; r < n; r++) w[r] -= h * g->V[(size_t)i * n + r];
         }
-        double hn = sqrt(dot(w, w, n));
+        double hn = sqrt(gdot(g, w, w));
         g->H[k * ld + k + 1] = hn;
         for (int i = 0; i < k; i++) {                           /* old rotations */
             double a = g->H[k * ld + i], c = g->H[k * ld + i + 1];
@@ -89,8 +94,7 @@ static int cycle(ctn_gmres *g, const double *b, double *x, double target, double
 int ctn_gmres_solve(ctn_gmres *g, const double *b, double *x, double rtol, int maxcycles,
                     double *rel, int *iters)
 {
-    size_t n = g->n;
-    double bn = sqrt(dot(b, b, n)), rnorm = 0;
+    double bn = sqrt(gdot(g, b, b)), rnorm = 0;
     int rc = g->precond(g->data, b, x);                        /* x0 = M^-1 b */
     *iters = 0;
     for (int c = 0; !rc && c < maxcycles; c++) {
@@ -111,6 +115,7 @@ void ctn_gmres_init(ctn_gmres *g, size_t n, int m, double *work)
 {
     g->n = n;
     g->m = m;
+    g->dot = NULL;
     g->V = work;                                   /* (m + 1) n, then w, z, t */
     g->H = work + ((size_t)m + 4) * n;             /* (m + 1) m, then cs, sn, s, y */
 }

@@ -12,6 +12,8 @@ typedef struct ctn_gmres {
     int (*apply)(void *data, const double *x, double *y);     /* y = A x */
     int (*precond)(void *data, const double *x, double *y);   /* y = M^-1 x (y may be x) */
     void *data;
+    /* a . b over the vectors' layout; NULL: the plain local sum (pcg.h) */
+    double (*dot)(void *data, const double *a, const double *b);
     double *V, *H;             /* workspace (ctn_gmres_init) */
 } ctn_gmres;
 

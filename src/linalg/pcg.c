@@ -15,11 +15,16 @@ void ctn_pcg_init(ctn_pcg *g, size_t n, double *work)
     g->q = work + 3 * n;
 }
 
-static double dot(const double *a, const double *b, size_t n)
+static double local_dot(const double *a, const double *b, size_t n)
 {
     double s = 0;
     for (size_t i = 0; i < n; i++) s += a[i] * b[i];
     return s;
+}
+
+static double gdot(const ctn_pcg *g, const double *a, const double *b)
+{
+    return g->dot ? g->dot(g->data, a, b) : local_dot(a, b, g->n);
 }
 
 int ctn_pcg_solve(ctn_pcg *g, const double *b, double *x, double target, int maxit, double *res,
@@ -30,19 +35,19 @@ int ctn_pcg_solve(ctn_pcg *g, const double *b, double *x, double target, int max
     if (!rc) rc = g->apply(g->data, x, g->q);
     if (rc) return rc;
     for (size_t i = 0; i < n; i++) g->r[i] = b[i] - g->q[i];
-    *res = sqrt(dot(g->r, g->r, n));
+    *res = sqrt(gdot(g, g->r, g->r));
     *iters = 0;
     *posdef = 1;
     double rz = 0;
     while (*res > target && *iters < maxit) {
         if ((rc = g->precond(g->data, g->r, g->z))) return rc;   /* z = M^-1 r */
-        double rz1 = dot(g->r, g->z, n);
+        double rz1 = gdot(g, g->r, g->z);
         if (*iters == 0) memcpy(g->p, g->z, n * sizeof *g->p);   /* p holds no direction yet */
         else
             for (size_t i = 0; i < n; i++) g->p[i] = g->z[i] + rz1 / rz * g->p[i];
         rz = rz1;
         if ((rc = g->apply(g->data, g->p, g->q))) return rc;    /* q = A p */
-        double pq = dot(g->p, g->q, n);
+        double pq = gdot(g, g->p, g->q);
         if (!(pq > 0)) {
             *posdef = 0;
             return CTN_OK;
@@ -52,7 +57,7 @@ int ctn_pcg_solve(ctn_pcg *g, const double *b, double *x, double target, int max
             x[i] += alpha * g->p[i];
             g->r[i] -= alpha * g->q[i];
         }
-        *res = sqrt(dot(g->r, g->r, n));
+        *res = sqrt(gdot(g, g->r, g->r));
         ++*iters;
     }
     return CTN_OK;

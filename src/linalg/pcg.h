@@ -13,6 +13,9 @@ typedef struct ctn_pcg {
     int (*apply)(void *data, const double *x, double *y);     /* y = A x */
     int (*precond)(void *data, const double *x, double *y);   /* y = M^-1 x */
     void *data;
+    /* a . b over the vectors' layout (a distributed engine's reduction); NULL: the plain
+       local sum, which is what it is in one process */
+    double (*dot)(void *data, const double *a, const double *b);
     double *r, *z, *p, *q;     /* workspace: 4 n doubles (ctn_pcg_init) */
 } ctn_pcg;
 

@@ -1,0 +1,285 @@
+/* Newton corrector at a fixed load parameter.
+ *   pure (CTN_METHOD_NEWTON):  K dd = r, d <- d + dd (the paper's), optionally with a
+ *                              backtracking line search on |r|;
+ *   globalized (CTN_METHOD_AUTO): (K + mu I) dd = r with mu = 0 while K is positive
+ *                              definite and full steps lower the total potential;
+ *                              otherwise mu grows (Levenberg-Marquardt) and a
+ *                              backtracking (Armijo) line search on the potential picks
+ *                              the step. The residual is never modified, so the converged
+ *                              equilibrium does not depend on mu or the path. */
+#include "problem/problem.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#define LS_HALVINGS 30
+#define ARMIJO 1e-4
+#define CTN_NONMONOTONE 16   /* memory of the non-monotone acceptance test */
+#define CTN_FLOOR (1e3 * DBL_EPSILON)  /* |dd| / (|d| + L_ref) below which the
+                                         correction is at the coordinates' resolution */
+#define CTN_FLOOR_MAX 1e-4             /* largest round-off floor accepted, relative to
+                                         the force that meets at the nodes */
+#define CTN_STALLS 3                   /* iterations at resolution above the floor */
+#define CTN_QUADRATIC 0.1              /* |r| fell at least this much in a full Newton
+                                         step: the next may reuse the factorization */
+
+typedef struct corrector {
+    ctn_problem *e;
+    ctn_solution *s;
+    double *d;
+    double rn;          /* |r| at d */
+    double pi;          /* potential at d (globalized only) */
+    double mu, nu;      /* Levenberg-Marquardt shift and its growth factor */
+    double past[CTN_NONMONOTONE]; /* potentials of the last accepted iterates */
+    int npast;
+    int globalized;
+    int accepted;       /* the last iteration moved d */
+    double dmax;        /* an upper bound of |d| (triangle inequality), for the increment
+                           test: |d| itself is computed only when the test can pass */
+    double fref;        /* force scale of the residual test */
+    int quadratic;      /* the last step was a full Newton step that cut |r| by
+                           CTN_QUADRATIC: the next one reuses the factorization */
+    double cut;         /* |r| after / before that step */
+} corrector;
+
+/* Raise the shift after a failure (Nielsen: mu *= nu, nu *= 2). */
+static void raise_mu(corrector *c)
+{
+    if (c->mu == 0) {
+        c->mu = 1e-6 * ctn_problem_max_diag(c->e);
+        c->nu = 2;
+    } else {
+        c->mu *= c->nu;
+        c->nu *= 2;
+    }
+}
+
+/* Factorize K + mu I; the globalized corrector raises mu until it is definite. */
+static int factor(corrector *c, int *ok)
+{
+    for (;;) {
+        long col;
+        int rc = ctn_problem_factor(c->e, c->mu, ok, &col);
+        if (rc || *ok) return rc;
+        if (!c->globalized || c->mu > 1e12 * c->e->kscale) {
+            c->s->sum.fail_node = c->e->m->nodes.v[c->e->a->map.dof_node[col]].id;
+            c->s->sum.fail_dir = c->e->a->map.dof_dir[col];
+            return CTN_OK;
+        }
+        raise_mu(c);
+    }
+}
+
+/* d = dsave + alpha dd, its residual (with K) and, if pi != NULL, its potential;
+ * *ok = 0 if an element collapsed. d equals dsave on entry when fresh is set. */
+static int trial(corrector *c, double alpha, int fresh, double *rn, double *pi, int *ok)
+{
+    ctn_problem *e = c->e;
+    if (!fresh) memcpy(c->d, e->dsave, e->ns * sizeof(double));
+    ctn_problem_update(e, c->d, alpha, e->dd);
+    int rc = ctn_problem_residual(e, c->d, 1, rn, pi, ok);
+    if (pi && e->fl) *pi = 0.5 * *rn * *rn;          /* no potential: the residual's merit */
+    return rc;
+}
+
+/* Pure Newton, optionally with backtracking on |r|: the accepted alpha, or 0. */
+static int newton_search(corrector *c, double *alpha, double *rn)
+{
+    int ok, rc, halvings = c->e->opt.linesearch ? LS_HALVINGS : 0;
+    *alpha = 1;
+    for (int h = 0; h <= halvings; h++, *alpha *= 0.5) {
+        if ((rc = trial(c, *alpha, h == 0, rn, NULL, &ok))) return rc;
+        if (ok && (!c->e->opt.linesearch || *rn <= (1 - ARMIJO * *alpha) * c->rn)) return CTN_OK;
+    }
+    *alpha = 0;
+    return CTN_OK;
+}
+
+/* Remember an accepted potential (ring buffer) and return the reference: the largest
+ * of the last CTN_NONMONOTONE (Grippo-Lampariello-Lucidi), so that Newton's natural
+ * non-monotone first steps are not rejected. */
+static void remember(corrector *c, double pi)
+{
+    c->past[c->npast++ % CTN_NONMONOTONE] = pi;
+}
+
+static double reference(const corrector *c)
+{
+    double r = c->pi;
+    int n = c->npast < CTN_NONMONOTONE ? c->npast : CTN_NONMONOTONE;
+    for (int i = 0; i < n; i++) r = fmax(r, c->past[i]);
+    return r;
+}
+
+/* Levenberg-Marquardt step with the gain ratio rho = actual / predicted decrease of the
+ * potential, predicted = (dd.r + mu |dd|^2) / 2. Accept if the potential falls below the
+ * non-monotone reference (or, at round-off, if |r| falls while the potential does not
+ * rise); mu follows Nielsen's rule on the monotone ratio. */
+static int lm_step(corrector *c, double *alpha, double *rn, double *pi)
+{
+    ctn_problem *e = c->e;
+    double dd2 = ctn_layout_dot(&e->eq, e->dd, e->dd);
+    double pred = e->fl ? 0.5 * (c->rn * c->rn - c->mu * c->mu * dd2)       /* |r|^2 / 2 */
+                        : 0.5 * (ctn_layout_dot(&e->eq, e->r, e->dd) + c->mu * dd2);
+    int ok, rc = trial(c, 1.0, 1, rn, pi, &ok);
+    *alpha = 0;
+    if (rc || !ok) return rc;
+    double noise = 1e-12 * fabs(c->pi), rho = pred > 0 ? (c->pi - *pi) / pred : -1;
+    if (*pi < reference(c) || (*rn <= c->rn && *pi <= c->pi + noise)) {
+        if (rho > 0) {
+            double f = 1 - pow(2 * fmin(rho, 1) - 1, 3);
+            c->mu *= f > 1.0 / 3 ? f : 1.0 / 3;
+            if (c->mu < 1e-14 * e->kscale) c->mu = 0; /* plain Newton from here */
+            c->nu = 2;
+        }
+        remember(c, *pi);
+        *alpha = 1;
+    }
+    return CTN_OK;
+}
+
+/* The Newton step dd = K^-1 r: with the last factorization while Newton converges
+ * quadratically (reuse.c: to the forcing term below, or at least a tenth of |r|),
+ * else by a new one. */
+static int newton_step(corrector *c, ctn_reason *why)
+{
+    ctn_problem *e = c->e;
+    int ok = 0, rc = CTN_OK;
+    if (c->quadratic && c->mu == 0) {
+        /* Solved to the accuracy the next iterate can use: with |r| cut by q in the
+         * last step, Newton's next residual is about q^2 |r|, so the step's own error
+         * is kept below that (Eisenstat and Walker's forcing term q^2), not below
+         * 1e-8 |r|: quadratic convergence is kept with fewer solves. */
+        double eta = fmin(1e-2, fmax(1e-8, c->cut * c->cut));
+        double target = fmax(0.1 * e->opt.tol * c->fref, eta * c->rn);
+        if ((rc = ctn_problem_reuse_step(e, target, 0.1 * c->rn, &ok)) || ok) return rc;
+    }
+    if ((rc = factor(c, &ok))) return rc;
+    if (!ok) { *why = CTN_DIVERGED_INDEFINITE; return CTN_OK; }
+    return ctn_problem_linsolve(e, e->r, e->dd);
+}
+
+/* One Newton iteration: factor, solve, accept or reject. *why: 0 or a stop reason. */
+static int iteration(corrector *c, ctn_reason *why)
+{
+    ctn_problem *e = c->e;
+    double alpha, rn = 0, pi = 0, r0 = c->rn;
+    *why = 0;
+    c->accepted = 0;
+    int rc = newton_step(c, why);
+    c->quadratic = 0;
+    if (rc || *why) return rc;
+    if (!isfinite(ctn_layout_norm(&e->eq, e->dd))) { *why = CTN_DIVERGED_NANORINF; return CTN_OK; }
+    int keep = c->globalized || e->opt.linesearch;   /* a step may be rejected */
+    if (keep) memcpy(e->dsave, c->d, e->ns * sizeof(double));
+    rc = c->globalized ? lm_step(c, &alpha, &rn, &pi) : newton_search(c, &alpha, &rn);
+    if (rc) return rc;
+    double shift = c->mu;
+    if (alpha == 0) {                            /* back to the start of the iteration */
+        double tried = ctn_layout_norm(&e->eq, e->dd);
+        if (keep) memcpy(c->d, e->dsave, e->ns * sizeof(double));
+        else ctn_problem_update(e, c->d, -1.0, e->dd); /* pure Newton: undo the step */
+        int valid;
+        if ((rc = ctn_problem_residual(e, c->d, 1, &c->rn, NULL, &valid)) || !valid) return rc;
+        if (!c->globalized) { *why = e->opt.linesearch ? CTN_DIVERGED_LINESEARCH : CTN_DIVERGED_NANORINF; return CTN_OK; }
+        raise_mu(c);
+        return ctn_problem_record_ex(e, c->s, c->rn, tried, 1, shift);
+    }
+    c->rn = rn;
+    c->pi = pi;
+    c->accepted = 1;
+    c->quadratic = c->globalized && shift == 0 && alpha == 1 && rn <= CTN_QUADRATIC * r0;
+    c->cut = r0 > 0 ? rn / r0 : 0;
+    return ctn_problem_record_ex(e, c->s, rn, alpha * ctn_layout_norm(&e->eq, e->dd), 0, shift);
+}
+
+/* The Newton correction is at the resolution of the coordinates with |r| above tol |f_ext|:
+ * converged if |r| is within the computed round-off floor and that floor resolves the
+ * forces that meet at the nodes (at most CTN_FLOOR_MAX of them); else, after CTN_STALLS
+ * such iterations, the residual will not fall: CTN_DIVERGED_ROUNDOFF. 1 when decided. */
+static int at_floor(ctn_problem *e, ctn_solution *s, const double *d, double rn, int *stalls,
+                    ctn_reason *reason)
+{
+    double scale, F = ctn_problem_residual_floor(e, d, &scale);
+    s->sum.residual_floor = F;
+    s->sum.force_scale = scale;
+    if (rn <= F && F <= CTN_FLOOR_MAX * scale) {
+        *reason = CTN_CONVERGED;
+        s->sum.floor = 1;
+        s->sum.floor_step = s->nsteps ? s->nsteps - 1 : 0;
+        return 1;
+    }
+    if (F > CTN_FLOOR_MAX * scale || ++*stalls >= CTN_STALLS) {
+        *reason = CTN_DIVERGED_ROUNDOFF;
+        return 1;
+    }
+    return 0;
+}
+
+static int correct(ctn_problem *e, ctn_solution *s, double *d, ctn_reason *reason)
+{
+    corrector c;
+    memset(&c, 0, sizeof c);
+    c.e = e;
+    c.s = s;
+    c.d = d;
+    c.nu = 2;
+    c.globalized = e->strategy->globalized;
+    *reason = CTN_DIVERGED_NANORINF;
+    int valid, rc = ctn_problem_residual(e, d, 1, &c.rn, c.globalized ? &c.pi : NULL, &valid);
+    if (c.globalized && e->fl) c.pi = 0.5 * c.rn * c.rn;
+    if (!rc && valid && c.globalized) remember(&c, c.pi);
+    if (rc || !valid) return rc;
+    if ((rc = ctn_solution_push_residual(s, c.rn))) return rc;
+    s->sum.residual = c.rn;
+    if (e->ndof == 0) {                              /* determinate: nothing moves */
+        *reason = CTN_CONVERGED;
+        return CTN_OK;
+    }
+    double fref = ctn_problem_fref(e);                /* once per increment */
+    c.fref = fref;
+    int stalls = 0;
+    c.dmax = ctn_layout_norm(&e->st, d);
+    for (int it = 1; it <= e->opt.maxit; it++) {
+        ctn_reason why;
+        if ((rc = iteration(&c, &why))) return rc;
+        if (why) { *reason = why; return CTN_OK; }
+        double dnorm = s->dhist[s->nd - 1];
+        if (!c.accepted) continue;
+        c.dmax += dnorm;                                 /* |d + a dd| <= |d| + |a dd| */
+        if (dnorm > e->opt.dtol * (c.dmax + e->lref)) continue;
+        double size = ctn_layout_norm(&e->st, d) + e->lref;     /* only when it can matter */
+        c.dmax = size - e->lref;
+        if (dnorm > e->opt.dtol * size) continue;
+        if (c.rn <= e->opt.tol * fref) {
+            *reason = CTN_CONVERGED;
+            return CTN_OK;
+        }
+        if (dnorm > CTN_FLOOR * size) continue;          /* dd above coordinate resolution */
+        if (at_floor(e, s, d, c.rn, &stalls, reason)) return CTN_OK;
+    }
+    *reason = CTN_DIVERGED_MAXIT;
+    return CTN_OK;
+}
+
+/* Globalized: a start with compressed two-way members of cables (members of a chain: a
+ * free node joins exactly two members; a straight or unstressed start of a cable longer
+ * than its chord) is first relaxed with compression cut off, so no
+ * compression energy barrier holds it on the chord; then the real materials take over
+ * from that state. The final iterations use the true residual, so the equilibrium is
+ * not biased by the first phase. */
+int ctn_newton_correct(ctn_problem *e, ctn_solution *s, double *d, ctn_reason *reason)
+{
+    if (!e->strategy->globalized || !ctn_asm_count_compressed(e->a, d, e->in_chain)) {
+        int rc = correct(e, s, d, reason);
+        ctn_problem_settle(e);                      /* the converged state's is not wanted */
+        return rc;
+    }
+    e->mode = CTN_EVAL_CUT_COMPRESSION;
+    int rc = correct(e, s, d, reason);
+    e->mode = 0;
+    if (rc) return rc;
+    s->sum.relaxed++;
+    return correct(e, s, d, reason);
+}

@@ -1,0 +1,238 @@
+/* Pre-shaping of slack chains (CTN_METHOD_AUTO, once before the first step).
+ * A chain is a run of free nodes with exactly two elements each, between two anchor
+ * nodes (supported, or joining more than two elements). A chain whose start polyline is
+ * shorter than its unstressed length (a cable given straight, or as its unstressed
+ * arc) has compressed or unstressed members, and Newton from there either meets an
+ * indefinite tangent or wanders. Such a chain is placed as the paper places a cable:
+ * on the circular arc through its anchors, sagging along gravity, that is longer than the
+ * chain so that every member is stretched by CTN_PRESHAPE_STRAIN (the start `cable`
+ * gives a generated cable). This changes only the start, not the equations. */
+#include "model/arc.h"
+#include "model/cable_start.h"
+#include "problem/problem.h"
+
+#include <math.h>
+#include <string.h>
+
+#define CTN_PRESHAPE_STRAIN 1e-3
+
+typedef struct chains {
+    int *deg, *inc;      /* per node: element count, first two incident elements */
+    int *nodes, *elems;  /* one chain: anchor, interior..., anchor; its elements */
+    unsigned char *seen; /* per element */
+} chains;
+
+static int interior(const ctn_problem *e, const chains *c, int node)
+{
+    return c->deg[node] == 2 && e->m->nodes.v[node].fix == 0;
+}
+
+static void current(const ctn_problem *e, const double *d, int node, double x[3])
+{
+    const double *dn = d + ctn_dofmap_node(&e->a->map, (size_t)node);
+    for (int k = 0; k < 3; k++) x[k] = e->m->nodes.v[node].X[k] + dn[k];
+}
+
+static double rest_length(const ctn_problem *e, int el)
+{
+    return ctn_asm_block_of(e->a, (size_t)el)->ops->rest_length(ctn_asm_props(e->a, (size_t)el));
+}
+
+/* The node of two-node element el that is not node. */
+static int other_end(const ctn_model *m, int el, int node)
+{
+    const int *nd = ctn_elem_nodes(m, (size_t)el);
+    return nd[0] == node ? nd[1] : nd[0];
+}
+
+/* Collect the chain through element e0 into c->nodes / c->elems; node count. */
+static size_t walk(const ctn_problem *e, chains *c, int e0)
+{
+    const ctn_model *m = e->m;
+    int head = ctn_elem_nodes(m, (size_t)e0)[0], eh = e0;
+    while (interior(e, c, head)) {                    /* back up to the first anchor */
+        int nxt = c->inc[2 * head] == eh ? c->inc[2 * head + 1] : c->inc[2 * head];
+        if (nxt == e0) return 0;                      /* a closed loop: no anchors */
+        eh = nxt;
+        head = other_end(m, eh, head);
+    }
+    size_t n = 0;
+    int cur = head, ce = eh;
+    c->nodes[n] = cur;
+    for (;;) {
+        c->seen[ce] = 1;
+        c->elems[n] = ce;
+        cur = other_end(m, ce, cur);
+        c->nodes[++n] = cur;
+        if (!interior(e, c, cur)) break;
+        ce = c->inc[2 * cur] == ce ? c->inc[2 * cur + 1] : c->inc[2 * cur];
+    }
+    return n + 1;
+}
+
+/* A free tip: a node of one flexible member and no support. */
+static int tip(const ctn_problem *e, const chains *c, int node)
+{
+    return c->deg[node] == 1 && e->m->nodes.v[node].fix == 0;
+}
+
+/* A dangling chain (an anchor, then free nodes to a free tip) hangs, whatever its start,
+ * along the resultant of its loads: a pendulum. Place it there, each member stretched by
+ * CTN_PRESHAPE_STRAIN, so Newton starts next to the hanging state instead of swinging
+ * the whole chain through a large rigid rotation. 1 if placed. */
+static int place_dangling(const ctn_problem *e, const chains *c, size_t n, const double *loads, double *d)
+{
+    int flip = tip(e, c, c->nodes[0]);
+    if (n < 2 || !(flip || tip(e, c, c->nodes[n - 1]))) return 0;
+    double R[3] = { 0, 0, 0 }, a[3], rn = 0;
+    for (size_t i = 1; i < n; i++) {
+        int node = c->nodes[flip ? n - 1 - i : i];
+        for (int k = 0; k < 3; k++) R[k] += loads[3 * (size_t)node + (size_t)k];
+    }
+    rn = sqrt(R[0] * R[0] + R[1] * R[1] + R[2] * R[2]);
+    if (!(rn > 0)) return 0;
+    current(e, d, c->nodes[flip ? n - 1 : 0], a);
+    double s = 0;
+    for (size_t i = 1; i < n; i++) {
+        size_t j = flip ? n - 1 - i : i;
+        int node = c->nodes[j];
+        s += rest_length(e, c->elems[flip ? j : j - 1]) * (1 + CTN_PRESHAPE_STRAIN);
+        double *dn = d + ctn_dofmap_node(&e->a->map, (size_t)node);
+        for (int k = 0; k < 3; k++) dn[k] = a[k] + s * R[k] / rn - e->m->nodes.v[node].X[k];
+    }
+    return 1;
+}
+
+/* Place one chain of n nodes on its arc if it is slack; 1 if placed. */
+static int place_chain(const ctn_problem *e, const chains *c, size_t n, double *d)
+{
+    double S = 0, poly = 0, lmax = 0, a[3], b[3], x0[3], x1[3];
+    for (size_t i = 0; i + 1 < n; i++) {
+        double l0 = rest_length(e, c->elems[i]);
+        S += l0;
+        lmax = fmax(lmax, l0);
+        current(e, d, c->nodes[i], x0);
+        current(e, d, c->nodes[i + 1], x1);
+        poly += sqrt((x1[0] - x0[0]) * (x1[0] - x0[0]) + (x1[1] - x0[1]) * (x1[1] - x0[1]) +
+                     (x1[2] - x0[2]) * (x1[2] - x0[2]));
+    }
+    current(e, d, c->nodes[0], a);
+    current(e, d, c->nodes[n - 1], b);
+    ctn_arc arc, start;
+    if (n < 3 || poly > S || ctn_arc_make(a, b, e->m->gravity, S, &arc) || arc.alpha == 0 ||
+        ctn_arc_stretched(&arc, a, b, e->m->gravity, S, lmax / S, CTN_PRESHAPE_STRAIN, &start))
+        return 0;
+    double s = 0;
+    for (size_t i = 1; i + 1 < n; i++) {
+        double X[3];
+        s += rest_length(e, c->elems[i - 1]);
+        ctn_arc_point(&start, s / S, X);
+        double *dn = d + ctn_dofmap_node(&e->a->map, (size_t)c->nodes[i]);
+        for (int k = 0; k < 3; k++) dn[k] = X[k] - e->m->nodes.v[c->nodes[i]].X[k];
+    }
+    return 1;
+}
+
+static int incidence(const ctn_problem *e, chains *c)
+{
+    size_t nn = e->a->nn, ne = e->a->ne;
+    ctn_ctx *ctx = e->ctx;
+    c->deg = ctn_calloc(ctx, nn, sizeof(int));
+    c->inc = ctn_malloc(ctx, 2 * nn, sizeof(int));
+    c->nodes = ctn_malloc(ctx, nn + 1, sizeof(int));   /* a chain's two anchors may be one node */
+    c->elems = ctn_malloc(ctx, nn, sizeof(int));
+    c->seen = ctn_calloc(ctx, ne, 1);
+    if (!c->deg || !c->inc || !c->nodes || !c->elems || !c->seen) return CTN_ERR_NOMEM;
+    for (size_t i = 0; i < ne; i++) {
+        const ctn_asm_block *b = ctn_asm_block_of(e->a, i);
+        const int *nd = ctn_elem_nodes(e->m, i);
+        int chain = (b->ops->flags & CTN_ELEM_FLEXIBLE) && b->nnodes == 2;
+        if (!chain) c->seen[i] = 1;                /* other members make anchors */
+        for (int k = 0; k < b->nnodes; k++) {
+            int p = nd[k];
+            if (chain && c->deg[p] < 2) c->inc[2 * p + c->deg[p]] = (int)i;
+            c->deg[p] += chain ? 1 : 3;
+        }
+    }
+    return CTN_OK;
+}
+
+/* The cable carries its own weight only: no load on its interior nodes but the halves of
+ * its elements' weights (first step), and no hload on its elements in any step. */
+static int weight_only(const ctn_problem *e, const ctn_cable *cb, const double *loads)
+{
+    const ctn_model *m = e->m;
+    const ctn_element *el = &m->elements.v[cb->first];
+    double W = m->sections.v[el->section].w * el->l0, scale = 0;
+    for (int k = 0; k < 3; k++) scale += W * m->gravity[k] * W * m->gravity[k];
+    scale = sqrt(scale);
+    for (size_t h = 0; h < m->hloads.n; h++)
+        for (size_t k = 0; k < cb->count; k++) {
+            int id = m->elements.v[cb->first + k].id;
+            if (id >= m->hloads.v[h].first && id <= m->hloads.v[h].last) return 0;
+        }
+    for (size_t k = 1; k < cb->count; k++) {
+        int node = ctn_elem_nodes(m, cb->first + k)[0];
+        double wa = 0.5 * m->sections.v[m->elements.v[cb->first + k - 1].section].w * m->elements.v[cb->first + k - 1].l0;
+        double wb = 0.5 * m->sections.v[m->elements.v[cb->first + k].section].w * m->elements.v[cb->first + k].l0;
+        for (int j = 0; j < 3; j++)
+            if (fabs(loads[3 * (size_t)node + (size_t)j] - (wa + wb) * m->gravity[j]) > 1e-9 * scale) return 0;
+    }
+    for (size_t i = 0; i < m->ploads.n; i++)            /* loads in later steps too */
+        for (size_t k = 1; k < cb->count; k++)
+            if (m->ploads.v[i].node == ctn_elem_nodes(m, cb->first + k)[0]) return 0;
+    return 1;
+}
+
+/* A generated arc cable with start=auto and a weight: its interior nodes on the elastic
+ * catenary of its span (model/cable_start.c), which Newton leaves in a few iterations at
+ * any inclination; its elements are then no chain to pre-shape. 1 if placed. */
+static int weight_only(const ctn_problem *e, const ctn_cable *cb, const double *loads);
+
+static int place_catenary(const ctn_problem *e, const ctn_cable *cb, chains *c, const double *loads, double *d)
+{
+    const ctn_model *m = e->m;
+    if (cb->start != CTN_START_AUTO || cb->shape != CTN_SHAPE_ARC || cb->count < 2 || c->seen[cb->first]) return 0;
+    if (cb->target != CTN_TARGET_NONE && cb->resolved) return 0;   /* its start is the state found */
+    if (!weight_only(e, cb, loads)) return 0;          /* the catenary of its weight is not its shape */
+    const ctn_element *el = &m->elements.v[cb->first];
+    if (el->section < 0) return 0;
+    const ctn_section *sec = &m->sections.v[el->section];
+    ctn_catenary_place cat;
+    if (ctn_catenary_start(e->ctx, m->nodes.v[cb->node[0]].X, m->nodes.v[cb->node[1]].X, m->gravity, sec->w,
+                           m->materials.v[sec->material].E * sec->A, cb->length, (int)cb->count, 1e-4, &cat))
+        return 0;
+    for (size_t k = 1; k < cb->count; k++) {
+        int node = ctn_elem_nodes(m, cb->first + k)[0];
+        double X[3], *dn = d + ctn_dofmap_node(&e->a->map, (size_t)node);
+        ctn_catenary_start_point(&cat, (int)k, X);
+        for (int j = 0; j < 3; j++) dn[j] = X[j] - m->nodes.v[node].X[j];
+    }
+    for (size_t k = 0; k < cb->count; k++) c->seen[cb->first + k] = 1;
+    return 1;
+}
+
+int ctn_preshape(ctn_problem *e, double *d, int *count)
+{
+    chains c = { NULL, NULL, NULL, NULL, NULL };
+    int rc = incidence(e, &c);
+    double *loads = e->v3;                         /* the first step's dead loads */
+    *count = 0;
+    int junction = 0;
+    if (!rc) ctn_model_step_loads_ex(e->m, 0, 1, loads, NULL);
+    if (!rc) rc = ctn_junction_place(e, loads, d, c.seen, &junction);
+    *count += junction;
+    for (size_t i = 0; !rc && i < e->m->cables.n; i++) *count += place_catenary(e, &e->m->cables.v[i], &c, loads, d);
+    for (size_t i = 0; !rc && i < e->a->ne; i++) {
+        if (c.seen[i]) continue;
+        size_t n = walk(e, &c, (int)i);
+        c.seen[i] = 1;
+        if (n) *count += place_dangling(e, &c, n, loads, d) || place_chain(e, &c, n, d);
+    }
+    ctn_free(c.deg);
+    ctn_free(c.inc);
+    ctn_free(c.nodes);
+    ctn_free(c.elems);
+    ctn_free(c.seen);
+    return rc;
+}
