@@ -146,8 +146,33 @@ static void test_combination(void)
     ctn_ctx_destroy(&ctx);
 }
 
+/* A catenary element in a temperature case: its reported H (solved from the chord at the
+ * case's length) is the support's horizontal reaction of the case. */
+static void test_catenary_case(void)
+{
+    const char *text = "units kN m\ngravity 0 0 -1\nmaterial acsr E=6.9e7 strain=engineering alpha=1.9e-5\n"
+                       "section drake material=acsr A=4.68e-4 w=0.01594\nnode 1 0 0 0 fix=xyz\n"
+                       "node 2 350 0 0 fix=xyz\ncatenary 1 1 2 section=drake length=351\nstep install\n"
+                       "case hot\ntemperature all dT=65\ncombination hot2 2*hot\n";
+    ctn_ctx *ctx = NULL;
+    ctn_model *m = NULL;
+    ctn_ctx_create(&ctx);
+    ctn_solution *s = solve(ctx, text, &m);
+    for (size_t i = 0; s && i < ctn_solution_case_count(s); i++) {
+        const ctn_solution *cs = ctn_solution_case(s, i);
+        ctn_catenary_result c = { .size = sizeof c };
+        ctn_step_result st;
+        CHECK(ctn_solution_step(cs, 0, &st) == CTN_OK && ctn_solution_catenary(m, cs, 0, 0, &c) == CTN_OK);
+        CHECK_CLOSE(c.H, -st.react[0], 1e-9, 0);
+    }
+    ctn_solution_destroy(&s);
+    ctn_model_destroy(&m);
+    ctn_ctx_destroy(&ctx);
+}
+
 int main(void)
 {
+    test_catenary_case();
     test_bit_for_bit();
     test_combination();
     CHECK_DONE();

@@ -70,6 +70,8 @@ int ctn_model_add_combination(ctn_model *m, const char *name, const char *const 
     int rc = check_name(m, "combination", name);
     if (rc) return rc;
     if (!n) return ctn_model_error(m, CTN_ERR_MODEL, "combination '%s': give at least one term FACTOR*CASE", name);
+    if (n > CTN_MAX_CASE_TERMS)
+        return ctn_model_error(m, CTN_ERR_MODEL, "combination '%s': at most %d terms", name, CTN_MAX_CASE_TERMS);
     if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->terms, n)) || (rc = CTN_ARRAY_RESERVE(m->ctx, m->combos, 1))) return rc;
     ctn_combo cb = { .first = m->terms.n, .count = n, .from = -1, .line = m->line };
     snprintf(cb.name, sizeof cb.name, "%s", name);

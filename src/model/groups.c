@@ -161,14 +161,21 @@ void ctn_model_sel_temperatures(const ctn_model *m, const ctn_loadsel *sel, doub
 
 double ctn_model_element_temperature(const ctn_model *m, size_t k, size_t e)
 {
+    ctn_loadsel sel = ctn_loadsel_step(k);
+    return ctn_model_sel_element_temperature(m, &sel, e);
+}
+
+double ctn_model_sel_element_temperature(const ctn_model *m, const ctn_loadsel *sel, size_t e)
+{
     double dT = 0;
     if (!thermal(m, e)) return 0;
     for (size_t j = 0; j < m->tloads.n; j++) {
         const ctn_tload *t = &m->tloads.v[j];
-        if (t->step > (int)k + 1) continue;
+        double w = ctn_loadsel_weight(sel, t->step);
+        if (w == 0) continue;
         if (t->kind == CTN_TARGET_ALL || (t->kind == CTN_TARGET_ELEMENT && t->target == (int)e) ||
             (t->kind == CTN_TARGET_GROUP && m->elements.v[e].group == t->target))
-            dT += t->dT;
+            dT += w * t->dT;
     }
     return dT;
 }

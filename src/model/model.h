@@ -99,6 +99,7 @@ typedef struct ctn_lload {
 /* A load case (cases.c): the load records tagged CTN_CASE_TAG0 + its index, solved from
  * the state at the end of model step `from` (0-based), not cumulatively. */
 #define CTN_CASE_TAG0 (1 << 28)
+#define CTN_MAX_CASE_TERMS 64   /* terms of a combination at most */
 typedef struct ctn_case {
     char name[CTN_NAME_MAX];
     int from;        /* step index of the installed state */
@@ -304,6 +305,8 @@ int ctn_model_group_put(ctn_model *m, size_t e, int g);
 void ctn_model_step_temperatures(const ctn_model *m, size_t k, double *dT);
 /* The same for element e alone. */
 double ctn_model_element_temperature(const ctn_model *m, size_t k, size_t e);
+/* The same in a selection (a case or a combination). */
+double ctn_model_sel_element_temperature(const ctn_model *m, const ctn_loadsel *sel, size_t e);
 
 /* Mass per unit unstressed length of section i: its mass=, else w / g (g standard
  * gravity in the model's units); NAN when the model has no units and the section a

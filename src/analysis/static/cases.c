@@ -34,6 +34,7 @@ static int solve_case(ctn_problem *p, const ctn_solution *s, size_t i, double *d
     int rc = ctn_solution_create(p->ctx, m->nodes.n, m->elements.n, &cs);
     if (rc) return rc;
     cs->rot = s->rot;
+    cs->of_case = i + 1;
     cs->threads = s->threads;
     if ((rc = ctn_solution_add_step(cs, name, &idx))) goto done;
     ctn_problem_step_loads(p, (size_t)from);        /* the installed state's totals */
