@@ -72,6 +72,10 @@ void ctn_print_stability(FILE *out, const char *model, const ctn_solution *s);
 void ctn_print_warnings(FILE *out, const char *model, const ctn_model *m, const ctn_solution *s);
 /* Human-readable result summary (without the reactions). */
 void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s);
+/* A line per load case and combination, and the envelope (print_cases.c). */
+void ctn_print_cases(FILE *out, const ctn_model *m, const ctn_solution *s);
+/* 1 when every case and combination converged; else 0 and the first that did not. */
+int ctn_cases_converged(const ctn_solution *s, const char **failed);
 /* A line per group, and the most utilised element (print_groups.c). */
 void ctn_print_groups(FILE *out, const ctn_model *m, const ctn_solution *s);
 /* The warning (exit code unchanged) when an element's utilisation exceeds 1. */

@@ -140,6 +140,12 @@ int ctn_cmd_solve(int argc, char **argv)
         ctn_solution_summary(s, &sum);
         code = sum.reason == CTN_CONVERGED ? CTN_EXIT_OK : CTN_EXIT_NOCONV;
         if (code) fprintf(stderr, "catena: %s: not converged: %s\n", a.model, ctn_reason_name(sum.reason));
+        const char *failed = NULL;
+        if (!code && !ctn_cases_converged(s, &failed)) {
+            code = CTN_EXIT_NOCONV;
+            fprintf(stderr, "catena: %s: load case '%s' not converged (its last converged state is written)\n", a.model,
+                    failed);
+        }
         if (code && sum.fail_element)
             fprintf(stderr, "catena: %s: element %d could not be evaluated at the last state tried (a chord of zero "
                             "length, or a catenary whose forces are beyond double precision)\n", a.model, sum.fail_element);

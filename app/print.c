@@ -154,6 +154,7 @@ void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s)
                 sum.fail_node, ctn_dof_name(sum.fail_dir));
     print_notes(out, m, &sum);
     print_steps(out, m, s);
+    ctn_print_cases(out, m, s);
     size_t imax, imin;
     force_range(m, s, &imax, &imin);
     print_element_line(out, "max", m, s, imax);
@@ -202,7 +203,8 @@ static double max_strain(const ctn_model *m, const ctn_solution *s, size_t *at)
 static double max_extent(const ctn_model *m, const ctn_solution *s)
 {
     const double *d = ctn_solution_displacements(s);
-    double big = 0, scale = !strcmp(ctn_model_length_unit(m), "mm") ? 1e-3 : 1.0;
+    const char *L = ctn_model_length_unit(m);
+    double big = 0, scale = !strcmp(L, "mm") ? 1e-3 : !strcmp(L, "ft") ? 0.3048 : !strcmp(L, "in") ? 0.0254 : 1.0;
     for (size_t i = 0; i < ctn_model_node_count(m); i++) {
         ctn_node_info n;
         ctn_model_node(m, i, &n);

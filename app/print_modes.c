@@ -9,7 +9,10 @@ static const char *mass_unit(const ctn_model *m)
     static const char *const f[3] = { "N", "kN", "MN" }, *const names[2][3] = {
         { "kg", "t", "kt" },                          /* per m: N s^2/m = kg */
         { "t", "kt", "Mt" } };                        /* per mm: N s^2/mm = t */
-    int lm = !strcmp(ctn_model_length_unit(m), "mm");
+    const char *L = ctn_model_length_unit(m), *F = ctn_model_force_unit(m);
+    int lm = !strcmp(L, "mm"), us = !strcmp(F, "lbf") ? 0 : !strcmp(F, "kip") ? 1 : -1;
+    if (us >= 0 && !strcmp(L, "ft")) return us ? "kslug" : "slug";      /* lbf s^2/ft = slug */
+    if (us >= 0 && !strcmp(L, "in")) return us ? "kip s^2/in" : "lbf s^2/in";
     for (int i = 0; i < 3; i++)
         if (!strcmp(ctn_model_force_unit(m), f[i])) return names[lm][i];
     return "";

@@ -294,6 +294,26 @@ const char *ctn_model_group_name(const ctn_model *m, size_t g);   /* NULL if out
  * up over the steps, ramped in its substeps like loads). An element's unstressed length
  * becomes l0 (1 + alpha dT), alpha its material's; its weight stays w l0. */
 int ctn_model_add_temperature(ctn_model *m, const char *target, double dT);
+/* A load per unit unstressed length q = (qx, qy, qz) [force/length] in a fixed direction
+ * on the cable elements of `target` ("all", a group name, or an element id in decimal),
+ * lumped q l0 / 2 at each end of each element; in the current step or case. Catenary and
+ * pulley elements are refused (the lumping would not be exact on them). */
+int ctn_model_add_lineload(ctn_model *m, const char *target, const double q[3]);
+/* Load cases and combinations (docs/format.md, `case`): a case NAME solved from the
+ * converged end of step `from` (NULL: the last step defined so far); the loads,
+ * temperatures and displacements added after it are the case's, until the next step or
+ * case. A combination sums n earlier cases (of one installed state) times their factors;
+ * each case and combination is solved non-linearly from the installed state. */
+int ctn_model_add_case(ctn_model *m, const char *name, const char *from, int substeps);
+int ctn_model_add_combination(ctn_model *m, const char *name, const char *const *cases, const double *factors,
+                              size_t n);
+/* Cases then combinations: their count; the i-th's name, installed state (the index of
+ * its step) and kind (1: a combination). */
+size_t ctn_model_case_count(const ctn_model *m);
+int ctn_model_case_info(const ctn_model *m, size_t i, const char **name, int *from, int *combination);
+/* Term k of entry i (a combination): its case's name and factor. */
+int ctn_model_case_term(const ctn_model *m, size_t i, size_t k, const char **name, double *factor);
+size_t ctn_model_case_terms(const ctn_model *m, size_t i);
 /* Reference "file:line" recorded with the next definitions, used in later validation
  * messages (the reader sets it; API users may ignore it). file is copied. */
 int ctn_model_set_origin(ctn_model *m, const char *file, int line);

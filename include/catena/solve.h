@@ -439,6 +439,11 @@ typedef struct ctn_step_result {
     const double *react;  /* reactions, 3 per node */
 } ctn_step_result;
 size_t ctn_solution_step_count(const ctn_solution *s);
+/* The results of the model's load cases then combinations (ctn_model_case_info), each a
+ * solution of one step (its state, elements and summary: converged or why not); the
+ * count is 0 when the steps did not converge. Owned by s. */
+size_t ctn_solution_case_count(const ctn_solution *s);
+const ctn_solution *ctn_solution_case(const ctn_solution *s, size_t i);
 int ctn_solution_step(const ctn_solution *s, size_t k, ctn_step_result *out);
 int ctn_solution_step_element(const ctn_solution *s, size_t k, size_t i, ctn_element_state *out);
 

@@ -533,6 +533,9 @@ static const directive directives[] = {
     { "spring", d_spring },   { "group", d_group },     { "temperature", d_temperature },
     { "modes", d_modes },     { "moment", d_moment },   { "rspring", d_rspring },
         { "catenary", ctn_parse_catenary }, { "pulley", ctn_parse_pulley }, { "beam", ctn_parse_beam },
+    { "lineload", ctn_parse_lineload }, { "case", ctn_parse_case },
+    { "combination", ctn_parse_combination }, { "ice", ctn_parse_ice },
+    { "wind", ctn_parse_wind },
 };
 
 int ctn_parse_directive(ctn_line *l)

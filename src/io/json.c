@@ -14,6 +14,7 @@ typedef struct json_writer {
     ctn_writer w;
     ctn_jw j;
     size_t nsteps;
+    const ctn_solution *s;     /* the solution written (its cases go last) */
 } json_writer;
 
 static const char *const xyz[3] = { "x", "y", "z" };
@@ -294,11 +295,10 @@ static void put_groups(json_writer *jw, const ctn_solution *s, size_t k)
     ctn_jw_end(j);
 }
 
-/* One entry of "steps": step k's outcome and state. */
-static void put_step(json_writer *jw, const ctn_solution *s, size_t k, const ctn_step_result *st)
+/* The body of one entry of "steps" (or of "cases"): step k's outcome and state. */
+static void put_step_body(json_writer *jw, const ctn_solution *s, size_t k, const ctn_step_result *st)
 {
     ctn_jw *j = &jw->j;
-    ctn_jw_object(j, NULL);
     ctn_jw_string(j, "name", st->name);
     ctn_jw_bool(j, "converged", st->reason == CTN_CONVERGED);
     ctn_jw_string(j, "reason", ctn_reason_name(st->reason));
@@ -307,6 +307,119 @@ static void put_step(json_writer *jw, const ctn_solution *s, size_t k, const ctn
     put_nodes(jw, s, k);
     put_elements(jw, s, k);
     if (ctn_model_group_count(jw->w.m)) put_groups(jw, s, k);
+}
+
+static void put_step(json_writer *jw, const ctn_solution *s, size_t k, const ctn_step_result *st)
+{
+    ctn_jw_object(&jw->j, NULL);
+    put_step_body(jw, s, k, st);
+    ctn_jw_end(&jw->j);
+}
+
+/* "cases" or "combinations" (comb): each a step's results, with its installed state
+ * ("from") and a combination's terms. */
+static void put_cases(json_writer *jw, int comb)
+{
+    ctn_jw *j = &jw->j;
+    const ctn_model *m = jw->w.m;
+    ctn_jw_array(j, comb ? "combinations" : "cases");
+    for (size_t i = 0; i < ctn_solution_case_count(jw->s) && !jw->w.out.err; i++) {
+        const ctn_solution *cs = ctn_solution_case(jw->s, i);
+        const char *name = NULL;
+        int from = 0, kind = 0;
+        ctn_step_result st;
+        if (ctn_model_case_info(m, i, &name, &from, &kind) || ctn_solution_step(cs, 0, &st)) {
+            ctn_writer_mismatch(&jw->w);
+            break;
+        }
+        if (kind != comb) continue;
+        ctn_jw_object(j, NULL);
+        put_step_body(jw, cs, 0, &st);
+        ctn_jw_string(j, "from", ctn_model_step_name(m, (size_t)from));
+        if (comb) {
+            ctn_jw_array(j, "terms");
+            for (size_t t = 0; t < ctn_model_case_terms(m, i); t++) {
+                const char *cn = NULL;
+                double f = 0;
+                ctn_model_case_term(m, i, t, &cn, &f);
+                ctn_jw_object(j, NULL);
+                ctn_jw_string(j, "case", cn);
+                ctn_jw_number(j, "factor", f);
+                ctn_jw_end(j);
+            }
+            ctn_jw_end(j);
+        }
+        ctn_jw_end(j);
+    }
+    ctn_jw_end(j);
+}
+
+/* "envelope": over the converged cases and combinations, each element's largest and
+ * smallest force and the case that governs each, and each node's largest displacement
+ * from the installed state of its case. */
+static void put_envelope(json_writer *jw)
+{
+    ctn_jw *j = &jw->j;
+    const ctn_model *m = jw->w.m;
+    size_t nc = ctn_solution_case_count(jw->s);
+    ctn_jw_object(j, "envelope");
+    ctn_jw_array(j, "elements");
+    for (size_t e = 0; e < ctn_model_element_count(m) && !jw->w.out.err; e++) {
+        ctn_element_info ei;
+        double hi = 0, lo = 0, util = 0;
+        const char *hn = NULL, *ln = NULL, *un = NULL;
+        ctn_model_element(m, e, &ei);
+        for (size_t i = 0; i < nc; i++) {
+            const ctn_solution *cs = ctn_solution_case(jw->s, i);
+            ctn_step_result st;
+            ctn_element_state es;
+            const char *name = NULL;
+            if (ctn_solution_step(cs, 0, &st) || st.reason != CTN_CONVERGED || ctn_solution_step_element(cs, 0, e, &es))
+                continue;
+            ctn_model_case_info(m, i, &name, NULL, NULL);
+            if (!hn || es.force > hi) hi = es.force, hn = name;
+            if (!ln || es.force < lo) lo = es.force, ln = name;
+            if (ei.capacity > 0 && (!un || ctn_utilisation(&ei, &es) > util)) util = ctn_utilisation(&ei, &es), un = name;
+        }
+        if (!hn) continue;
+        ctn_jw_object(j, NULL);
+        ctn_jw_number(j, "id", ei.id);
+        ctn_jw_number(j, "max_force", hi);
+        ctn_jw_string(j, "max_case", hn);
+        ctn_jw_number(j, "min_force", lo);
+        ctn_jw_string(j, "min_case", ln);
+        if (un) {
+            ctn_jw_number(j, "max_utilisation", util);
+            ctn_jw_string(j, "utilisation_case", un);
+        }
+        ctn_jw_end(j);
+    }
+    ctn_jw_end(j);
+    ctn_jw_array(j, "nodes");
+    for (size_t p = 0; p < ctn_model_node_count(m) && !jw->w.out.err; p++) {
+        double big = -1;
+        const char *bn = NULL;
+        for (size_t i = 0; i < nc; i++) {
+            const ctn_solution *cs = ctn_solution_case(jw->s, i);
+            ctn_step_result st, base;
+            const char *name = NULL;
+            int from = 0;
+            ctn_model_case_info(m, i, &name, &from, NULL);
+            if (ctn_solution_step(cs, 0, &st) || st.reason != CTN_CONVERGED ||
+                ctn_solution_step(jw->s, (size_t)from, &base))
+                continue;
+            double dx = st.d[3 * p] - base.d[3 * p], dy = st.d[3 * p + 1] - base.d[3 * p + 1];
+            double dz = st.d[3 * p + 2] - base.d[3 * p + 2], u = sqrt(dx * dx + dy * dy + dz * dz);
+            if (u > big) big = u, bn = name;
+        }
+        if (!bn) continue;
+        ctn_jw_object(j, NULL);
+        ctn_jw_number(j, "id", node_id(m, (int)p));
+        ctn_jw_number(j, "max_displacement", big);
+        ctn_jw_string(j, "case", bn);
+        ctn_jw_end(j);
+    }
+    ctn_jw_end(j);
     ctn_jw_end(j);
 }
 
@@ -327,6 +440,7 @@ static int json_step(void *p, const ctn_solution *s, size_t k)
     json_writer *jw = p;
     ctn_step_result st;
     jw->nsteps = ctn_solution_step_count(s);
+    jw->s = s;
     if (k == 0) {
         if (ctn_solution_step(s, jw->nsteps - 1, &st)) return ctn_writer_mismatch(&jw->w);
         put_summary(jw, s);
@@ -348,6 +462,11 @@ static int json_end(void *p)
 {
     json_writer *jw = p;
     if (jw->nsteps > 1) ctn_jw_end(&jw->j);
+    if (jw->s && ctn_model_case_count(jw->w.m)) {
+        put_cases(jw, 0);
+        put_cases(jw, 1);
+        put_envelope(jw);
+    }
     ctn_jw_end(&jw->j);
     return jw->w.out.err;
 }

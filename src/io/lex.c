@@ -110,12 +110,27 @@ int ctn_parse_int(const ctn_line *l, const char *what, const char *tok, int *out
     return CTN_OK;
 }
 
+/* A number followed by a unit (end: the unit) converted to the model's units. */
+static int with_unit(const ctn_line *l, const char *what, const char *tok, const char *end, double *v)
+{
+    char b[64], msg[256];
+    int f = 0, d = 0;
+    if (!ctn_parse_unit_dim(what, &f, &d))
+        return ctn_parse_error(l, "expected a number for %s, found '%s' (%s takes no unit)", what,
+                               ctn_parse_show(tok, b, sizeof b), what);
+    if (ctn_model_convert(l->m, end, f, d, v, msg, sizeof msg))
+        return ctn_parse_error(l, "expected a number for %s, found '%s': %s", what, ctn_parse_show(tok, b, sizeof b), msg);
+    return CTN_OK;
+}
+
 int ctn_parse_num(const ctn_line *l, const char *what, const char *tok, double *out)
 {
     char b[64], *end;
     errno = 0;
     double v = strtod(tok, &end);
-    if (end == tok || *end) return ctn_parse_error(l, "expected a number for %s, found '%s'", what, ctn_parse_show(tok, b, sizeof b));
+    int unit = end != tok && *end && isalpha((unsigned char)*end) && isfinite(v) && !(errno == ERANGE && fabs(v) > 1.0);
+    if (unit && with_unit(l, what, tok, end, &v)) return CTN_ERR_MODEL;
+    if (end == tok || (*end && !unit)) return ctn_parse_error(l, "expected a number for %s, found '%s'", what, ctn_parse_show(tok, b, sizeof b));
     if (!isfinite(v) || (errno == ERANGE && fabs(v) > 1.0))
         return ctn_parse_error(l, "non-finite number for %s: '%s'", what, ctn_parse_show(tok, b, sizeof b));
     *out = v;

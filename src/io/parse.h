@@ -31,7 +31,11 @@ int ctn_parse_positional(ctn_line *l, int n, const char *usage);
 int ctn_parse_integral(const char *tok, long long *out);
 /* An id (or other integer from 1 to INT_MAX) by that rule. */
 int ctn_parse_int(const ctn_line *l, const char *what, const char *tok, int *out);
+/* A real number; one the value may carry a unit converted to the model's units
+ * (`200GPa`), when `what` names a quantity with a dimension (unit_keys.c). */
 int ctn_parse_num(const ctn_line *l, const char *what, const char *tok, double *out);
+/* The dimension force^f length^l of the value named `what`; 0 if it takes no unit. */
+int ctn_parse_unit_dim(const char *what, int *f, int *l);
 /* key=value lookup among tokens from index `from`; NULL if absent (marks it used). */
 const char *ctn_parse_key(ctn_line *l, int from, const char *key);
 /* A flag token (no '='), e.g. "tension-only"; 1 if present (marks it used). */
@@ -84,5 +88,11 @@ int ctn_parse_beam(ctn_line *l);      /* directives_beam.c */
 /* A section's shape keys (d= t=, b= h= t=, b= h= tf= tw=) into s's A, Iy, Iz, J;
  * *shaped = 1 if some were given (section_shapes.c). */
 int ctn_parse_section_shape(ctn_line *l, ctn_section_spec *s, int *shaped);
+/* Loads and cases (directives_loads.c). */
+int ctn_parse_lineload(ctn_line *l);
+int ctn_parse_case(ctn_line *l);
+int ctn_parse_combination(ctn_line *l);
+int ctn_parse_ice(ctn_line *l);
+int ctn_parse_wind(ctn_line *l);
 
 #endif

@@ -7,25 +7,6 @@
 
 static int finite3(const double v[3]) { return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]); }
 
-int ctn_model_set_units(ctn_model *m, const char *force, const char *length)
-{
-    static const char *fnames[] = { "N", "kN", "MN" };
-    static const double fval[] = { 1.0, 1e3, 1e6 };
-    if (!m || !force || !length) return CTN_ERR_INVALID;
-    int fi = -1;
-    for (int i = 0; i < 3; i++)
-        if (!strcmp(force, fnames[i])) fi = i;
-    if (fi < 0) return ctn_model_error(m, CTN_ERR_MODEL, "unknown force unit '%s' (expected N, kN or MN)", force);
-    double lval;
-    if (!strcmp(length, "m")) lval = 1.0;
-    else if (!strcmp(length, "mm")) lval = 1e-3;
-    else return ctn_model_error(m, CTN_ERR_MODEL, "unknown length unit '%s' (expected m or mm)", length);
-    snprintf(m->force_unit, sizeof m->force_unit, "%s", force);
-    snprintf(m->length_unit, sizeof m->length_unit, "%s", length);
-    m->mpa = fval[fi] / (lval * lval) * 1e-6;            /* force/length^2 -> N/m^2 -> MPa */
-    return CTN_OK;
-}
-
 int ctn_model_set_gravity(ctn_model *m, const double g[3])
 {
     if (!m || !g) return CTN_ERR_INVALID;

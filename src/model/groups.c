@@ -119,7 +119,7 @@ int ctn_model_add_temperature(ctn_model *m, const char *target, double dT)
     if (!m || !target) return CTN_ERR_INVALID;
     if (!isfinite(dT) || fabs(dT) > 1e4)
         return ctn_model_error(m, CTN_ERR_MODEL, "temperature: dT must be finite and at most 1e4 K in size (got %g)", dT);
-    ctn_tload t = { 0, -1, dT, (int)m->steps.n, m->line };
+    ctn_tload t = { 0, -1, dT, ctn_model_load_tag(m), m->line };
     int rc = resolve_target(m, target, &t);
     if (!rc) rc = CTN_ARRAY_RESERVE(m->ctx, m->tloads, 1);
     if (rc) return rc;
@@ -139,29 +139,43 @@ int ctn_model_add_temperature(ctn_model *m, const char *target, double dT)
 
 void ctn_model_step_temperatures(const ctn_model *m, size_t k, double *dT)
 {
+    ctn_loadsel sel = ctn_loadsel_step(k);
+    ctn_model_sel_temperatures(m, &sel, dT);
+}
+
+void ctn_model_sel_temperatures(const ctn_model *m, const ctn_loadsel *sel, double *dT)
+{
     memset(dT, 0, m->elements.n * sizeof *dT);
     for (size_t j = 0; j < m->tloads.n; j++) {
         const ctn_tload *t = &m->tloads.v[j];
-        if (t->step > (int)k + 1) continue;
+        double w = ctn_loadsel_weight(sel, t->step);
+        if (w == 0) continue;
         if (t->kind == CTN_TARGET_ELEMENT) {
-            dT[t->target] += t->dT;
+            dT[t->target] += w * t->dT;
             continue;
         }
         for (size_t i = 0; i < m->elements.n; i++)
-            if (thermal(m, i) && (t->kind == CTN_TARGET_ALL || m->elements.v[i].group == t->target)) dT[i] += t->dT;
+            if (thermal(m, i) && (t->kind == CTN_TARGET_ALL || m->elements.v[i].group == t->target)) dT[i] += w * t->dT;
     }
 }
 
 double ctn_model_element_temperature(const ctn_model *m, size_t k, size_t e)
 {
+    ctn_loadsel sel = ctn_loadsel_step(k);
+    return ctn_model_sel_element_temperature(m, &sel, e);
+}
+
+double ctn_model_sel_element_temperature(const ctn_model *m, const ctn_loadsel *sel, size_t e)
+{
     double dT = 0;
     if (!thermal(m, e)) return 0;
     for (size_t j = 0; j < m->tloads.n; j++) {
         const ctn_tload *t = &m->tloads.v[j];
-        if (t->step > (int)k + 1) continue;
+        double w = ctn_loadsel_weight(sel, t->step);
+        if (w == 0) continue;
         if (t->kind == CTN_TARGET_ALL || (t->kind == CTN_TARGET_ELEMENT && t->target == (int)e) ||
             (t->kind == CTN_TARGET_GROUP && m->elements.v[e].group == t->target))
-            dT += t->dT;
+            dT += w * t->dT;
     }
     return dT;
 }

@@ -29,7 +29,7 @@ static void add_segment_hload(const ctn_model *m, double q, const double u[3], i
 
 /* Horizontal loads: q times the reference projection of each segment of an element on
  * the plane normal to gravity, half to each of its nodes, along gravity's direction. */
-static void add_hloads(const ctn_model *m, int step, int dead_only, double *f)
+static void add_hloads(const ctn_model *m, const ctn_loadsel *sel, int dead_only, double *f)
 {
     double g = sqrt(m->gravity[0] * m->gravity[0] + m->gravity[1] * m->gravity[1] +
                     m->gravity[2] * m->gravity[2]);
@@ -37,25 +37,38 @@ static void add_hloads(const ctn_model *m, int step, int dead_only, double *f)
     double u[3] = { m->gravity[0] / g, m->gravity[1] / g, m->gravity[2] / g };
     for (size_t h = 0; h < m->hloads.n; h++) {
         const ctn_hload *hl = &m->hloads.v[h];
-        if (hl->step > step || (dead_only && !hl->reference)) continue;
+        double w = ctn_loadsel_weight(sel, hl->step);
+        if (w == 0 || (dead_only && !hl->reference)) continue;
         for (size_t i = 0; i < m->elements.n; i++) {
             const ctn_element *e = &m->elements.v[i];
             if (!ctn_hload_on(m, hl, i)) continue;
             const int *nd = ctn_elem_nodes(m, i);
             for (int s = 0; s + 1 < e->nnodes; s++)
-                add_segment_hload(m, hl->q, u, nd[s], nd[s + 1], f);
+                add_segment_hload(m, w * hl->q, u, nd[s], nd[s + 1], f);
         }
     }
 }
 
-/* u (3 per node) = the prescribed displacements (rot 0) or rotations (rot 1) of the
- * steps up to step. */
-static void add_prescribed(const ctn_model *m, int step, int rot, double *u)
+/* v (3 per node) += the records of a selection (forces or moments). */
+static void add_nodal(const ctn_pload *v, size_t n, const ctn_loadsel *sel, double *f)
+{
+    for (size_t i = 0; i < n; i++) {
+        double w = ctn_loadsel_weight(sel, v[i].step);
+        if (w == 0) continue;
+        for (int j = 0; j < 3; j++) f[3 * (size_t)v[i].node + (size_t)j] += w * v[i].F[j];
+    }
+}
+
+/* u (3 per node) = the prescribed displacements (rot 0) or rotations (rot 1) of a
+ * selection. */
+static void add_prescribed(const ctn_model *m, const ctn_loadsel *sel, int rot, double *u)
 {
     memset(u, 0, 3 * m->nodes.n * sizeof(double));
-    for (size_t i = 0; i < m->pdisps.n; i++)
-        for (int j = 0; j < 3 && m->pdisps.v[i].step <= step && m->pdisps.v[i].rot == rot; j++)
-            u[3 * (size_t)m->pdisps.v[i].node + (size_t)j] += m->pdisps.v[i].u[j];
+    for (size_t i = 0; i < m->pdisps.n; i++) {
+        double w = ctn_loadsel_weight(sel, m->pdisps.v[i].step);
+        if (w == 0 || m->pdisps.v[i].rot != rot) continue;
+        for (int j = 0; j < 3; j++) u[3 * (size_t)m->pdisps.v[i].node + (size_t)j] += w * m->pdisps.v[i].u[j];
+    }
 }
 
 size_t ctn_model_step_count(const ctn_model *m) { return !m ? 0 : m->steps.n ? m->steps.n : 1; }
@@ -74,34 +87,38 @@ int ctn_model_step_loads(const ctn_model *m, size_t k, double *f, double *u)
 int ctn_model_step_loads_ex(const ctn_model *m, size_t k, int dead_only, double *f, double *u)
 {
     if (!m || k >= ctn_model_step_count(m)) return CTN_ERR_INVALID;
-    int step = (int)k + 1;                        /* records of steps <= k + 1 (0: base) */
+    ctn_loadsel sel = ctn_loadsel_step(k);         /* records of steps <= k + 1 (0: base) */
+    ctn_model_sel_loads(m, &sel, dead_only, f, u);
+    return CTN_OK;
+}
+
+void ctn_model_sel_loads(const ctn_model *m, const ctn_loadsel *sel, int dead_only, double *f, double *u)
+{
     size_t n3 = 3 * m->nodes.n;
     if (f) {
         memset(f, 0, n3 * sizeof(double));
-        for (size_t i = 0; i < m->ploads.n; i++)
-            for (int j = 0; j < 3 && m->ploads.v[i].step <= step; j++)
-                f[3 * (size_t)m->ploads.v[i].node + (size_t)j] += m->ploads.v[i].F[j];
+        add_nodal(m->ploads.v, m->ploads.n, sel, f);
         add_element_loads(m, f);
-        add_hloads(m, step, dead_only, f);
+        add_hloads(m, sel, dead_only, f);
+        ctn_model_add_lineloads(m, sel, dead_only, f);
     }
-    if (u) {
-        memset(u, 0, n3 * sizeof(double));
-        add_prescribed(m, step, 0, u);
+    if (u) add_prescribed(m, sel, 0, u);
+}
+
+void ctn_model_sel_moments(const ctn_model *m, const ctn_loadsel *sel, double *M, double *r)
+{
+    if (M) {
+        memset(M, 0, 3 * m->nodes.n * sizeof(double));
+        add_nodal(m->mloads.v, m->mloads.n, sel, M);
     }
-    return CTN_OK;
+    if (r) add_prescribed(m, sel, 1, r);
 }
 
 int ctn_model_step_moments(const ctn_model *m, size_t k, double *M, double *r)
 {
     if (!m || k >= ctn_model_step_count(m)) return CTN_ERR_INVALID;
-    int step = (int)k + 1;
-    if (M) {
-        memset(M, 0, 3 * m->nodes.n * sizeof(double));
-        for (size_t i = 0; i < m->mloads.n; i++)
-            for (int j = 0; j < 3 && m->mloads.v[i].step <= step; j++)
-                M[3 * (size_t)m->mloads.v[i].node + (size_t)j] += m->mloads.v[i].F[j];
-    }
-    if (r) add_prescribed(m, step, 1, r);
+    ctn_loadsel sel = ctn_loadsel_step(k);
+    ctn_model_sel_moments(m, &sel, M, r);
     return CTN_OK;
 }
 
@@ -125,6 +142,7 @@ int ctn_model_add_step(ctn_model *m, const char *name, int substeps)
     ctn_step *st = &m->steps.v[m->steps.n++];
     snprintf(st->name, sizeof st->name, "%s", name);
     st->substeps = substeps;
+    m->in_case = 0;                                /* later loads are the step's */
     return CTN_OK;
 }
 
@@ -241,6 +259,7 @@ int ctn_model_validate(const ctn_model *m)
     if (!fixed) return ctn_error(m->ctx, CTN_ERR_MODEL, "%s%sthe model has no supports (no node has fix=)", m->file, *m->file ? ": " : "");
     int rc = check_rotations(m);
     if (!rc) rc = check_hload_targets(m);
+    if (!rc) rc = ctn_model_check_lineloads(m);
     if (!rc) rc = check_unconnected(m);
     return rc ? rc : ctn_model_check_parts(m);
 }

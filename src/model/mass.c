@@ -9,8 +9,8 @@
 
 double ctn_model_standard_gravity(const ctn_model *m)
 {
-    if (!m || !m->length_unit[0]) return 0.0;
-    return !strcmp(m->length_unit, "mm") ? CTN_G0 * 1e3 : CTN_G0;
+    if (!m || !m->length_unit[0] || !(m->lconv > 0)) return 0.0;
+    return CTN_G0 / m->lconv;                        /* m/s^2 -> length/s^2 */
 }
 
 int ctn_model_set_node_mass(ctn_model *m, int id, double mass)

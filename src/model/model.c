@@ -43,6 +43,10 @@ void ctn_model_destroy(ctn_model **m)
     ctn_free(p->cables.v);
     ctn_free(p->groups.v);
     ctn_free(p->tloads.v);
+    ctn_free(p->lloads.v);
+    ctn_free(p->cases.v);
+    ctn_free(p->combos.v);
+    ctn_free(p->terms.v);
     ctn_free(p->etargets.v);
     ctn_free(p->densities.v);
     ctn_idmap_free(&p->node_ids);

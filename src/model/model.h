@@ -84,6 +84,66 @@ typedef struct ctn_hload {
     int step;        /* 0: before any step directive, else the step number */
 } ctn_hload;
 
+/* A load per unit unstressed length q [force/length], fixed in direction, on the cable
+ * elements of its target (lineload.c), from its step on (or in its case). */
+typedef struct ctn_lload {
+    int kind;        /* CTN_TARGET_* */
+    int target;      /* element index or group index */
+    double q[3];     /* drag: q_w times the wind's unit direction */
+    int step;        /* the record's tag, as ctn_pload's */
+    int line;
+    int drag;        /* 1: wind drag, q_w per unit length of the chord projected on the
+                        plane normal to the wind, following the geometry (follow.c) */
+} ctn_lload;
+
+/* A load case (cases.c): the load records tagged CTN_CASE_TAG0 + its index, solved from
+ * the state at the end of model step `from` (0-based), not cumulatively. */
+#define CTN_CASE_TAG0 (1 << 28)
+#define CTN_MAX_CASE_TERMS 64   /* terms of a combination at most */
+typedef struct ctn_case {
+    char name[CTN_NAME_MAX];
+    int from;        /* step index of the installed state */
+    int substeps;    /* 0: the solve options' steps */
+    int line;
+} ctn_case;
+
+/* A combination: sum of factor * case over its terms (m->terms[first .. first+count)). */
+typedef struct ctn_combo_term {
+    int c;           /* case index */
+    double factor;
+} ctn_combo_term;
+typedef struct ctn_combo {
+    char name[CTN_NAME_MAX];
+    size_t first, count;
+    int from;        /* the cases' common installed state */
+    int line;
+} ctn_combo;
+
+/* Which load records a solve takes: every record of tag 0 .. upto (the totals of model
+ * step k: upto = k + 1), and the records of the n extra tags times their factors (a case:
+ * its own tag, factor 1; a combination: its cases'). */
+typedef struct ctn_loadsel {
+    int upto;
+    size_t n;
+    const int *tag;
+    const double *factor;
+} ctn_loadsel;
+
+static inline double ctn_loadsel_weight(const ctn_loadsel *s, int tag)
+{
+    if (tag <= s->upto) return 1.0;
+    for (size_t i = 0; i < s->n; i++)
+        if (s->tag[i] == tag) return s->factor[i];
+    return 0.0;
+}
+
+/* The selection of model step k (0-based): its cumulative totals. */
+static inline ctn_loadsel ctn_loadsel_step(size_t k)
+{
+    ctn_loadsel s = { (int)k + 1, 0, NULL, NULL };
+    return s;
+}
+
 typedef struct ctn_pload {
     int node;        /* node index */
     double F[3];     /* a force, or (in mloads) a moment */
@@ -142,6 +202,15 @@ struct ctn_model {
     CTN_ARRAY(ctn_cable) cables;
     CTN_ARRAY(ctn_group) groups;
     CTN_ARRAY(ctn_tload) tloads;
+    CTN_ARRAY(ctn_lload) lloads;    /* loads per unstressed length (lineload) */
+    CTN_ARRAY(ctn_case) cases;      /* load cases, in order */
+    CTN_ARRAY(ctn_combo) combos;    /* combinations of cases */
+    CTN_ARRAY(ctn_combo_term) terms;
+    int in_case;                    /* load records now go to the last case */
+    double fconv, lconv;            /* the model's force and length units in N and m, 0
+                                       when unit-less (values with units: units.c) */
+    int converted;                  /* a value with a unit was converted (line), so the
+                                       units may no longer change */
     ctn_idmap node_ids, element_ids;
     int max_node_id, max_element_id;
     CTN_ARRAY(ctn_density) densities; /* form finding: the members given q= or force=, by
@@ -165,6 +234,17 @@ static inline int ctn_hload_on(const ctn_model *m, const ctn_hload *h, size_t e)
     return h->group >= 0 ? el->group == h->group : el->id >= h->first && el->id <= h->last;
 }
 
+/* The tag of a load record added now: the current step's, or the current case's. */
+static inline int ctn_model_load_tag(const ctn_model *m)
+{
+    return m->in_case ? CTN_CASE_TAG0 + (int)m->cases.n - 1 : (int)m->steps.n;
+}
+
+/* Convert v, carrying `unit`, to the model's units for a quantity of force^f length^l
+ * (units.c); 1 with a message when the unit is unknown, of another dimension, or the
+ * model has no units. */
+int ctn_model_convert(ctn_model *m, const char *unit, int f, int l, double *v, char *msg, size_t size);
+
 /* Report an error located at the model's current origin (file:line if known). */
 int ctn_model_error(const ctn_model *m, int code, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
@@ -174,6 +254,31 @@ static inline const int *ctn_elem_nodes(const ctn_model *m, size_t e)
 {
     return m->conn.v + m->elements.v[e].conn;
 }
+
+/* The loads of a selection into f and the prescribed displacements into u (3 per node,
+ * either may be NULL); dead_only: as below. */
+void ctn_model_sel_loads(const ctn_model *m, const ctn_loadsel *sel, int dead_only, double *f, double *u);
+/* Moments and prescribed rotations of a selection (either may be NULL). */
+void ctn_model_sel_moments(const ctn_model *m, const ctn_loadsel *sel, double *M, double *r);
+/* Temperature changes of a selection (ne). */
+void ctn_model_sel_temperatures(const ctn_model *m, const ctn_loadsel *sel, double *dT);
+/* Add the lineloads of a selection to f (3 per node): q l0 / 2 at each end; with
+ * !dead_only the winds too, on the reference geometry (lineload.c). */
+void ctn_model_add_lineloads(const ctn_model *m, const ctn_loadsel *sel, int dead_only, double *f);
+/* wind TARGET: drag q_w [force/length] along the unit direction dir (lineload.c). */
+int ctn_model_add_wind(ctn_model *m, const char *target, const double dir[3], double q);
+/* Whether lineload l acts on element e (cable elements of its target). */
+int ctn_lload_on(const ctn_model *m, const ctn_lload *l, size_t e);
+/* Checks made when the model is solved: every lineload reaches an element, and none a
+ * family it cannot load exactly (lineload.c). */
+int ctn_model_check_lineloads(const ctn_model *m);
+/* lineload TARGET q: add the record (TARGET all, an element id or a group name). */
+int ctn_model_add_lineload(ctn_model *m, const char *target, const double q[3]);
+
+/* The selection of case or combination i (ctn_model_case_info; tags and factors: room
+ * for its terms, at most the case count or 1) (cases.c). */
+int ctn_model_case_sel(const ctn_model *m, size_t i, ctn_loadsel *sel, int *tags, double *factors);
+int ctn_model_find_case(const ctn_model *m, const char *name);
 
 /* ctn_model_step_loads; dead_only: without the hloads on the deformed projection (the
  * solver adds those at each state). */
@@ -200,6 +305,8 @@ int ctn_model_group_put(ctn_model *m, size_t e, int g);
 void ctn_model_step_temperatures(const ctn_model *m, size_t k, double *dT);
 /* The same for element e alone. */
 double ctn_model_element_temperature(const ctn_model *m, size_t k, size_t e);
+/* The same in a selection (a case or a combination). */
+double ctn_model_sel_element_temperature(const ctn_model *m, const ctn_loadsel *sel, size_t e);
 
 /* Mass per unit unstressed length of section i: its mass=, else w / g (g standard
  * gravity in the model's units); NAN when the model has no units and the section a

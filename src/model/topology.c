@@ -56,7 +56,7 @@ static int add_nodal(ctn_model *m, int node, const double F[3], int moment)
     ctn_pload *p = moment ? &m->mloads.v[m->mloads.n++] : &m->ploads.v[m->ploads.n++];
     p->node = a;
     memcpy(p->F, F, sizeof p->F);
-    p->step = (int)m->steps.n;
+    p->step = ctn_model_load_tag(m);
     p->line = m->line;
     return CTN_OK;
 }
@@ -82,7 +82,7 @@ static int add_prescribed(ctn_model *m, int node, unsigned dofs, const double u[
     ctn_pdisp *p = &m->pdisps.v[m->pdisps.n++];
     p->node = a;
     for (int k = 0; k < 3; k++) p->u[k] = dofs >> k & 1u ? u[k] : 0.0;
-    p->step = (int)m->steps.n;
+    p->step = ctn_model_load_tag(m);
     p->rot = rot;
     return CTN_OK;
 }
@@ -118,7 +118,7 @@ int ctn_model_add_hload_projected(ctn_model *m, double q, int first, int last, c
     h->last = last;
     h->group = -1;
     h->line = m->line;
-    h->step = (int)m->steps.n;
+    h->step = ctn_model_load_tag(m);
     return CTN_OK;
 }
 

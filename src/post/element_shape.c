@@ -31,7 +31,16 @@ static int catenary_at(const ctn_model *m, const ctn_solution *s, size_t k, size
 {
     if (!valid(m, s, k, i) || ctn_element_family(m->elements.v[i].type) != &ctn_catenary2_ops) return CTN_ERR_INVALID;
     ctn_catenary2_ops.setup(m, i, p);
-    ctn_catenary2_ops.temperature(p, ctn_model_element_temperature(m, k, i));   /* the step's length */
+    double dT = ctn_model_element_temperature(m, k, i);                          /* the step's length */
+    if (s->of_case) {                                                           /* or the case's */
+        int tags[CTN_MAX_CASE_TERMS];
+        double f[CTN_MAX_CASE_TERMS];
+        ctn_loadsel sel;
+        if (ctn_model_case_terms(m, s->of_case - 1) > CTN_MAX_CASE_TERMS) return CTN_ERR_INVALID;
+        ctn_model_case_sel(m, s->of_case - 1, &sel, tags, f);
+        dT = ctn_model_sel_element_temperature(m, &sel, i);
+    }
+    ctn_catenary2_ops.temperature(p, dT);
     gather(m, s, k, i, X, u);
     return ctn_catenary_state(p, X, u, c, ex, bar) ? CTN_ERR_NOCONV : CTN_OK;
 }

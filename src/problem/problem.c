@@ -124,6 +124,10 @@ int ctn_problem_create_any(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_opt
         return ctn_error_at(ctx, CTN_ERR_MODEL, m->file, m->tloads.v[0].line,
                             "temperature changes are applied in load steps: method=arclength follows a single load "
                             "pattern (use method=auto or method=newton)");
+    if (m->cases.n && o.method == CTN_METHOD_ARCLENGTH)
+        return ctn_error_at(ctx, CTN_ERR_MODEL, m->file, m->cases.v[0].line,
+                            "load cases are solved by load steps: method=arclength follows a single load pattern "
+                            "(use method=auto or method=newton)");
     double t0 = ctn_clock();
     ctn_problem *p = ctn_calloc(ctx, 1, sizeof *p);
     if (!p) return CTN_ERR_NOMEM;
@@ -173,20 +177,26 @@ void ctn_problem_set_t(ctn_problem *p, double t, double *d)
 
 void ctn_problem_step_loads(ctn_problem *p, size_t k)
 {
-    ctn_model_step_loads_ex(p->m, k, 1, p->v3, NULL);
+    ctn_loadsel sel = ctn_loadsel_step(k);
+    ctn_problem_sel_loads(p, &sel);
+}
+
+void ctn_problem_sel_loads(ctn_problem *p, const ctn_loadsel *sel)
+{
+    ctn_model_sel_loads(p->m, sel, 1, p->v3, NULL);
     ctn_dofmap_from3(&p->a->map, p->v3, p->f1);
-    ctn_model_step_loads_ex(p->m, k, 1, NULL, p->v3);
-    ctn_follow_step(p, k);
+    ctn_model_sel_loads(p->m, sel, 1, NULL, p->v3);
+    ctn_follow_sel(p, sel);
     ctn_dofmap_from3(&p->a->map, p->v3, p->p1);
     if (p->a->map.rot) {                          /* moments and prescribed rotations */
-        ctn_model_step_moments(p->m, k, p->v3, NULL);
+        ctn_model_sel_moments(p->m, sel, p->v3, NULL);
         ctn_dofmap_rot_from3(&p->a->map, p->v3, p->f1);
-        ctn_model_step_moments(p->m, k, NULL, p->v3);
+        ctn_model_sel_moments(p->m, sel, NULL, p->v3);
         ctn_dofmap_rot_from3(&p->a->map, p->v3, p->p1);
     }
     if (!p->dT) return;
     memcpy(p->dT0, p->dT1, p->a->ne * sizeof(double));
-    ctn_model_step_temperatures(p->m, k, p->dT1);
+    ctn_model_sel_temperatures(p->m, sel, p->dT1);
 }
 
 int ctn_problem_residual(ctn_problem *p, const double *d, int with_K, double *rnorm, double *pi,

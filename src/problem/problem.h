@@ -97,6 +97,8 @@ int ctn_problem_create_any(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_opt
 void ctn_problem_set_t(ctn_problem *p, double t, double *d);
 /* Load the totals of model step k into f1 / p1 (state layout). */
 void ctn_problem_step_loads(ctn_problem *p, size_t k);
+/* The same for the loads of a selection (a case or a combination). */
+void ctn_problem_sel_loads(ctn_problem *p, const ctn_loadsel *sel);
 /* f_int (and K if with_K) at d; r = f_ext - f_int on free DOFs, |r| in *rnorm; if pi is
  * not NULL, the total potential (stored energy - f_ext . d over free DOFs) from the same
  * pass. *valid = 0 if an element collapsed or a result is not finite (an outcome). */
@@ -138,6 +140,14 @@ int ctn_problem_record(ctn_problem *p, ctn_solution *s, double rnorm, double dno
 int ctn_problem_record_ex(ctn_problem *p, ctn_solution *s, double rnorm, double dnorm, int rejected,
                           double shift);
 
+/* One load step of the solution (its index k) from d to the loads in f1/p1/dT1, in
+ * `sub` increments (0: the options' steps), with cut-back (drive.c). dstep: state
+ * scratch. */
+int ctn_problem_run_step(ctn_problem *p, ctn_solution *s, size_t k, int sub, double *d, double *dstep);
+/* Solve every load case and combination of the model from its installed state (a
+ * converged step of s), each non-linearly; the results go into s (cases.c). */
+int ctn_problem_cases(ctn_problem *p, ctn_solution *s);
+
 /* Newton corrector at fixed t from d (modified in place). On return *reason is
  * CTN_CONVERGED or why it stopped; the state d is the last accepted iterate. */
 int ctn_newton_correct(ctn_problem *p, ctn_solution *s, double *d, ctn_reason *reason);
@@ -171,6 +181,8 @@ int ctn_follow_create(ctn_problem *p);
 void ctn_follow_destroy(ctn_follow **f);
 void ctn_follow_reset(ctn_problem *p);
 void ctn_follow_step(ctn_problem *p, size_t k);
+/* The same for the loads of a selection (a case or a combination). */
+void ctn_follow_sel(ctn_problem *p, const ctn_loadsel *sel);
 void ctn_follow_set_t(ctn_problem *p, double t);
 const double *ctn_follow_forces(ctn_problem *p, const double *d);
 /* The loads of the last ctn_follow_forces (state layout). */

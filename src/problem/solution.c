@@ -66,6 +66,8 @@ void ctn_solution_destroy(ctn_solution **s)
     if (!s || !*s) return;
     for (size_t k = 0; k < (*s)->nsteps; k++) free_step(&(*s)->steps[k]);
     ctn_modes_destroy(&(*s)->modes);
+    for (size_t k = 0; k < (*s)->ncases; k++) ctn_solution_destroy(&(*s)->cases[k]);
+    ctn_free((*s)->cases);
     ctn_free((*s)->steps);
     ctn_free((*s)->rhist);
     ctn_free((*s)->dhist);
@@ -148,6 +150,13 @@ int ctn_solution_stability(const ctn_solution *s, ctn_stability *out)
     if (!s || !out || s->sum.stable < 0) return CTN_ERR_INVALID;
     *out = s->stability;
     return CTN_OK;
+}
+
+size_t ctn_solution_case_count(const ctn_solution *s) { return s ? s->ncases : 0; }
+
+const ctn_solution *ctn_solution_case(const ctn_solution *s, size_t i)
+{
+    return s && i < s->ncases ? s->cases[i] : NULL;
 }
 
 int ctn_solution_threads(const ctn_solution *s) { return s ? s->threads : 1; }

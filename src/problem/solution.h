@@ -35,6 +35,11 @@ struct ctn_solution {
     size_t nr, nd, capr, capd;
     ctn_modes *modes;          /* the last modal analysis, NULL if none */
     int rot;                   /* some node has rotations: the steps keep rot and moment */
+    struct ctn_solution **cases; /* the load cases then combinations of the model, one
+                                  solution of one step each (cases.c); NULL if none */
+    size_t ncases;
+    size_t of_case;            /* a case's solution: 1 + the case's index (its loads and
+                                  temperatures are the case's), else 0 */
     int threads;               /* the threads= option of the solve that made it (0 auto,
                                   1, n): the writers ask the thread policy with it */
 };

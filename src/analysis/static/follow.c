@@ -1,4 +1,6 @@
-/* Loads that follow the geometry: `hload` on the deformed horizontal projection.
+/* Loads that follow the geometry: `hload` on the deformed horizontal projection, and
+ * `wind` drag on the chord projected on the plane normal to the wind (the same load with
+ * the wind's direction in place of gravity's: each segment has its own direction g).
  *
  * A segment a-b of an element under q per unit horizontal length carries
  * P = q |h| / 2 at each of its nodes along g (unit gravity), h = the current chord
@@ -21,42 +23,81 @@
 struct ctn_follow {
     size_t n;                 /* segments */
     int *a, *b, *elem;        /* per segment: its nodes, its element (model index) */
+    int *src;                 /* per segment: -1 for the hloads, else its wind's index in
+                                 m->lloads */
+    double *dir;              /* 3 per segment: the unit direction of its load */
     double *qa, *qb, *qt;     /* per segment: q at the start and end of the step, at t */
     double *hhat;             /* 3 per segment: h / |h| at the last evaluation */
-    double g[3];              /* unit gravity */
     double *fh;               /* state: the loads at the last evaluation */
     ctn_gmres gm;
     double *work;
     double *tmp;              /* ndof */
 };
 
-/* Total q of the deformed-projection hloads on element e at the end of model step k. */
-static double element_q(const ctn_model *m, size_t e, size_t k)
+/* Total q of the deformed-projection hloads of a selection on element e. */
+static double element_q_sel(const ctn_model *m, size_t e, const ctn_loadsel *sel)
 {
     double q = 0;
-    int step = (int)k + 1;
     for (size_t h = 0; h < m->hloads.n; h++) {
         const ctn_hload *hl = &m->hloads.v[h];
-        if (!hl->reference && hl->step <= step && ctn_hload_on(m, hl, e)) q += hl->q;
+        double w = ctn_loadsel_weight(sel, hl->step);
+        if (!hl->reference && w != 0 && ctn_hload_on(m, hl, e)) q += w * hl->q;
     }
     return q;
 }
 
-/* Segments under a deformed-projection hload in some step (count, or fill when f). */
-static size_t scan(const ctn_model *m, struct ctn_follow *f)
+/* q of a segment in a selection: its hloads', or its wind's. */
+static double segment_q(const ctn_model *m, const struct ctn_follow *f, size_t s, const ctn_loadsel *sel)
 {
-    size_t n = 0, last = ctn_model_step_count(m) - 1;
-    for (size_t e = 0; e < m->elements.n; e++) {
+    if (f->src[s] < 0) return element_q_sel(m, (size_t)f->elem[s], sel);
+    const ctn_lload *l = &m->lloads.v[f->src[s]];
+    double w = ctn_loadsel_weight(sel, l->step);
+    return w == 0 ? 0 : w * sqrt(l->q[0] * l->q[0] + l->q[1] * l->q[1] + l->q[2] * l->q[2]);
+}
+
+/* The same at the end of model step k, or (k >= the step count) in case k - steps alone. */
+static double element_q(const ctn_model *m, size_t e, size_t k)
+{
+    size_t ns = ctn_model_step_count(m);
+    int tag = CTN_CASE_TAG0 + (int)(k - ns);
+    double one = 1.0;
+    ctn_loadsel sel = k < ns ? ctn_loadsel_step(k) : (ctn_loadsel){ -1, 1, &tag, &one };
+    return element_q_sel(m, e, &sel);
+}
+
+/* One segment a-b of element e under source src along dir (fill when f). */
+static void put_segment(struct ctn_follow *f, size_t n, int a, int b, size_t e, int src, const double *dir)
+{
+    if (!f) return;
+    f->a[n] = a;
+    f->b[n] = b;
+    f->elem[n] = (int)e;
+    f->src[n] = src;
+    for (int k = 0; k < 3; k++) f->dir[3 * n + (size_t)k] = dir[k];
+}
+
+/* Segments under a deformed-projection hload in some step or case, then under each wind
+ * (count, or fill when f); g: unit gravity, NULL when there is none. */
+static size_t scan(const ctn_model *m, struct ctn_follow *f, const double *g)
+{
+    size_t n = 0, last = ctn_model_step_count(m) - 1 + m->cases.n;
+    for (size_t e = 0; e < m->elements.n && g && m->hloads.n; e++) {
         int hit = 0;
         for (size_t k = 0; k <= last && !hit; k++) hit = element_q(m, e, k) != 0;
         if (!hit) continue;
         const int *nd = ctn_elem_nodes(m, e);
-        for (int s = 0; s + 1 < m->elements.v[e].nnodes; s++, n++)
-            if (f) {
-                f->a[n] = nd[s];
-                f->b[n] = nd[s + 1];
-                f->elem[n] = (int)e;
-            }
+        for (int s = 0; s + 1 < m->elements.v[e].nnodes; s++, n++) put_segment(f, n, nd[s], nd[s + 1], e, -1, g);
+    }
+    for (size_t j = 0; j < m->lloads.n; j++) {
+        const ctn_lload *l = &m->lloads.v[j];
+        double qn = sqrt(l->q[0] * l->q[0] + l->q[1] * l->q[1] + l->q[2] * l->q[2]);
+        if (!l->drag || !(qn > 0)) continue;
+        double u[3] = { l->q[0] / qn, l->q[1] / qn, l->q[2] / qn };
+        for (size_t e = 0; e < m->elements.n; e++) {
+            if (!ctn_lload_on(m, l, e)) continue;
+            const int *nd = ctn_elem_nodes(m, e);
+            for (int s = 0; s + 1 < m->elements.v[e].nnodes; s++, n++) put_segment(f, n, nd[s], nd[s + 1], e, (int)j, u);
+        }
     }
     return n;
 }
@@ -68,6 +109,8 @@ static int alloc_follow(ctn_problem *p, struct ctn_follow *f)
     f->a = ctn_malloc(ctx, n, sizeof(int));
     f->b = ctn_malloc(ctx, n, sizeof(int));
     f->elem = ctn_malloc(ctx, n, sizeof(int));
+    f->src = ctn_malloc(ctx, n, sizeof(int));
+    f->dir = ctn_malloc(ctx, 3 * n, sizeof(double));
     f->qa = ctn_calloc(ctx, n, sizeof(double));
     f->qb = ctn_calloc(ctx, n, sizeof(double));
     f->qt = ctn_calloc(ctx, n, sizeof(double));
@@ -75,7 +118,7 @@ static int alloc_follow(ctn_problem *p, struct ctn_follow *f)
     f->fh = ctn_calloc(ctx, p->ns, sizeof(double));
     f->tmp = ctn_calloc(ctx, nd, sizeof(double));
     f->work = ctn_calloc(ctx, ctn_gmres_work_size(nd, CTN_GMRES_M), sizeof(double));
-    return f->a && f->b && f->elem && f->qa && f->qb && f->qt && f->hhat && f->fh && f->tmp && f->work
+    return f->a && f->b && f->elem && f->src && f->dir && f->qa && f->qb && f->qt && f->hhat && f->fh && f->tmp && f->work
                ? CTN_OK : CTN_ERR_NOMEM;
 }
 
@@ -83,7 +126,7 @@ void ctn_follow_destroy(ctn_follow **pf)
 {
     if (!pf || !*pf) return;
     struct ctn_follow *f = *pf;
-    void *v[] = { f->a, f->b, f->elem, f->qa, f->qb, f->qt, f->hhat, f->fh, f->tmp, f->work };
+    void *v[] = { f->a, f->b, f->elem, f->src, f->dir, f->qa, f->qb, f->qt, f->hhat, f->fh, f->tmp, f->work };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
     ctn_free(f);
     *pf = NULL;
@@ -112,8 +155,8 @@ static int apply(void *data, const double *x, double *y)
         double c = 0.5 * f->qt[s] * dx;
         for (int k = 0; k < 3; k++) {
             int qa = eq[sa + (size_t)k], qb = eq[sb + (size_t)k];
-            if (qa >= 0) y[qa] -= c * f->g[k];
-            if (qb >= 0) y[qb] -= c * f->g[k];
+            if (qa >= 0) y[qa] -= c * f->dir[3 * s + (size_t)k];
+            if (qb >= 0) y[qb] -= c * f->dir[3 * s + (size_t)k];
         }
     }
     return CTN_OK;
@@ -133,17 +176,18 @@ static int precond(void *data, const double *x, double *y)
 int ctn_follow_create(ctn_problem *p)
 {
     const ctn_model *m = p->m;
-    size_t n = m->hloads.n ? scan(m, NULL) : 0;
     double gn = sqrt(m->gravity[0] * m->gravity[0] + m->gravity[1] * m->gravity[1] + m->gravity[2] * m->gravity[2]);
-    if (!n || !(gn > 0)) return CTN_OK;
+    double g[3] = { m->gravity[0] / gn, m->gravity[1] / gn, m->gravity[2] / gn };
+    const double *gp = gn > 0 ? g : NULL;
+    size_t n = m->hloads.n || m->lloads.n ? scan(m, NULL, gp) : 0;
+    if (!n) return CTN_OK;
     struct ctn_follow *f = ctn_calloc(p->ctx, 1, sizeof *f);
     if (!f) return CTN_ERR_NOMEM;
     p->fl = f;
     f->n = n;
     int rc = alloc_follow(p, f);
     if (rc) return rc;
-    scan(m, f);
-    for (int k = 0; k < 3; k++) f->g[k] = m->gravity[k] / gn;
+    scan(m, f, gp);
     ctn_gmres_init(&f->gm, p->ndof, CTN_GMRES_M, f->work);
     f->gm.apply = apply;
     f->gm.precond = precond;
@@ -154,11 +198,17 @@ int ctn_follow_create(ctn_problem *p)
 
 void ctn_follow_step(ctn_problem *p, size_t k)
 {
+    ctn_loadsel sel = ctn_loadsel_step(k);
+    ctn_follow_sel(p, &sel);
+}
+
+void ctn_follow_sel(ctn_problem *p, const ctn_loadsel *sel)
+{
     struct ctn_follow *f = p->fl;
     if (!f) return;
     for (size_t s = 0; s < f->n; s++) {
         f->qa[s] = f->qb[s];
-        f->qb[s] = element_q(p->m, (size_t)f->elem[s], k);
+        f->qb[s] = segment_q(p->m, f, s, sel);
     }
 }
 
@@ -185,18 +235,18 @@ const double *ctn_follow_forces(ctn_problem *p, const double *d)
         double h[3], along = 0, hn = 0;
         for (int k = 0; k < 3; k++) {
             h[k] = (Xb[k] - Xa[k]) + (d[sb + (size_t)k] - d[sa + (size_t)k]);
-            along += h[k] * f->g[k];
+            along += h[k] * f->dir[3 * s + (size_t)k];
         }
         for (int k = 0; k < 3; k++) {
-            h[k] -= along * f->g[k];
+            h[k] -= along * f->dir[3 * s + (size_t)k];
             hn += h[k] * h[k];
         }
         hn = sqrt(hn);
         double P = 0.5 * f->qt[s] * hn;
         for (int k = 0; k < 3; k++) {
             f->hhat[3 * s + (size_t)k] = hn > 0 ? h[k] / hn : 0.0;
-            f->fh[sa + (size_t)k] += P * f->g[k];
-            f->fh[sb + (size_t)k] += P * f->g[k];
+            f->fh[sa + (size_t)k] += P * f->dir[3 * s + (size_t)k];
+            f->fh[sb + (size_t)k] += P * f->dir[3 * s + (size_t)k];
         }
     }
     return f->fh;

@@ -8,11 +8,9 @@
 #include <math.h>
 #include <string.h>
 
-/* One load step in increments, with cut-back. dstep: state scratch. */
-static int run_step(ctn_problem *p, ctn_solution *s, size_t k, double *d, double *dstep)
+int ctn_problem_run_step(ctn_problem *p, ctn_solution *s, size_t k, int sub, double *d, double *dstep)
 {
     ctn_step_state *st = &s->steps[k];
-    int sub = ctn_model_step_substeps(p->m, k);
     double dt0 = 1.0 / (sub > 0 ? sub : p->opt.steps), t = 0, dt = dt0;
     int cuts = 0, it0 = s->sum.iterations, rc = CTN_OK;
     ctn_reason why = CTN_CONVERGED;
@@ -73,7 +71,7 @@ static int run_steps(ctn_problem *p, ctn_solution *s, double *d)
         memcpy(p->p0, p->p1, p->ns * sizeof(double));
         ctn_problem_step_loads(p, k);
         double target = step_load_norm(p);
-        if ((rc = run_step(p, s, idx, d, dstep))) break;
+        if ((rc = ctn_problem_run_step(p, s, idx, ctn_model_step_substeps(p->m, k), d, dstep))) break;
         s->sum.step = k;
         s->sum.fext_norm = s->steps[idx].reason == CTN_CONVERGED || !(target > 0) ? ctn_problem_fref(p) : target;
         s->sum.reason = s->steps[idx].reason;
@@ -205,6 +203,7 @@ static int static_solve(ctn_problem *p, ctn_solution **out)
         if (!rc && s->sum.reason == CTN_CONVERGED) rc = check_stability(p, s);
         if (s->sum.reason == CTN_CONVERGED) s->sum.fail_element = 0;
         if (!rc && s->sum.reason == CTN_CONVERGED && p->opt.modal.count > 0) rc = ctn_problem_modes(p, s, &p->opt.modal);
+        if (!rc && s->sum.reason == CTN_CONVERGED && !p->max_steps && ctn_model_case_count(p->m)) rc = ctn_problem_cases(p, s);
         if (!s->sum.fext_norm) s->sum.fext_norm = ctn_problem_fref(p);
         s->sum.ordering = p->ls ? ctn_ordering_of_la(ctn_linsolve_ordering(p->ls)) : CTN_ORDER_NATURAL;
         s->sum.ndof = p->ndof;

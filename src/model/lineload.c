@@ -1,0 +1,152 @@
+/* Loads per unit unstressed length in a fixed direction (`lineload`): wind, ice, any
+ * distributed load of a cable element, lumped consistently: an element of unstressed
+ * length l0 under q carries q l0, half at each end (exact for a straight two-node
+ * element with linear shape functions). Other families are refused where the lumping
+ * would not be exact: a catenary element's curve, a pulley's sliding segments. */
+#include "element/element.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static int is_cable(const ctn_model *m, size_t e)
+{
+    return !strcmp(ctn_element_family(m->elements.v[e].type)->name, "cable");
+}
+
+int ctn_lload_on(const ctn_model *m, const ctn_lload *l, size_t e)
+{
+    const ctn_element *el = &m->elements.v[e];
+    if (el->section < 0) return 0;                   /* springs: sets pass over them */
+    switch (l->kind) {
+    case CTN_TARGET_ELEMENT: return (int)e == l->target;
+    case CTN_TARGET_GROUP: return el->group == l->target;
+    default: return 1;
+    }
+}
+
+/* TARGET: all, an element id (a cable element) or a defined group. */
+static int resolve(ctn_model *m, const char *target, ctn_lload *l)
+{
+    const char *what = l->drag ? "wind" : "lineload";
+    if (!strcmp(target, "all")) {
+        l->kind = CTN_TARGET_ALL;
+        return CTN_OK;
+    }
+    if (isdigit((unsigned char)*target) || *target == '-' || *target == '+') {
+        char *end;
+        errno = 0;
+        long id = strtol(target, &end, 10);
+        int e = *end || errno || id <= 0 || id > 0x7fffffff ? -1 : ctn_idmap_get(&m->element_ids, (int)id);
+        if (e < 0) return ctn_model_error(m, CTN_ERR_MODEL, "%s: undefined element '%.40s'", what, target);
+        if (!is_cable(m, (size_t)e))
+            return ctn_model_error(m, CTN_ERR_MODEL, "%s: element %ld is a %s; a load per length is lumped exactly "
+                                   "on cable elements only (mesh the span with cable)", what, id,
+                                   ctn_element_family(m->elements.v[e].type)->name);
+        l->kind = CTN_TARGET_ELEMENT;
+        l->target = e;
+        return CTN_OK;
+    }
+    int g = ctn_model_find_group(m, target);
+    if (g < 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "%s: '%.63s' is not 'all', an element id or a defined group", what,
+                               target);
+    l->kind = CTN_TARGET_GROUP;
+    l->target = g;
+    return CTN_OK;
+}
+
+int ctn_model_add_lineload(ctn_model *m, const char *target, const double q[3])
+{
+    if (!m || !target || !q) return CTN_ERR_INVALID;
+    for (int k = 0; k < 3; k++)
+        if (!isfinite(q[k])) return ctn_model_error(m, CTN_ERR_MODEL, "lineload: q must be finite");
+    ctn_lload l = { CTN_TARGET_ALL, -1, { q[0], q[1], q[2] }, ctn_model_load_tag(m), m->line, 0 };
+    int rc = resolve(m, target, &l);
+    if (!rc) rc = CTN_ARRAY_RESERVE(m->ctx, m->lloads, 1);
+    if (rc) return rc;
+    m->lloads.v[m->lloads.n++] = l;
+    return CTN_OK;
+}
+
+int ctn_model_add_wind(ctn_model *m, const char *target, const double dir[3], double q)
+{
+    if (!m || !target || !dir) return CTN_ERR_INVALID;
+    double n = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+    if (!isfinite(q) || !(n > 0) || !isfinite(n))
+        return ctn_model_error(m, CTN_ERR_MODEL, "wind: the direction must be a finite non-zero vector and the load finite");
+    ctn_lload l = { CTN_TARGET_ALL, -1, { q * dir[0] / n, q * dir[1] / n, q * dir[2] / n }, ctn_model_load_tag(m),
+                    m->line, 1 };
+    int rc = resolve(m, target, &l);
+    if (!rc) rc = CTN_ARRAY_RESERVE(m->ctx, m->lloads, 1);
+    if (rc) return rc;
+    m->lloads.v[m->lloads.n++] = l;
+    return CTN_OK;
+}
+
+/* The drag of wind l on the chord a-b at the reference geometry, added at both ends. */
+static void add_reference_drag(const ctn_model *m, const ctn_lload *l, double w, const int *nd, double *f)
+{
+    double qn = sqrt(l->q[0] * l->q[0] + l->q[1] * l->q[1] + l->q[2] * l->q[2]), u[3], h[3], along = 0, hn = 0;
+    if (!(qn > 0)) return;
+    for (int k = 0; k < 3; k++) {
+        u[k] = l->q[k] / qn;
+        h[k] = m->nodes.v[nd[1]].X[k] - m->nodes.v[nd[0]].X[k];
+        along += h[k] * u[k];
+    }
+    for (int k = 0; k < 3; k++) hn += (h[k] - along * u[k]) * (h[k] - along * u[k]);
+    double P = 0.5 * w * qn * sqrt(hn);
+    for (int k = 0; k < 3; k++) {
+        f[3 * (size_t)nd[0] + (size_t)k] += P * u[k];
+        f[3 * (size_t)nd[1] + (size_t)k] += P * u[k];
+    }
+}
+
+void ctn_model_add_lineloads(const ctn_model *m, const ctn_loadsel *sel, int dead_only, double *f)
+{
+    for (size_t j = 0; j < m->lloads.n; j++) {
+        const ctn_lload *l = &m->lloads.v[j];
+        double w = ctn_loadsel_weight(sel, l->step);
+        if (w == 0 || (l->drag && dead_only)) continue;
+        for (size_t e = 0; e < m->elements.n; e++) {
+            if (!ctn_lload_on(m, l, e)) continue;
+            const int *nd = ctn_elem_nodes(m, e);
+            if (l->drag) {
+                add_reference_drag(m, l, w, nd, f);
+                continue;
+            }
+            double half = 0.5 * w * m->elements.v[e].l0;          /* q l0 / 2 at each end */
+            for (int k = 0; k < 3; k++) {
+                f[3 * (size_t)nd[0] + (size_t)k] += half * l->q[k];
+                f[3 * (size_t)nd[1] + (size_t)k] += half * l->q[k];
+            }
+        }
+    }
+}
+
+int ctn_model_check_lineloads(const ctn_model *m)
+{
+    for (size_t j = 0; j < m->lloads.n; j++) {
+        const ctn_lload *l = &m->lloads.v[j];
+        int hit = 0;
+        for (size_t e = 0; e < m->elements.n; e++) {
+            if (!ctn_lload_on(m, l, e)) continue;
+            if (!is_cable(m, e))
+                return ctn_error_at(m->ctx, CTN_ERR_MODEL, m->file, l->line,
+                                    "%s: element %d is a %s; a load per length is lumped exactly on cable elements "
+                                    "only (mesh the span with cable, or leave it out of the target)",
+                                    l->drag ? "wind" : "lineload", m->elements.v[e].id,
+                                    ctn_element_family(m->elements.v[e].type)->name);
+            hit = 1;
+        }
+        if (!hit && l->kind == CTN_TARGET_GROUP)
+            return ctn_error_at(m->ctx, CTN_ERR_MODEL, m->file, l->line, "%s: group '%s' has no cable element",
+                                l->drag ? "wind" : "lineload", m->groups.v[l->target].name);
+        if (!hit)
+            return ctn_error_at(m->ctx, CTN_ERR_MODEL, m->file, l->line, "%s: no cable element to load",
+                                l->drag ? "wind" : "lineload");
+    }
+    return CTN_OK;
+}
