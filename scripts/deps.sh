@@ -15,10 +15,24 @@ missing=""
 for p in $pkgs; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
 done
-[ -z "$missing" ] && exit 0
-echo "deps: installing$missing" >&2
 SUDO=""
 [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+# Debian's python3 refuses `pip install` outside a virtual environment (PEP 668: the
+# EXTERNALLY-MANAGED marker); catena's package installs from the tree with `python3 -m
+# pip install --no-build-isolation --no-deps ./python` (docs/python.md), so pip is told
+# once, in /etc/pip.conf, to allow it on this development machine.
+allow_pip() {
+  ls /usr/lib/python3*/EXTERNALLY-MANAGED >/dev/null 2>&1 || return 0
+  grep -qs '^break-system-packages' /etc/pip.conf && return 0
+  echo "deps: /etc/pip.conf: break-system-packages = true (PEP 668; docs/python.md)" >&2
+  if grep -qs '^\[global\]' /etc/pip.conf; then
+    $SUDO sed -i '/^\[global\]/a break-system-packages = true' /etc/pip.conf
+  else
+    printf '[global]\nbreak-system-packages = true\n' | $SUDO tee -a /etc/pip.conf >/dev/null
+  fi
+}
+if [ -z "$missing" ]; then allow_pip; exit 0; fi
+echo "deps: installing$missing" >&2
 # Installing libopenblas0-openmp would switch Debian's libblas.so.3 and liblapack.so.3
 # alternatives for every program on the machine; catena links OpenBLAS by its own path
 # (CMakeLists.txt), so what the alternatives pointed to before is put back.
@@ -37,3 +51,4 @@ for a in $alts; do
     $SUDO update-alternatives --set "$a" "${before[$a]}" >/dev/null
   fi
 done
+allow_pip

@@ -1,13 +1,15 @@
 /* The streaming result writers (src/io: fmt, sink, jsonw, json, csv, results, atomic).
  *
- *   - numbers: ctn_fmt_g17 is printf's "%.17g" and ctn_fmt_cjson is cJSON's
- *     print_number, byte for byte, on special values and on random doubles of every
- *     kind (random bits, integers, short decimals, powers of two and their neighbours);
+ *   - numbers: ctn_fmt_g17 is printf's "%.17g" and ctn_fmt_json is "%1.15g" when that
+ *     reads back to the same double, else "%1.17g" (cJSON's layout, its test exact), byte
+ *     for byte, on special values and on random doubles of every kind (random bits,
+ *     integers, short decimals, powers of two and their neighbours), and every number
+ *     reads back to its double;
  *   - JSON: for several models (the paper's cable, load steps with settlement, tension-only
  *     members going slack, arc-length, a diverged unit-less solve, step names that need
  *     escaping) ctn_result_json, ctn_write_json and result.json are the text cJSON_Print /
- *     cJSON_PrintUnformatted give for a cJSON tree built here from the public accessors,
- *     and that text parses; nodes.csv and elements.csv are what fprintf gives;
+ *     cJSON_PrintUnformatted give for a cJSON tree built here from the public accessors
+ *     (its numbers as raw text of the exact rule above), and that text parses; nodes.csv and elements.csv are what fprintf gives;
  *   - failures: a sink that fails mid-way, a full device, a file size limit, NaN in the
  *     result, and every allocation on the writer path failing in turn: the right status,
  *     nothing committed, no temporary left, no leak (ASan build). */
@@ -67,14 +69,12 @@ static double sample(int k)
     }
 }
 
-/* cJSON's own text for v. */
-static void cjson_number(double v, char *out, size_t size)
+/* The JSON text of v by printf and sscanf: 15 digits when they read back to v. */
+static void json_number(double v, char *out, size_t size)
 {
-    cJSON *n = cJSON_CreateNumber(v);
-    char *s = n ? cJSON_PrintUnformatted(n) : NULL;
-    snprintf(out, size, "%s", s ? s : "(null)");
-    cJSON_free(s);
-    cJSON_Delete(n);
+    double back = 0;
+    snprintf(out, size, "%1.15g", v);
+    if (sscanf(out, "%lg", &back) != 1 || back != v) snprintf(out, size, "%1.17g", v);
 }
 
 static int check_number(double v)
@@ -84,9 +84,11 @@ static int check_number(double v)
     size_t n = ctn_fmt_g17(a, v);
     snprintf(b, sizeof b, "%.17g", v);
     if (strcmp(a, b) || n != strlen(b)) { bad = 1; CHECK_MSG(0, "%a: g17 '%s', printf '%s'", v, a, b); }
-    n = ctn_fmt_cjson(a, v);
-    cjson_number(v, b, sizeof b);
-    if (strcmp(a, b) || n != strlen(b)) { bad = 1; CHECK_MSG(0, "%a: '%s', cJSON '%s'", v, a, b); }
+    n = ctn_fmt_json(a, v);
+    json_number(v, b, sizeof b);
+    if (strcmp(a, b) || n != strlen(b)) { bad = 1; CHECK_MSG(0, "%a: '%s', printf '%s'", v, a, b); }
+    double back = 0;
+    if (sscanf(a, "%lg", &back) != 1 || back != v) { bad = 1; CHECK_MSG(0, "%a: '%s' reads back %a", v, a, back); }
     return bad;
 }
 
@@ -272,7 +274,36 @@ static void ref_summary(cJSON *root, const ctn_model *m, const ctn_solution *s, 
 
 /* The document as the library built it with cJSON before the writers streamed it;
  * *finite = 0 if a number is not finite. */
+/* Every number of the tree as raw text of the exact rule (cJSON's own test of 15 digits
+ * is within DBL_EPSILON, not exact). */
+static void exact_numbers(cJSON *node)
+{
+    for (cJSON *c = node->child, *next; c; c = next) {
+        next = c->next;
+        if (cJSON_IsNumber(c)) {
+            char buf[64];
+            json_number(c->valuedouble, buf, sizeof buf);
+            cJSON *raw = cJSON_CreateRaw(buf);
+            raw->string = c->string;                  /* the key moves to the raw item */
+            raw->type |= c->type & cJSON_StringIsConst;
+            c->string = NULL;
+            cJSON_ReplaceItemViaPointer(node, c, raw);
+        } else {
+            exact_numbers(c);
+        }
+    }
+}
+
+static cJSON *reference_cjson(const ctn_model *m, const ctn_solution *s, int *finite);
+
 static cJSON *reference(const ctn_model *m, const ctn_solution *s, int *finite)
+{
+    cJSON *root = reference_cjson(m, s, finite);
+    if (root) exact_numbers(root);
+    return root;
+}
+
+static cJSON *reference_cjson(const ctn_model *m, const ctn_solution *s, int *finite)
 {
     size_t n = ctn_solution_step_count(s);
     ctn_step_result st;

@@ -1,4 +1,6 @@
-/* Numbers for the writers: printf's "%.17g" and cJSON's print_number, byte for byte.
+/* Numbers for the writers: printf's "%.17g", and JSON's: cJSON's layout of a number
+ * ("%1.15g", or "%1.17g" when 15 digits are not enough), byte for byte, with its test
+ * made exact: 15 digits only when they read back to the same double.
  *
  * printf spends ~500 ns on a double and cJSON twice that (printf, sscanf, printf); the
  * result files hold millions of numbers. The fast path here gets P = 15 or 17
@@ -287,8 +289,7 @@ static size_t slow(char *out, double v, int cjson)
     if (cjson) {
         double test = 0.0;
         int ok = sscanf(out, "%lg", &test) == 1;
-        double big = fabs(test) > fabs(v) ? fabs(test) : fabs(v);       /* cJSON's compare_double */
-        if (!ok || !(fabs(test - v) <= big * DBL_EPSILON)) k = snprintf(out, CTN_FMT_MAX, "%1.17g", v);
+        if (!ok || test != v) k = snprintf(out, CTN_FMT_MAX, "%1.17g", v);   /* exact only */
     }
     if (c) {
         uselocale(old);
@@ -318,33 +319,33 @@ size_t ctn_fmt_g17(char *out, double v)
     return slow(out, v, 0);
 }
 
-/* cJSON keeps the 15 digits when sscanf reads back test with |test - v| <= max(|test|,
- * |v|) DBL_EPSILON: test = v + k ulp, k = t rounded, and within v's binade that holds
- * for |k| <= 1. 1: keep 15 digits, 0: print 17, -1: undecided (t next to 1.5, or the
- * spacing of the doubles changes between v and test). */
-static int cjson_keeps_15(double t, uint64_t m)
+/* The 15 digits are kept when the decimal they make, v + t ulp(v), reads back to v
+ * itself: |t| < 1/2 within v's binade (1/4 below its lower end, where the spacing
+ * halves). 1: keep 15 digits, 0: print 17, -1: undecided (t next to 1/2, or the spacing
+ * of the doubles changes near v). */
+static int json_keeps_15(double t, uint64_t m)
 {
     const double a = fabs(t), eps = 1e-9;
     const uint64_t lo = (uint64_t)1 << 52, hi = (uint64_t)1 << 53;
-    if (a < 0.25 - eps) return 1;                             /* test == v */
+    if (a < 0.25 - eps) return 1;                             /* reads back v anywhere */
     if (t > 0 ? m + 64 >= hi : m < lo + 64) return -1;
-    if (a < 1.5 - eps) return 1;
-    return a > 1.5 + eps ? 0 : -1;
+    if (a < 0.5 - eps) return 1;
+    return a > 0.5 + eps ? 0 : -1;
 }
 
-/* 15 digits when cJSON keeps them, else 17: both from one scaling. */
-size_t ctn_fmt_cjson(char *out, double v)
+/* 15 digits when they read back to v, else 17: both from one scaling. */
+size_t ctn_fmt_json(char *out, double v)
 {
     uint64_t m;
     int q;
     scaled s17, s15;
     decimal d;
     if (v == 0) return zero(out, v);
-    if (!split(v, &m, &q) || q < -1000 || !scale_to(m, q, 17, &s17))   /* q < -1000: cJSON's */
-        return slow(out, v, 1);                  /* max(|test|, |v|) DBL_EPSILON is inexact */
+    if (!split(v, &m, &q) || q < -1000 || !scale_to(m, q, 17, &s17))   /* q < -1000: tiny, */
+        return slow(out, v, 1);                  /* subnormal: printf and sscanf decide */
     s15 = to15(&s17);
     if (!round_to(&s15, 15, m, &d)) return slow(out, v, 1);
-    int keep = cjson_keeps_15(d.t, m);
+    int keep = json_keeps_15(d.t, m);
     if (keep > 0) return format_g(out, v < 0, &d, 15);
     if (keep < 0 || !round_to(&s17, 17, m, &d)) return slow(out, v, 1);
     return format_g(out, v < 0, &d, 17);

@@ -11,9 +11,10 @@
 
 /* printf("%.17g", v): 17 significant digits, round-trips. v finite. */
 size_t ctn_fmt_g17(char *out, double v);
-/* cJSON 1.7.15's print_number (cJSON_Print of a number): "%1.15g" when sscanf gives
- * back a double within DBL_EPSILON (relative) of v, else "%1.17g". v finite. */
-size_t ctn_fmt_cjson(char *out, double v);
+/* A JSON number: "%1.15g" when sscanf gives back v itself, else "%1.17g" (cJSON's
+ * layout, whose own test, within DBL_EPSILON relative, would lose the last bit of some
+ * doubles): every number reads back to the double written. v finite. */
+size_t ctn_fmt_json(char *out, double v);
 /* printf("%lld", v). */
 size_t ctn_fmt_int(char *out, long long v);
 

@@ -83,7 +83,7 @@ void ctn_wbuf_g17(ctn_wbuf *b, double v)
 void ctn_wbuf_cjson(ctn_wbuf *b, double v)
 {
     char *p = ctn_wbuf_room(b, CTN_FMT_MAX);
-    if (p) b->n += ctn_fmt_cjson(p, v);
+    if (p) b->n += ctn_fmt_json(p, v);
 }
 
 void ctn_wbuf_int(ctn_wbuf *b, long long v)
