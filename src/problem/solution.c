@@ -66,6 +66,7 @@ void ctn_solution_destroy(ctn_solution **s)
     if (!s || !*s) return;
     for (size_t k = 0; k < (*s)->nsteps; k++) free_step(&(*s)->steps[k]);
     ctn_modes_destroy(&(*s)->modes);
+    ctn_buckles_destroy(&(*s)->buckling);
     ctn_free((*s)->steps);
     ctn_free((*s)->rhist);
     ctn_free((*s)->dhist);
