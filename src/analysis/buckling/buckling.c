@@ -229,8 +229,7 @@ static void describe(bk_work *w, double lam, double *phi, ctn_buckling_mode *out
     out->node = p->m->nodes.v[inode].id;
 }
 
-/* The checks that need the problem: count and size. */
-static int bk_check(ctn_problem *p, const ctn_buckling_options *o)
+int ctn_buckling_check(ctn_problem *p, const ctn_buckling_options *o)
 {
     char msg[256];
     if (p->ndof > CTN_BUCKLING_MAX_DOFS) {
@@ -270,7 +269,7 @@ int ctn_problem_buckling(ctn_problem *p, ctn_solution *s, const ctn_buckling_opt
     if (opt.count < 1) return ctn_error(p->ctx, CTN_ERR_INVALID, "buckling: count must be >= 1 (got %d)", opt.count);
     if (s->sum.reason != CTN_CONVERGED || !s->nsteps)
         return ctn_error(p->ctx, CTN_ERR_INVALID, "buckling: the solution did not converge");
-    if ((rc = bk_check(p, &opt))) return rc;
+    if ((rc = ctn_buckling_check(p, &opt))) return rc;
     double t0 = ctn_clock();
     bk_work w;
     memset(&w, 0, sizeof w);
