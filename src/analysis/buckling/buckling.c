@@ -34,15 +34,23 @@ typedef struct bk_work {
     double *fs;               /* state: the step's loads */
     double *f, *u;            /* ndof: the loads on the free DOFs, u' = K_T^-1 f */
     double *K0, *K1;          /* nnz: K_T at d, K' */
-    double *A, *B;            /* n x n dense: -K', K_T */
+    double *A, *B;            /* n x n dense: -K' (then U^-T (-K') U^-1 and its reduction
+                                 to tridiagonal form), K_T (then U, K_T = U^T U) */
     double *theta;            /* n: the pencil's eigenvalues, ascending */
+    double *td, *te, *tau;    /* n: the tridiagonal form (diagonal, off-diagonal) and the
+                                 reflectors' factors */
+    double *d2, *e2;          /* n: their copies, which dsterf overwrites */
+    double *work;             /* dstebz's 4 n, dstein's 5 n, dsytrd's and dormtr's 64 n */
+    int *iwork, lwork;        /* 7 n */
     double *w0, *w1;          /* ndof scratch */
 } bk_work;
 
 static void bk_free(bk_work *w)
 {
-    double *v[] = { w->d, w->dh, w->fs, w->f, w->u, w->K0, w->K1, w->A, w->B, w->theta, w->w0, w->w1 };
+    double *v[] = { w->d, w->dh, w->fs, w->f, w->u, w->K0, w->K1, w->A, w->B, w->theta, w->w0, w->w1,
+                    w->td, w->te, w->tau, w->d2, w->e2, w->work };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
+    ctn_free(w->iwork);
 }
 
 static int bk_alloc(bk_work *w)
@@ -61,7 +69,13 @@ static int bk_alloc(bk_work *w)
     w->theta = ctn_malloc(p->ctx, n, sizeof(double));
     w->w0 = ctn_malloc(p->ctx, n, sizeof(double));
     w->w1 = ctn_malloc(p->ctx, n, sizeof(double));
-    return w->d && w->dh && w->fs && w->f && w->u && w->K0 && w->K1 && w->A && w->B && w->theta && w->w0 && w->w1
+    double **t[] = { &w->td, &w->te, &w->tau, &w->d2, &w->e2 };
+    for (size_t i = 0; i < sizeof t / sizeof *t; i++) *t[i] = ctn_calloc(p->ctx, n, sizeof(double));
+    w->lwork = 64 * (int)n;
+    w->work = ctn_malloc(p->ctx, (size_t)w->lwork, sizeof(double));
+    w->iwork = ctn_malloc(p->ctx, 10 * n, sizeof(int));
+    return w->d && w->dh && w->fs && w->f && w->u && w->K0 && w->K1 && w->A && w->B && w->theta && w->w0 &&
+                   w->w1 && w->td && w->te && w->tau && w->d2 && w->e2 && w->work && w->iwork
                ? CTN_OK
                : CTN_ERR_NOMEM;
 }
@@ -148,21 +162,45 @@ static int tangent_rate(bk_work *w, ctn_buckling_summary *sum)
     return CTN_OK;
 }
 
-/* theta ascending by dsygv: -K' phi = theta K_T phi (phi in A's columns). */
+/* theta ascending: -K' phi = theta K_T phi with K_T = U^T U (U in B, path_tangent's):
+ * the standard problem U^-T (-K') U^-1 z = theta z (dsygst), reduced to tridiagonal form
+ * (dsytrd; the reflectors stay in A), its eigenvalues (dsterf). Only the eigenvectors
+ * asked for are computed later (vectors()): the tridiagonal reduction is the cost,
+ * 4/3 n^3, where dsygv's full eigenvector set costs several times more. */
 static int pencil(bk_work *w)
 {
-    ctn_problem *p = w->p;
-    int n = (int)w->n, itype = 1, lwork = -1, info = 0;
-    double q = 0;
-    to_dense(p, w->K1, -1.0, w->A);
-    to_dense(p, w->K0, 1.0, w->B);
-    dsygv_(&itype, "V", "U", &n, w->A, &n, w->B, &n, w->theta, &q, &lwork, &info, 1, 1);
-    lwork = info == 0 && q >= 1 && q < 1e9 ? (int)q : 3 * n;
-    double *work = ctn_malloc(p->ctx, (size_t)lwork, sizeof(double));
-    if (!work) return CTN_ERR_NOMEM;
-    dsygv_(&itype, "V", "U", &n, w->A, &n, w->B, &n, w->theta, work, &lwork, &info, 1, 1);
-    ctn_free(work);
-    return info ? ctn_error(p->ctx, CTN_ERR_LINALG, "buckling: LAPACK dsygv failed (info %d)", info) : CTN_OK;
+    int n = (int)w->n, itype = 1, info = 0;
+    to_dense(w->p, w->K1, -1.0, w->A);
+    dsygst_(&itype, "U", &n, w->A, &n, w->B, &n, &info, 1);
+    if (!info) dsytrd_("U", &n, w->A, &n, w->td, w->te, w->tau, w->work, &w->lwork, &info, 1);
+    if (info) return ctn_error(w->p->ctx, CTN_ERR_LINALG, "buckling: LAPACK's reduction failed (info %d)", info);
+    memcpy(w->theta, w->td, w->n * sizeof(double));
+    memcpy(w->e2, w->te, w->n * sizeof(double));
+    dsterf_(&n, w->theta, w->e2, &info);
+    return info ? ctn_error(w->p->ctx, CTN_ERR_LINALG, "buckling: LAPACK dsterf failed (info %d)", info) : CTN_OK;
+}
+
+/* The eigenvectors of the pencil for the count eigenvalues theta[col[k]] into Z (n x
+ * count): each of the tridiagonal form by bisection and inverse iteration (dstebz,
+ * dstein), then z <- Q z (dormtr), phi = U^-1 z. */
+static int vectors(bk_work *w, const int *col, int count, double *Z)
+{
+    int n = (int)w->n, info = 0, m = 0, nsplit = 0, one = 1, ifail = 0;
+    int *iblock = w->iwork, *isplit = w->iwork + n, *iw = w->iwork + 2 * n;     /* n, n, 5 n */
+    double vl = 0, vu = 0, abstol = 0, th;
+    for (int k = 0; k < count && !info; k++) {
+        int idx = col[k] + 1;
+        dstebz_("I", "B", &n, &vl, &vu, &idx, &idx, &abstol, w->td, w->te, &m, &nsplit, &th, iblock, isplit,
+                w->work, iw, &info, 1, 1);
+        if (!info && m != 1) info = -100;
+        if (!info) dstein_(&n, w->td, w->te, &one, &th, iblock, isplit, Z + (size_t)n * (size_t)k, &n, w->work, iw,
+                           &ifail, &info);
+    }
+    if (!info) dormtr_("L", "U", "N", &n, &count, w->A, &n, w->tau, Z, &n, w->work, &w->lwork, &info, 1, 1, 1);
+    if (info) return ctn_error(w->p->ctx, CTN_ERR_LINALG, "buckling: LAPACK's eigenvectors failed (info %d)", info);
+    double alpha = 1.0;
+    dtrsm_("L", "U", "N", "N", &n, &count, &alpha, w->B, &n, Z, &n, 1, 1, 1, 1);
+    return CTN_OK;
 }
 
 typedef struct bk_pick {
@@ -283,13 +321,22 @@ int ctn_problem_buckling(ctn_problem *p, ctn_solution *s, const ctn_buckling_opt
     sum.ndof = (int)w.n;
     bk_pick *pick = NULL;
     ctn_buckles *res = NULL;
+    int *col = NULL;
+    double *Z = NULL;
     rc = bk_alloc(&w);
     if (!rc && !(pick = ctn_malloc(p->ctx, w.n ? w.n : 1, sizeof *pick))) rc = CTN_ERR_NOMEM;
     if (!rc) rc = bk_solve(&w, s, &sum);
     size_t np = rc ? 0 : factors(&w, pick), count = np < (size_t)opt.count ? np : (size_t)opt.count;
     if (!rc && !(res = ctn_buckles_create(p->ctx, count, p->m->nodes.n))) rc = CTN_ERR_NOMEM;
+    if (!rc && count) {
+        col = ctn_malloc(p->ctx, count, sizeof *col);
+        Z = ctn_malloc(p->ctx, w.n * count, sizeof *Z);
+        if (!col || !Z) rc = CTN_ERR_NOMEM;
+        for (size_t k = 0; !rc && k < count; k++) col[k] = pick[k].col;
+        if (!rc) rc = vectors(&w, col, (int)count, Z);
+    }
     for (size_t k = 0; !rc && k < count; k++)
-        describe(&w, pick[k].lambda, w.A + w.n * (size_t)pick[k].col, &res->mode[k], res->shapes + 3 * p->m->nodes.n * k);
+        describe(&w, pick[k].lambda, Z + w.n * k, &res->mode[k], res->shapes + 3 * p->m->nodes.n * k);
     if (w.d && !rc) {                        /* the tangent at the solution again */
         ctn_asm_eval(p->a, w.d, 0, p->fint, p->Kx, NULL, NULL);
     }
@@ -300,7 +347,10 @@ int ctn_problem_buckling(ctn_problem *p, ctn_solution *s, const ctn_buckling_opt
         ctn_buckles_destroy(&s->buckling);
         s->buckling = res;
     }
+    if (rc) ctn_buckles_destroy(&res);
     ctn_free(pick);
+    ctn_free(col);
+    ctn_free(Z);
     bk_free(&w);
     return rc;
 }
