@@ -11,7 +11,10 @@
  * Families of 6 DOFs per node (rspring) are sampled with random rotations too; their
  * objectivity is that of the translations (the rigid motion moves the nodes, the
  * rotation DOFs stay: rspring is a small-rotation family), and their moments sum to
- * zero with the forces.
+ * zero with the forces. A family of finite rotations (beam: CTN_ELEM_FINITE_ROTATION)
+ * has its nodes' rotations composed with the rigid rotation too, its energy unchanged
+ * and its moments (from the generalized forces of the rotation vectors) rotated and in
+ * balance with its forces.
  * Then the closed-form laws of each family: the cable's two strain measures and
  * tension-only slack, the spring's N = k (l - l0). */
 #include "check.h"
@@ -40,6 +43,37 @@ typedef struct sample {
     double X[3 * MAXN];
 } sample;
 
+/* A beam's material and section "mat", "sec" (random E, G, A, Iy, Iz, J; shear areas
+ * half the time) and a random orientation. */
+static int beam_section(ctn_model *m, unsigned *seed, double orient[3])
+{
+    ctn_material_spec ms;
+    ctn_section_spec ss;
+    ctn_material_spec_init(&ms);
+    ctn_section_spec_init(&ss);
+    ms.name = "mat";
+    ms.E = urand(seed, 1e7, 1e9);
+    ms.G = ms.E * urand(seed, 0.3, 0.5);
+    ss.name = "sec";
+    ss.material = "mat";
+    ss.A = urand(seed, 1e-3, 1e-2);
+    ss.Iy = ss.A * ss.A * urand(seed, 0.05, 2);
+    ss.Iz = ss.A * ss.A * urand(seed, 0.05, 2);
+    ss.J = ss.A * ss.A * urand(seed, 0.05, 1);
+    if (urand(seed, 0, 1) < 0.5) ss.Asy = ss.Asz = 0.8 * ss.A;
+    for (int k = 0; k < 3; k++) orient[k] = urand(seed, -1, 1);
+    return ctn_model_add_material_spec(m, &ms) || ctn_model_add_section_spec(m, &ss);
+}
+
+/* A random displacement of the sample: translations in +-0.5, rotations in +-0.5, or
+ * +-0.3 for a family of finite rotations (its local rotations then stay below 90 deg). */
+static void random_u(const sample *s, unsigned *seed, double span, double *u)
+{
+    int ndn = s->ops->ndof_node;
+    double r = s->ops->flags & CTN_ELEM_FINITE_ROTATION ? 0.3 : span;
+    for (int k = 0; k < s->nn * ndn; k++) u[k] = k % ndn < 3 ? urand(seed, -span, span) : urand(seed, -r, r);
+}
+
 static int make_sample(sample *s, int type, int variant, unsigned *seed)
 {
     const ctn_element_ops *ops = ctn_element_family(type);
@@ -52,10 +86,12 @@ static int make_sample(sample *s, int type, int variant, unsigned *seed)
     for (int k = 0; k < 3 * s->nn; k++) s->X[k] = urand(seed, -10, 10);
     int rc = ctn_ctx_create(&s->ctx) || ctn_model_create(s->ctx, &s->m);
     for (int a = 0; a < s->nn; a++) rc = rc || ctn_model_add_node(s->m, a + 1, s->X + 3 * a, 0);
-    if (!rc && (ops->flags & CTN_ELEM_SECTION))
+    ctn_element_spec_init(&spec);
+    if (!rc && (ops->flags & CTN_ELEM_SECTION) && ops->ndof_node == 6)
+        rc = beam_section(s->m, seed, spec.orient);
+    else if (!rc && (ops->flags & CTN_ELEM_SECTION))
         rc = ctn_model_add_material(s->m, "mat", urand(seed, 1e7, 1e9), (ctn_strain)(variant % 2), variant / 2 % 2) ||
              ctn_model_add_section(s->m, "sec", "mat", urand(seed, 1e-4, 1e-2), 0);
-    ctn_element_spec_init(&spec);
     spec.type = ops->name;
     spec.id = 1;
     spec.nnodes = s->nn;
@@ -118,7 +154,7 @@ static void test_tangent_fd(int type)
         sample s;
         if (make_sample(&s, type, trial % 2, &seed)) return;   /* both strain measures */
         double u[MAXD];
-        for (int k = 0; k < s.nn * s.ops->ndof_node; k++) u[k] = urand(&seed, -0.5, 0.5);
+        random_u(&s, &seed, 0.5, u);
         double err = tangent_error(&s, u);
         CHECK_MSG(err < 1e-6, "%s trial %d: relative tangent error %.3g", s.ops->name, trial, err);
         free_sample(&s);
@@ -134,6 +170,87 @@ static void rotation(const double n[3], double t, double R[9])
                     y * x * C + z * s, c + y * y * C, y * z * C - x * s,
                     z * x * C - y * s, z * y * C + x * s, c + z * z * C };
     for (int i = 0; i < 9; i++) R[i] = r[i];
+}
+
+/* R = exp(psi) (Rodrigues). */
+static void rot_exp(const double psi[3], double R[9])
+{
+    double t = sqrt(psi[0] * psi[0] + psi[1] * psi[1] + psi[2] * psi[2]), n[3] = { 1, 0, 0 };
+    for (int k = 0; t > 0 && k < 3; k++) n[k] = psi[k] / t;
+    rotation(n, t, R);
+}
+
+/* psi = log(R), rotation angle below pi. */
+static void rot_log(const double R[9], double psi[3])
+{
+    double w[3] = { R[7] - R[5], R[2] - R[6], R[3] - R[1] }, s = 0.5 * sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    double t = atan2(s, 0.5 * (R[0] + R[4] + R[8] - 1));
+    for (int k = 0; k < 3; k++) psi[k] = s > 0 ? 0.5 * w[k] * t / s : 0;
+}
+
+/* The moment m at a node of rotation vector psi from its generalized force fp (the
+ * derivative of the energy in psi): fp = J^T m, J = I + (1 - cos t)/t^2 [psi] +
+ * (t - sin t)/t^3 [psi]^2 the left Jacobian of exp. Solved by Cramer's rule. */
+static void spatial_moment(const double psi[3], const double fp[3], double m[3])
+{
+    double t = sqrt(psi[0] * psi[0] + psi[1] * psi[1] + psi[2] * psi[2]);
+    double a = t > 1e-8 ? (1 - cos(t)) / (t * t) : 0.5, b = t > 1e-8 ? (t - sin(t)) / (t * t * t) : 1.0 / 6;
+    double P[9] = { 0, -psi[2], psi[1], psi[2], 0, -psi[0], -psi[1], psi[0], 0 }, J[9], A[9];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            double p2 = 0;
+            for (int k = 0; k < 3; k++) p2 += P[3 * i + k] * P[3 * k + j];
+            J[3 * i + j] = (i == j) + a * P[3 * i + j] + b * p2;
+        }
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) A[3 * i + j] = J[3 * j + i];   /* J^T */
+    double det = A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) + A[2] * (A[3] * A[7] - A[4] * A[6]);
+    for (int c = 0; c < 3; c++) {
+        double B[9];
+        memcpy(B, A, sizeof B);
+        for (int i = 0; i < 3; i++) B[3 * i + c] = fp[i];
+        m[c] = (B[0] * (B[4] * B[8] - B[5] * B[7]) - B[1] * (B[3] * B[8] - B[5] * B[6]) + B[2] * (B[3] * B[7] - B[4] * B[6])) / det;
+    }
+}
+
+/* A family of finite rotations (beam) under the rigid motion: its nodes' rotations are
+ * composed with R too; energy and axial force unchanged, the forces and the moments
+ * (from the generalized forces of the rotation vectors) rotated, the moments in
+ * balance with the forces about the origin. */
+static void check_finite_rotation(const sample *s, const double R[9], double *u, double *ur, const double *f,
+                                  const ctn_elem_state *s0)
+{
+    double fr[MAXD], Q[9], RQ[9], m[MAXN][3], mr[MAXN][3];
+    ctn_elem_state s1;
+    for (int a = 0; a < s->nn; a++) {
+        rot_exp(u + 6 * a + 3, Q);
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                RQ[3 * i + j] = R[3 * i] * Q[j] + R[3 * i + 1] * Q[3 + j] + R[3 * i + 2] * Q[6 + j];
+        rot_log(RQ, ur + 6 * a + 3);
+    }
+    CHECK(s->ops->eval(s->props, 0, s->X, ur, fr, NULL, &s1) == 0);
+    double scale = fabs(s0->N) + fabs(s0->energy) / s0->l + 1e-9 * s->ops->stiffness(s->props);
+    CHECK_CLOSE(s1.N, s0->N, 1e-9, 1e-9 * s->ops->stiffness(s->props));
+    CHECK_CLOSE(s1.energy, s0->energy, 1e-9, 1e-9 * scale * s0->l);
+    double sum[6] = { 0 };
+    for (int a = 0; a < s->nn; a++) {
+        spatial_moment(u + 6 * a + 3, f + 6 * a + 3, m[a]);
+        spatial_moment(ur + 6 * a + 3, fr + 6 * a + 3, mr[a]);
+        for (int i = 0; i < 3; i++) {
+            double rf = 0, rm = 0;
+            for (int j = 0; j < 3; j++) {
+                rf += R[3 * i + j] * f[6 * a + j];
+                rm += R[3 * i + j] * m[a][j];
+            }
+            CHECK_CLOSE(fr[6 * a + i], rf, 1e-7, 1e-8 * scale);
+            CHECK_CLOSE(mr[a][i], rm, 1e-7, 1e-8 * scale * s0->l);
+            int p = (i + 1) % 3, q = (i + 2) % 3;
+            sum[i] += f[6 * a + i];
+            sum[3 + i] += m[a][i] + (s->X[3 * a + p] + u[6 * a + p]) * f[6 * a + q] - (s->X[3 * a + q] + u[6 * a + q]) * f[6 * a + p];
+        }
+    }
+    for (int i = 0; i < 6; i++) CHECK_MSG(fabs(sum[i]) <= 1e-8 * scale * (i < 3 ? 1 : 10 * s0->l + 10), "balance %d: %g", i, sum[i]);
 }
 
 static void test_objectivity(int type)
@@ -157,6 +274,11 @@ static void test_objectivity(int type)
                 for (int j = 0; j < 3; j++) xr += R[3 * i + j] * (s.X[3 * a + j] + u[ndn * a + j]);
                 ur[ndn * a + i] = xr - s.X[3 * a + i];
             }
+        if (s.ops->flags & CTN_ELEM_FINITE_ROTATION) {
+            check_finite_rotation(&s, R, u, ur, f, &s0);
+            free_sample(&s);
+            continue;
+        }
         s.ops->eval(s.props, 0, s.X, ur, fr, NULL, &s1);
         CHECK_CLOSE(s1.N, s0.N, 1e-9, 1e-9 * s.ops->stiffness(s.props));
         for (int a = 0; a < s.nn; a++)
@@ -190,7 +312,7 @@ static void test_energy_gradient(int type)
         double u[MAXD], f[MAXD];
         int nd = s.ops->ndof_node * s.nn;
         ctn_elem_state st, sp, sm;
-        for (int k = 0; k < nd; k++) u[k] = urand(&seed, -0.5, 0.5);
+        random_u(&s, &seed, 0.5, u);
         s.ops->eval(s.props, 0, s.X, u, f, NULL, &st);
         for (int j = 0; j < nd; j++) {
             double up[MAXD], um[MAXD], fd[MAXD], h = 1e-6;
@@ -274,7 +396,7 @@ int main(void)
 {
     CHECK(ctn_element_family_count() >= 2);
     CHECK(ctn_element_family_find("cable") >= 0 && ctn_element_family_find("spring") >= 0);
-    CHECK(ctn_element_family_find("beam") == -1);
+    CHECK(ctn_element_family_find("beam") >= 0);
     for (int t = 0; t < ctn_element_family_count(); t++) {
         test_tangent_fd(t);
         test_objectivity(t);

@@ -5,7 +5,8 @@
  *   step_force K E V atol    (element index E at step K)
  *   load_factor_min V rtol   load_factor_max V rtol  (over the steps)
  *   load_factor V rtol       (where the run ended)
- * and, when converged and not arc-length, the reactions must balance the loads. */
+ * and, when converged and not arc-length, the reactions must balance the loads (to
+ * round-off of the largest force, or reaction moment over the model's extent). */
 #include "catena.h"
 #include "check.h"
 #include "files.h"
@@ -41,9 +42,16 @@ static void check_balance(const char *path, const ctn_model *m, const ctn_soluti
     double *f = calloc(n3, sizeof(double)), sum[3] = { 0, 0, 0 }, scale = 0;
     const double *r = ctn_solution_reactions(s);
     ctn_model_external_forces(m, f);
+    const double *mo = ctn_solution_reaction_moments(s);   /* a model with rotations: */
+    double extent = 0;                                       /* moments over its size */
+    for (size_t i = 0; i < n3; i++) {
+        ctn_node_info ni;
+        ctn_model_node(m, i / 3, &ni);
+        extent = fmax(extent, fabs(ni.X[i % 3]));
+    }
     for (size_t i = 0; i < n3; i++) {
         sum[i % 3] += f[i] + r[i];
-        scale = fmax(scale, fabs(f[i]) + fabs(r[i]));
+        scale = fmax(scale, fabs(f[i]) + fabs(r[i]) + (mo && extent > 0 ? fabs(mo[i]) / extent : 0));
     }
     for (int k = 0; k < 3; k++) CHECK_MSG(fabs(sum[k]) <= 1e-9 * scale, "%s: reactions off balance by %g", path, sum[k]);
     free(f);
@@ -125,7 +133,8 @@ static void visit(const char *path, void *data)
 
 int main(void)
 {
-    const char *dirs[] = { "examples/paper", "examples/robust", "examples/springs", "examples/catenary", "examples/design" };
+    const char *dirs[] = { "examples/paper", "examples/robust", "examples/springs", "examples/catenary", "examples/design",
+                           "examples/beam" };
     int files = each_example(dirs, sizeof dirs / sizeof *dirs, visit, NULL);
     CHECK(files >= 8);
     CHECK_DONE();

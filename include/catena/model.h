@@ -166,12 +166,15 @@ int ctn_model_add_section_spec(ctn_model *m, const ctn_section_spec *s);
  *            one tension along straight segments, tension-only;
  *   "rspring" two nodes, rotational stiffness k > 0 [force length/rad]: the moment
  *            k (theta2 - theta1) between the nodes' rotations (small rotations), no
- *            section; it gives its nodes rotations (6 DOFs, ctn_model_node_dofs). */
+ *            section; it gives its nodes rotations (6 DOFs, ctn_model_node_dofs);
+ *   "beam"   two nodes, section with Iy, Iz, J > 0 and a material with G: a corotational
+ *            3D beam (finite rotations; the rotation DOFs are the node's rotation
+ *            vector), local axes by orient; self-weight w l0 lumped at the nodes. */
 #define CTN_L0_DEFAULT (-1.0)
 typedef struct ctn_element_spec {
     size_t size;          /* sizeof(ctn_element_spec) (set by ctn_element_spec_init) */
     const char *type;     /* family name; NULL or "cable" (default), "spring", "catenary",
-                             "pulley", "rspring" */
+                             "pulley", "rspring", "beam" */
     int id;               /* user id > 0, unique among elements */
     int nnodes;           /* number of entries of nodes (the family's node count) */
     const int *nodes;     /* user node ids (copied) */
@@ -191,6 +194,9 @@ typedef struct ctn_element_spec {
                                  cable's (ctn_model_resolve_targets); default
                                  CTN_TARGET_NONE */
     double target_value;      /* H [force], sag [length] or tension [force], > 0 */
+    double orient[3];         /* beam: a vector in the member's local x-z plane (not along
+                                 the member); 0, 0, 0 (default): global z, or global x
+                                 for a vertical member */
 } ctn_element_spec;
 void ctn_element_spec_init(ctn_element_spec *s);
 int ctn_model_add_element_spec(ctn_model *m, const ctn_element_spec *s);
@@ -223,6 +229,16 @@ int ctn_model_add_element(ctn_model *m, int id, int n1, int n2, const char *sect
  * made and should be discarded. */
 int ctn_model_add_cable(ctn_model *m, int a, int b, const char *section,
                         const ctn_cable_spec *spec, int *first_elem, int *last_elem);
+/* A beam member from spec->nodes[0] to spec->nodes[1] (spec->type is taken as "beam")
+ * meshed into n elements (1 <= n <= CTN_BEAM_MAX_N) of equal length: the n - 1 interior
+ * nodes are numbered after the largest existing node id, in order; the first element
+ * takes spec->id, the others are numbered from CTN_BEAM_GEN_ID + 1 up (after the
+ * largest element id when that is larger), so that they keep out of the way of the ids
+ * of the members defined next. Should an element be rejected, the model keeps the part
+ * already made and should be discarded. */
+#define CTN_BEAM_MAX_N 100000
+#define CTN_BEAM_GEN_ID 1000000
+int ctn_model_add_beam(ctn_model *m, const ctn_element_spec *spec, int n);
 /* Concentrated force F at a node (summed with earlier loads on that node). Belongs
  * to the current step (see ctn_model_add_step). */
 int ctn_model_add_load(ctn_model *m, int node, const double F[3]);

@@ -473,6 +473,22 @@ typedef struct ctn_catenary_result {
  * solution at that state (a collapsed chord). The caller sets out->size. */
 int ctn_solution_catenary(const ctn_model *m, const ctn_solution *s, size_t k, size_t i,
                           ctn_catenary_result *out);
+/* A beam element at the state of step k (docs/format.md, "beam"): the forces and
+ * moments its two nodes apply to it, in its current local axes (x along the chord, y
+ * and z the corotated section axes): end[a] = (Fx, Fy, Fz, Mx, My, Mz) at its first
+ * (a = 0) and second node, the stiffness method's end forces; N = end[1][0] its axial
+ * tension, T = end[1][3] its torque. */
+typedef struct ctn_beam_result {
+    size_t size;          /* sizeof(ctn_beam_result), set by the caller */
+    double end[2][6];     /* end forces [force] and moments [force length], local axes */
+    double N;             /* axial tension [force] */
+    double T;             /* torque about the member's axis [force length] */
+    double M_max;         /* the larger end bending moment, hypot(My, Mz) [force length] */
+} ctn_beam_result;
+/* Element i (a "beam") at the end of step k. CTN_ERR_INVALID if i is not a beam or k, i
+ * are out of range; CTN_ERR_NOCONV if its state cannot be evaluated. The caller sets
+ * out->size. */
+int ctn_solution_beam(const ctn_model *m, const ctn_solution *s, size_t k, size_t i, ctn_beam_result *out);
 /* The deformed shape of element i at the end of step k: n >= 2 points (3 coordinates
  * each, into xyz[3 n]) evenly spaced along its unstressed length: on the elastic catenary
  * for a catenary, on its straight segments for the other families (a pulley's pass

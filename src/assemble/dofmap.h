@@ -9,9 +9,10 @@
  *
  * The state update. Translations are updated by addition, d += alpha dd. Rotations go
  * through the map's rot_update op, node by node: the default adds the rotation vectors
- * (right for small rotations: the rspring family); a family of finite rotations (a
- * corotational beam) sets it to compose them (R = exp(alpha dtheta) R) when the problem
- * is built. A model without rotations never calls it (ctn_problem_update keeps its plain
+ * (right for small rotations, the rspring family, and for the corotational beam, whose
+ * DOFs are the nodes' total rotation vectors: its tangent is the Hessian in them); a
+ * family of spin increments would set it to compose them (R = exp(alpha dtheta) R) when
+ * the problem is built. A model without rotations never calls it (ctn_problem_update keeps its plain
  * loop). */
 #ifndef CTN_ASSEMBLE_DOFMAP_H
 #define CTN_ASSEMBLE_DOFMAP_H

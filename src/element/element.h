@@ -38,7 +38,9 @@ enum {
     CTN_ELEM_FLEXIBLE = 1,  /* a cable: hangs when slack; may be pre-shaped on an arc and
                                relaxed with compression cut off by the solver */
     CTN_ELEM_SECTION = 2,   /* takes a section (section=): required; others refuse one */
-    CTN_ELEM_TENSION_ONLY = 4  /* never compressed, whatever the material (catenary, pulley) */
+    CTN_ELEM_TENSION_ONLY = 4, /* never compressed, whatever the material (catenary, pulley) */
+    CTN_ELEM_FINITE_ROTATION = 8 /* its rotation DOFs are the node's total rotation vector:
+                                    a rigid motion composes them (beam) */
 };
 
 /* eval(props, mode, X, u, f, K, st): X = reference coordinates of the element's nodes
@@ -117,6 +119,7 @@ extern const ctn_element_ops ctn_spring2_ops;
 extern const ctn_element_ops ctn_catenary2_ops;   /* catenary2.c, props in catenary.h */
 extern const ctn_element_ops ctn_pulley_ops;      /* pulley.c */
 extern const ctn_element_ops ctn_rspring_ops;     /* rspring.c: 6 DOFs per node */
+extern const ctn_element_ops ctn_beam3_ops;       /* beam3.c, beam3_model.c: corotational beam */
 
 /* Each family's properties are its own: cable2.h (ctn_cable_props, which the pulley's
  * embed), spring2.h, pulley.h, catenary.h, rspring.c. */

@@ -4,7 +4,8 @@
 #include <string.h>
 
 static const ctn_element_ops *const families[] = { &ctn_cable2_ops, &ctn_spring2_ops, &ctn_catenary2_ops,
-                                                     &ctn_pulley_ops, &ctn_rspring_ops };
+                                                     &ctn_pulley_ops, &ctn_rspring_ops,
+                                                     &ctn_beam3_ops };
 
 int ctn_element_family_count(void) { return (int)(sizeof families / sizeof *families); }
 

@@ -2,6 +2,8 @@
  * or element, numbers as "%.17g" (round-trip) and ids as "%d", C locale. */
 #include "io/writer.h"
 
+#include <string.h>
+
 static int csv_begin(ctn_writer *w, const ctn_model *m, ctn_sink *sink, const char *header)
 {
     int rc = ctn_writer_open(w, m, sink);
@@ -67,13 +69,37 @@ static int nodes_step(void *p, const ctn_solution *s, size_t k)
     return w->out.err;
 }
 
+/* Whether the model has a beam: its elements' rows then go on with the end forces. */
+static int has_beams(const ctn_model *m)
+{
+    ctn_element_info e;
+    for (size_t i = 0; i < ctn_model_element_count(m); i++)
+        if (!ctn_model_element(m, i, &e) && !strcmp(e.type, "beam")) return 1;
+    return 0;
+}
+
 static int elements_begin(void *p, const ctn_model *m, ctn_sink *sink)
 {
-    return csv_begin(p, m, sink, "id,node1,node2,l0,length,strain,force,stress,slack,utilisation,group\n");
+    return csv_begin(p, m, sink, has_beams(m) ? "id,node1,node2,l0,length,strain,force,stress,slack,utilisation,group,"
+                                                "fx1,fy1,fz1,mx1,my1,mz1,fx2,fy2,fz2,mx2,my2,mz2\n"
+                                              : "id,node1,node2,l0,length,strain,force,stress,slack,utilisation,group\n");
+}
+
+/* A beam's end forces in its local axes (ctn_solution_beam), 12 fields after a comma;
+ * empty for the other elements. */
+static void beam_fields(ctn_writer *w, const ctn_solution *s, size_t k, size_t i)
+{
+    ctn_beam_result b = { .size = sizeof b };
+    int ok = !ctn_solution_beam(w->m, s, k, i, &b);
+    for (int a = 0; a < 12; a++) {
+        ctn_wbuf_putc(&w->out, ',');
+        if (ok) ctn_wbuf_g17(&w->out, b.end[a / 6][a % 6]);
+    }
 }
 
 /* id,node1,node2,l0,length,strain,force,stress,slack,utilisation,group (utilisation and
- * group empty when the section has no mbl / the element no group) */
+ * group empty when the section has no mbl / the element no group), without the line's
+ * end */
 static int element_row(ctn_writer *w, const ctn_element_info *e, const ctn_element_state *es)
 {
     ctn_node_info a, b;
@@ -91,7 +117,6 @@ static int element_row(ctn_writer *w, const ctn_element_info *e, const ctn_eleme
     if (e->capacity > 0) ctn_wbuf_g17(&w->out, ctn_utilisation(e, es));
     ctn_wbuf_putc(&w->out, ',');
     if (e->group) ctn_wbuf_puts(&w->out, e->group);
-    ctn_wbuf_putc(&w->out, '\n');
     return CTN_OK;
 }
 
@@ -99,11 +124,14 @@ static int elements_step(void *p, const ctn_solution *s, size_t k)
 {
     ctn_writer *w = p;
     if (k + 1 < ctn_solution_step_count(s)) return CTN_OK;
+    int beams = has_beams(w->m);
     for (size_t i = 0; i < ctn_model_element_count(w->m) && !w->out.err; i++) {
         ctn_element_info e;
         ctn_element_state es;
         if (ctn_model_element(w->m, i, &e) || ctn_solution_step_element(s, k, i, &es) ||
             element_row(w, &e, &es)) return ctn_writer_mismatch(w);
+        if (beams) beam_fields(w, s, k, i);
+        ctn_wbuf_putc(&w->out, '\n');
     }
     return w->out.err;
 }

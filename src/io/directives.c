@@ -53,14 +53,28 @@ static int d_gravity(ctn_line *l)
     return rc ? rc : ctn_model_set_gravity(l->m, g);
 }
 
+/* nu= (Poisson's ratio, -1 < nu <= 0.5): G = E / (2 (1 + nu)), instead of G=. */
+static int material_nu(ctn_line *l, ctn_material_spec *spec)
+{
+    double nu = 0;
+    if (!ctn_parse_key(l, 2, "nu")) return CTN_OK;
+    if (spec->G > 0) return ctn_parse_error(l, "material %s: give G= or nu=, not both", l->tok[1]);
+    int rc = ctn_parse_key_num(l, 2, "nu", 1, &nu);
+    if (!rc && !(nu > -1 && nu <= 0.5))
+        return ctn_parse_error(l, "material %s: nu must be above -1 and at most 0.5 (found %g)", l->tok[1], nu);
+    if (!rc) spec->G = spec->E / (2 * (1 + nu));
+    return rc;
+}
+
 static int d_material(ctn_line *l)
 {
     ctn_material_spec spec;
     ctn_material_spec_init(&spec);
     ctn_strain strain = CTN_STRAIN_GREEN_LAGRANGE;
-    int rc = ctn_parse_positional(l, 1, "material NAME E=VALUE [strain=green-lagrange|engineering] [tension-only] [alpha=PER_KELVIN] [G=VALUE]");
+    int rc = ctn_parse_positional(l, 1, "material NAME E=VALUE [strain=green-lagrange|engineering] [tension-only] [alpha=PER_KELVIN] [G=VALUE|nu=RATIO]");
     if (!rc) rc = ctn_parse_key_num(l, 2, "E", 1, &spec.E);
     if (!rc) rc = ctn_parse_key_num(l, 2, "G", 0, &spec.G);
+    if (!rc) rc = material_nu(l, &spec);
     if (!rc) rc = ctn_parse_key_num(l, 2, "alpha", 0, &spec.alpha);
     const char *s = rc ? NULL : ctn_parse_key(l, 2, "strain");
     if (s && !strcmp(s, "engineering")) strain = CTN_STRAIN_ENGINEERING;
@@ -78,10 +92,12 @@ static int d_section(ctn_line *l)
 {
     ctn_section_spec spec;
     ctn_section_spec_init(&spec);
-    int rc = ctn_parse_positional(l, 1, "section NAME material=MATERIAL A=AREA [w=WEIGHT] [mass=MASS] [mbl=FORCE] [safety=FACTOR] [Iy=] [Iz=] [J=] [Asy=] [Asz=]");
+    int rc = ctn_parse_positional(l, 1, "section NAME material=MATERIAL A=AREA|d= [t=]|b= h= t=|b= h= tf= tw= [w=WEIGHT] [mass=MASS] [mbl=FORCE] [safety=FACTOR] [Iy=] [Iz=] [J=] [Asy=] [Asz=]");
     const char *mat = rc ? NULL : ctn_parse_key(l, 2, "material");
     if (!rc && !mat) return ctn_parse_missing(l, 2, NULL, "material", NULL);
-    if (!rc) rc = ctn_parse_key_num(l, 2, "A", 1, &spec.A);
+    int shaped = 0;
+    if (!rc) rc = ctn_parse_section_shape(l, &spec, &shaped);
+    if (!rc) rc = ctn_parse_key_num(l, 2, "A", !shaped, &spec.A);
     if (!rc) rc = ctn_parse_key_num(l, 2, "w", 0, &spec.w);
     if (!rc && ctn_parse_key(l, 2, "mass")) {
         rc = ctn_parse_key_num(l, 2, "mass", 1, &spec.mass);
@@ -312,16 +328,30 @@ static int d_cable(ctn_line *l)
     return rc || !(q > 0 || force > 0) ? rc : ctn_model_set_force_density(l->m, first, last, q, force);
 }
 
-/* load NODE FX FY FZ, moment NODE MX MY MZ: a nodal force or moment. */
+/* Whether a load line has the three moments: seven positional tokens after `load`
+ * (a fifth that is no key=value). */
+static int load_has_moments(const ctn_line *l)
+{
+    return l->ntok > 5 && !strchr(l->tok[5], '=');
+}
+
+/* load NODE FX FY FZ [MX MY MZ], moment NODE MX MY MZ: a nodal force (and moment) or a
+ * moment. */
 static int nodal(ctn_line *l, int moment)
 {
     int id = 0;
-    double F[3];
-    int rc = ctn_parse_positional(l, 4, moment ? "moment NODE MX MY MZ" : "load NODE FX FY FZ");
+    double F[3], M[3];
+    int npos = !moment && load_has_moments(l) ? 7 : 4;
+    int rc = ctn_parse_positional(l, npos, moment ? "moment NODE MX MY MZ" : "load NODE FX FY FZ [MX MY MZ]");
     if (!rc) rc = ctn_parse_int(l, "the node id", l->tok[1], &id);
     for (int k = 0; k < 3 && !rc; k++) rc = ctn_parse_num(l, moment ? "a moment component" : "a force component", l->tok[2 + k], &F[k]);
-    if (!rc) rc = ctn_parse_leftovers(l, 5, moment ? "moment" : "load");
-    return rc ? rc : moment ? ctn_model_add_moment(l->m, id, F) : ctn_model_add_load(l->m, id, F);
+    for (int k = 0; k < 3 && !rc && npos == 7; k++) rc = ctn_parse_num(l, "a moment component", l->tok[5 + k], &M[k]);
+    if (!rc) rc = ctn_parse_leftovers(l, npos + 1, moment ? "moment" : "load");
+    if (rc) return rc;
+    if (moment) return ctn_model_add_moment(l->m, id, F);
+    rc = ctn_model_add_load(l->m, id, F);
+    if (rc || npos == 4 || (M[0] == 0 && M[1] == 0 && M[2] == 0)) return rc;   /* no moment: any node */
+    return ctn_model_add_moment(l->m, id, M);
 }
 
 static int d_load(ctn_line *l) { return nodal(l, 0); }
@@ -519,7 +549,7 @@ static const directive directives[] = {
     { "solve", d_solve },     { "step", d_step },       { "displace", d_displace },
     { "spring", d_spring },   { "group", d_group },     { "temperature", d_temperature },
     { "modes", d_modes },     { "moment", d_moment },   { "rspring", d_rspring },
-        { "catenary", ctn_parse_catenary }, { "pulley", ctn_parse_pulley },
+        { "catenary", ctn_parse_catenary }, { "pulley", ctn_parse_pulley }, { "beam", ctn_parse_beam },
     { "buckling", d_buckling },
 };
 

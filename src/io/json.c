@@ -169,6 +169,19 @@ static void put_catenary(json_writer *jw, const ctn_solution *s, size_t k, size_
     ctn_jw_end(j);
 }
 
+/* A beam's end forces in its local axes (ctn_solution_beam). */
+static void put_beam(json_writer *jw, const ctn_solution *s, size_t k, size_t i)
+{
+    ctn_jw *j = &jw->j;
+    ctn_beam_result b = { .size = sizeof b };
+    if (ctn_solution_beam(jw->w.m, s, k, i, &b)) return;
+    ctn_jw_array(j, "end_forces_local");
+    for (int a = 0; a < 2; a++) numbers(j, NULL, b.end[a], 6);
+    ctn_jw_end(j);
+    ctn_jw_number(j, "torque", b.T);
+    ctn_jw_number(j, "moment_max", b.M_max);
+}
+
 static void put_element(json_writer *jw, const ctn_element_info *e, const ctn_element_state *es,
                         const ctn_solution *s, size_t k, size_t i)
 {
@@ -192,6 +205,7 @@ static void put_element(json_writer *jw, const ctn_element_info *e, const ctn_el
     if (e->capacity > 0) ctn_jw_number(j, "utilisation", ctn_utilisation(e, es));
     if (e->group) ctn_jw_string(j, "group", e->group);
     if (!strcmp(e->type, "catenary")) put_catenary(jw, s, k, i);
+    if (!strcmp(e->type, "beam")) put_beam(jw, s, k, i);
     ctn_jw_end(j);
 }
 

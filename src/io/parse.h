@@ -80,5 +80,9 @@ int ctn_parse_add_element(ctn_line *l, int rc, int from, const char *type, int i
                           ctn_element_spec *spec);
 int ctn_parse_catenary(ctn_line *l);
 int ctn_parse_pulley(ctn_line *l);
+int ctn_parse_beam(ctn_line *l);      /* directives_beam.c */
+/* A section's shape keys (d= t=, b= h= t=, b= h= tf= tw=) into s's A, Iy, Iz, J;
+ * *shaped = 1 if some were given (section_shapes.c). */
+int ctn_parse_section_shape(ctn_line *l, ctn_section_spec *s, int *shaped);
 
 #endif

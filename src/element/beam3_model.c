@@ -1,0 +1,125 @@
+/* The beam family's model side (beam3.c has the kernel): the checks of a definition,
+ * the orientation kept in the element record, the properties, self-weight and mass.
+ * The orient= vector is kept as its direction, two angles in par[] (azimuth, polar;
+ * polar -1: the default orientation). */
+#include "element/beam3.h"
+
+#include <math.h>
+#include <string.h>
+
+static void beam_params(const ctn_element_spec *s, double *par)
+{
+    const double *v = s->orient;
+    double n = hypot(hypot(v[0], v[1]), v[2]);
+    par[0] = n > 0 ? atan2(v[1], v[0]) : 0;
+    par[1] = n > 0 ? acos(fmax(-1, fmin(1, v[2] / n))) : -1;
+}
+
+/* The member's unit axis e1 and the orientation vector v of element e. */
+static void axis_orient(const ctn_model *m, const ctn_element *e, double e1[3], double v[3])
+{
+    const int *nd = m->conn.v + e->conn;
+    const double *X1 = m->nodes.v[nd[0]].X, *X2 = m->nodes.v[nd[1]].X;
+    double L = 0;
+    for (int k = 0; k < 3; k++) {
+        e1[k] = X2[k] - X1[k];
+        L += e1[k] * e1[k];
+    }
+    for (int k = 0; k < 3; k++) e1[k] /= sqrt(L);
+    if (e->par[1] >= 0) {
+        v[0] = sin(e->par[1]) * cos(e->par[0]);
+        v[1] = sin(e->par[1]) * sin(e->par[0]);
+        v[2] = cos(e->par[1]);
+        for (int k = 0; k < 3; k++) v[k] = fabs(v[k]) < 1e-15 ? 0 : v[k];   /* the direction given */
+    } else {                                           /* global z; global x if vertical */
+        int vertical = hypot(e1[0], e1[1]) < 1e-6;
+        v[0] = vertical;
+        v[1] = 0;
+        v[2] = !vertical;
+    }
+}
+
+/* |a x b| for unit vectors: the sine of their angle. */
+static double sine(const double a[3], const double b[3])
+{
+    double c[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+    return hypot(hypot(c[0], c[1]), c[2]);
+}
+
+static int beam_check(const ctn_model *m, const ctn_element *e)
+{
+    const ctn_section *s = &m->sections.v[e->section];
+    const ctn_material *mat = &m->materials.v[s->material];
+    double e1[3], v[3];
+    if (!(s->Iy > 0 && s->Iz > 0 && s->J > 0))
+        return ctn_model_error(m, CTN_ERR_MODEL, "beam %d: section '%s' has no bending properties (Iy=%g, Iz=%g, J=%g: "
+                               "each must be positive)", e->id, s->name, s->Iy, s->Iz, s->J);
+    if (!(mat->G > 0))
+        return ctn_model_error(m, CTN_ERR_MODEL, "beam %d: material '%s' has no shear modulus (give G= or nu=)", e->id,
+                               mat->name);
+    if (!(e->l0 > 0) || !isfinite(e->l0))
+        return ctn_model_error(m, CTN_ERR_MODEL, "beam %d: length must be positive and finite (got %g)", e->id, e->l0);
+    axis_orient(m, e, e1, v);
+    if (sine(e1, v) < 1e-6)
+        return ctn_model_error(m, CTN_ERR_MODEL, "beam %d: orient (direction %g, %g, %g) is parallel to the member: it must "
+                               "point across it, in the local x-z plane", e->id, v[0], v[1], v[2]);
+    return CTN_OK;
+}
+
+/* Bending energy coefficients c0, c1 of EI over L with the shear parameter phi. */
+static void bending(double EI, double L, double phi, double *c0, double *c1)
+{
+    double k = EI / (L * (1 + phi));
+    *c0 = 0.5 * k * (4 + phi);
+    *c1 = k * (2 - phi);
+}
+
+static void beam_setup(const ctn_model *m, size_t e, void *props)
+{
+    const ctn_element *el = &m->elements.v[e];
+    const ctn_section *s = &m->sections.v[el->section];
+    const ctn_material *mat = &m->materials.v[s->material];
+    ctn_beam_props *p = props;
+    double e1[3], v[3], L = el->l0, E = mat->E, G = mat->G, d = 0, n = 0;
+    memset(p, 0, sizeof *p);
+    axis_orient(m, el, e1, v);
+    for (int k = 0; k < 3; k++) d += v[k] * e1[k];
+    for (int k = 0; k < 3; k++) {
+        p->e3[k] = v[k] - d * e1[k];
+        n += p->e3[k] * p->e3[k];
+    }
+    for (int k = 0; k < 3; k++) p->e3[k] /= sqrt(n);
+    for (int k = 0; k < 3; k++) p->e2[k] = p->e3[(k + 1) % 3] * e1[(k + 2) % 3] - p->e3[(k + 2) % 3] * e1[(k + 1) % 3];
+    double phiy = s->Asz > 0 ? 12 * E * s->Iy / (G * s->Asz * L * L) : 0;
+    double phiz = s->Asy > 0 ? 12 * E * s->Iz / (G * s->Asy * L * L) : 0;
+    p->L0 = L;
+    p->A = s->A;
+    p->EA = E * s->A;
+    bending(E * s->Iy, L, phiy, &p->cy0, &p->cy1);
+    bending(E * s->Iz, L, phiz, &p->cz0, &p->cz1);
+    p->kt = G * s->J / L;
+    p->rhoA = ctn_model_section_mass(m, el->section);
+    p->rhoJ = p->rhoA > 0 ? p->rhoA * (s->Iy + s->Iz) / s->A : 0;
+}
+
+static void beam_load(const ctn_model *m, size_t e, double *f)
+{
+    const ctn_element *el = &m->elements.v[e];
+    const int *nd = ctn_elem_nodes(m, e);
+    double W = 0.5 * m->sections.v[el->section].w * el->l0;
+    for (int a = 0; a < 2; a++)
+        for (int k = 0; k < 3; k++) f[3 * (size_t)nd[a] + (size_t)k] += W * m->gravity[k];
+}
+
+static double beam_stiffness(const void *props)
+{
+    const ctn_beam_props *p = props;
+    return p->EA / p->L0;
+}
+
+const ctn_element_ops ctn_beam3_ops = {
+    .name = "beam", .nnodes = 2, .ndof_node = 6, .props_size = sizeof(ctn_beam_props),
+    .flags = CTN_ELEM_SECTION | CTN_ELEM_FINITE_ROTATION,
+    .check = beam_check, .params = beam_params, .setup = beam_setup, .eval = ctn_beam_eval, .load = beam_load,
+    .stiffness = beam_stiffness,
+};

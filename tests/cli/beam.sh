@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# tests/cli/beam.sh CATENA: beams through `catena solve` (docs/format.md, "beam"):
+# - examples/beam/rollup.cable (a cantilever under M = 2 pi EI / L): the tip back at the
+#   root (ux = -L, uy = 0 to 1e-9 L), turned by rz = 2 pi, the clamp's moment -M;
+# - examples/beam/cantilever.cable: the tip deflection P L^3 / (3 E I) (1e-4: the load is
+#   not small), the root element's end_forces_local (shear P, moment P L) in result.json
+#   and the same twelve end forces in elements.csv;
+# - examples/beam/bend45.cable: the published tip displacement at P = 600 (0.25).
+# Prints "N passed, N failed"; exit 1 on any failure.
+set -u
+
+. "$(dirname "$0")/lib/common.sh"
+cli_init beam "${1:-}"
+PY=/usr/bin/python3
+[ -x "$PY" ] || PY=python3
+
+"$BIN" solve examples/beam/rollup.cable --json >"$T/roll.json" 2>"$T/err" || WHY+=("rollup: exit $?: $(head -c 300 "$T/err")")
+"$PY" - "$T/roll.json" >"$T/check" 2>&1 <<'PYEOF' || WHY+=("$(head -n 5 "$T/check")")
+import json, math, sys
+r = json.load(open(sys.argv[1]))
+n = {p["id"]: p for p in r["nodes"]}
+q = {p["node"]: p for p in r["reactions"]}
+assert r["converged"]
+assert abs(n[2]["ux"] + 10) < 1e-8 and abs(n[2]["uy"]) < 1e-8, n[2]
+assert abs(n[2]["rz"] - 2 * math.pi) < 1e-10, n[2]
+assert abs(q[1]["mz"] + 2 * math.pi * 1e4) < 1e-6, q[1]
+PYEOF
+finish "rollup: a full circle"
+
+"$BIN" solve examples/beam/cantilever.cable -q -o "$T/cant" 2>"$T/err" || WHY+=("cantilever: exit $?: $(head -c 300 "$T/err")")
+"$PY" - "$T/cant/result.json" "$T/cant/elements.csv" >"$T/check" 2>&1 <<'PYEOF' || WHY+=("$(head -n 5 "$T/check")")
+import csv, json, sys
+r = json.load(open(sys.argv[1]))
+n = {p["id"]: p for p in r["nodes"]}
+P, L, E, I = 100.0, 5.0, 2.1e11, 2e-6
+assert abs(n[2]["uz"] + P * L**3 / (3 * E * I)) < 1e-4 * P * L**3 / (3 * E * I), n[2]
+e = r["elements"][0]
+assert e["type"] == "beam" and e["id"] == 1
+f = e["end_forces_local"]
+assert abs(f[0][2] - P) < 1e-3 and abs(f[0][4] + P * (L + n[2]["ux"])) < 1e-3, f
+rows = list(csv.DictReader(open(sys.argv[2])))
+assert float(rows[0]["fz1"]) == f[0][2] and float(rows[0]["my1"]) == f[0][4], rows[0]
+assert [r["id"] for r in rows] == ["1", "1000001", "1000002", "1000003"], rows
+PYEOF
+finish "cantilever: deflection and end forces"
+
+"$BIN" solve examples/beam/bend45.cable --json >"$T/bend.json" 2>"$T/err" || WHY+=("bend45: exit $?: $(head -c 300 "$T/err")")
+"$PY" - "$T/bend.json" >"$T/check" 2>&1 <<'PYEOF' || WHY+=("$(head -n 5 "$T/check")")
+import json, sys
+r = json.load(open(sys.argv[1]))
+n = {p["id"]: p for p in r["nodes"]}
+for k, v in zip(("ux", "uy", "uz"), (-23.5, -13.4, 53.4)):
+    assert abs(n[9][k] - v) < 0.25, (k, n[9][k], v)
+PYEOF
+finish "bend45: Bathe and Bolourchi at P = 600"
+
+cli_summary
