@@ -16,7 +16,12 @@
  *   initialised refused, results replaced by a second run;
  * - errors: count above the free DOFs, more free DOFs than CTN_BUCKLING_MAX_DOFS, an
  *   unstable loaded state, a step without loads: CTN_ERR_MODEL at the `buckling` line;
- * - every allocation failure: CTN_ERR_NOMEM, no leak (ASan). */
+ * - every allocation failure: CTN_ERR_NOMEM, no leak (ASan);
+ * - Euler columns of corotational beams (E I = 2e6, L = 4, P = 1000, EA / P = 2e8: the
+ *   pre-buckling path is linear): pinned-pinned pi^2 EI / L^2 and the cantilever
+ *   pi^2 EI / (4 L^2) (in P), the error from above falling as h^2 (ratios 4 +- 0.2 from 4
+ *   to 32 elements), Richardson's (4 lambda_2n - lambda_n) / 3 of 8 and 16 elements
+ *   within 1e-4 (measured 4e-6); the second factor that of Iy = 2 Iz, twice the first. */
 #include "catena.h"
 #include "check.h"
 
@@ -282,6 +287,49 @@ static void test_alloc(void)
     ctn_ctx_destroy(&ctx);
 }
 
+/* The column along x of length 4 in n beams, P = 1000 down its axis: the lowest factor
+ * (Iz = 1e-5) and the second (Iy = 2e-5) into lam[0], lam[1]. */
+static void column(int cantilever, int n, double lam[2])
+{
+    char text[1024];
+    snprintf(text, sizeof text,
+             "material steel E=2e11 nu=0.3\n"
+             "section s material=steel A=1 Iy=2e-5 Iz=1e-5 J=3e-5\n"
+             "node 1 0 0 0 fix=%s\n"
+             "node 2 4 0 0%s\n"
+             "beam 1 1 2 section=s orient=0,0,1 n=%d\n"
+             "load 2 -1000 0 0\n"
+             "buckling count=2\n",
+             cantilever ? "xyzrxryrz" : "xyzrx", cantilever ? "" : " fix=yz", n);
+    ctn_ctx *ctx = NULL;
+    ctn_ctx_create(&ctx);
+    int rc;
+    ctn_solution *s = solve_text(ctx, text, &rc);
+    CHECK_MSG(rc == CTN_OK && s, "%s", ctn_ctx_message(ctx));
+    for (size_t k = 0; k < 2; k++) {
+        ctn_buckling_mode b;
+        lam[k] = ctn_solution_buckling(s, k, &b) ? NAN : b.factor;
+    }
+    ctn_solution_destroy(&s);
+    ctn_ctx_destroy(&ctx);
+}
+
+static void test_euler(int cantilever)
+{
+    const double pi = 3.14159265358979323846, EI = 2e11 * 1e-5, L = 4, P = 1000;
+    double exact = pi * pi * EI / ((cantilever ? 4 : 1) * L * L) / P, lam[4][2], err[4];
+    for (int i = 0; i < 4; i++) {
+        column(cantilever, 4 << i, lam[i]);
+        err[i] = (lam[i][0] - exact) / exact;
+        CHECK_MSG(err[i] > 0, "%s n=%d: %.17g below pi^2 EI", cantilever ? "cantilever" : "pinned", 4 << i, lam[i][0]);
+        CHECK_CLOSE(lam[i][1], 2 * lam[i][0], 0.01, 0);          /* Iy = 2 Iz */
+    }
+    for (int i = 0; i < 3; i++)
+        CHECK_MSG(fabs(err[i] / err[i + 1] - 4) < 0.2, "%s: errors %g (n=%d), %g: not O(h^2)",
+                  cantilever ? "cantilever" : "pinned", err[i], 4 << i, err[i + 1]);
+    CHECK_CLOSE((4 * lam[2][0] - lam[1][0]) / 3, exact, 1e-4, 0);   /* Richardson of 8, 16 */
+}
+
 int main(void)
 {
     test_springs(10, 2, 3, 1);
@@ -291,5 +339,7 @@ int main(void)
     test_object();
     test_errors();
     test_alloc();
+    test_euler(0);
+    test_euler(1);
     CHECK_DONE();
 }
