@@ -82,6 +82,9 @@ void ctn_print_groups(FILE *out, const ctn_model *m, const ctn_solution *s);
 void ctn_print_capacity_warning(FILE *out, const char *model, const ctn_model *m, const ctn_solution *s);
 /* Its modal part: the analysis and one line per mode (nothing without modes). */
 void ctn_print_modes(FILE *out, const ctn_model *m, const ctn_solution *s);
+/* Its buckling part: the analysis and one line per factor (print_buckling.c; nothing
+ * without a buckling analysis). */
+void ctn_print_buckling(FILE *out, const ctn_model *m, const ctn_solution *s);
 /* The reactions of the supported nodes, at most limit rows (-1: all), then their sum
  * and, when rows were left out, the largest by magnitude (print_reactions.c). */
 #define CTN_APP_REACTIONS 20

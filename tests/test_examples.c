@@ -5,6 +5,7 @@
  *   step_force K E V atol    (element index E at step K)
  *   load_factor_min V rtol   load_factor_max V rtol  (over the steps)
  *   load_factor V rtol       (where the run ended)
+ *   buckling K V rtol        (buckling factor K, 1-based)
  * and, when converged and not arc-length, the reactions must balance the loads (to
  * round-off of the largest force, or reaction moment over the model's extent). */
 #include "catena.h"
@@ -87,6 +88,11 @@ static void check_line(const char *path, const char *line, const ctn_model *m, c
             count += (size_t)st.slack;
         }
         CHECK_MSG(count == (size_t)a, "%s: %zu slack elements", path, count);
+    } else if (!strcmp(key, "buckling") && n == 4) {
+        ctn_buckling_mode bm;
+        int ok = a >= 1 && ctn_solution_buckling(s, (size_t)a - 1, &bm) == CTN_OK;
+        CHECK_MSG(ok, "%s: no buckling factor %g", path, a);
+        if (ok) CHECK_CLOSE(bm.factor, b, c, 0);
     } else if (!strcmp(key, "step_force") && n == 5) {
         ctn_element_state st;
         CHECK(ctn_solution_step_element(s, (size_t)a, (size_t)b, &st) == CTN_OK);

@@ -12,6 +12,8 @@
  *                ctn_stability_options; its result is read with ctn_solution_stability
  *   "modal"      the natural modes about a converged solution: options
  *                ctn_modal_options; read with ctn_solution_mode
+ *   "buckling"   the linear buckling factors about a converged solution: options
+ *                ctn_buckling_options; read with ctn_solution_buckling
  *
  * Every options struct starts with its size (set by its _default function), so that a
  * program built against this header keeps working when later versions add keys at the
@@ -50,10 +52,56 @@ void ctn_modal_options_default(ctn_modal_options *opt);
  * 0 is in range: no modal analysis). */
 int ctn_modal_options_check(ctn_ctx *ctx, const ctn_modal_options *opt);
 
+/* The defaults of the buckling analysis (count 0: set it to the factors wanted). */
+void ctn_buckling_options_default(ctn_buckling_options *opt);
+/* CTN_OK, or CTN_ERR_INVALID with a message naming the option out of range (a count of
+ * 0 is in range: no buckling analysis). */
+int ctn_buckling_options_check(ctn_ctx *ctx, const ctn_buckling_options *opt);
+
+/* The buckling analysis works on dense matrices of the free DOFs (LAPACK's dsygv): at
+ * most this many free DOFs; beyond, CTN_ERR_MODEL naming the limit. */
+#define CTN_BUCKLING_MAX_DOFS 2000
+
+/* Linear buckling about the converged state d of a solution's last step, with f that
+ * step's total external loads (dead loads and moments, on the free DOFs): K_T the
+ * tangent at d (it must be positive definite), u' = K_T^-1 f the tangent of the load
+ * path, K' = dK_T/dlambda along it (a central difference of the tangent at d +- h u'),
+ * and the factors lambda of the pencil K_T + (lambda - 1) K' singular: -K' phi = theta
+ * K_T phi, lambda = 1 + 1/theta. On a linear pre-buckling path (K_T = K_M + K_G,
+ * K_G linear in the load) this is the classical (K_M + lambda K_G^(f)) phi = 0 exactly.
+ * docs/theory.md, "Linear buckling". */
+typedef struct ctn_buckling_mode {
+    double factor;            /* lambda > 0: the load factor on the step's loads */
+    const double *shape;      /* phi, 3 translations per node in model node order (0 on
+                                 fixed DOFs), scaled so that the largest |component| is 1
+                                 and positive. Owned by the solution */
+    int node;                 /* user id of the node that moves most */
+    double residual;          /* |K(lambda) phi| / (|K_T phi| + |lambda - 1| |K' phi|),
+                                 K(lambda) = K_T + (lambda - 1) K' */
+} ctn_buckling_mode;
+
+typedef struct ctn_buckling_summary {
+    int count;                /* factors stored: the lowest positive ones, at most the
+                                 count asked (fewer when the pencil has fewer) */
+    int asked;                /* the count asked */
+    int ndof;                 /* free DOFs of the dense problem */
+    double h;                 /* the central difference's step along u' (h max|u'| is
+                                 1e-5 of the model's size) */
+    double load_norm;         /* |f| on the free DOFs */
+    double t_total;           /* wall seconds of the buckling analysis */
+} ctn_buckling_summary;
+
+/* Buckling factors of a solution: the count (0 if no buckling analysis was run) and
+ * factor k, lowest first; CTN_ERR_INVALID for k out of range. */
+size_t ctn_solution_buckling_count(const ctn_solution *s);
+int ctn_solution_buckling(const ctn_solution *s, size_t k, ctn_buckling_mode *out);
+/* CTN_ERR_INVALID when no buckling analysis was run on s. */
+int ctn_solution_buckling_summary(const ctn_solution *s, ctn_buckling_summary *out);
+
 typedef struct ctn_analysis ctn_analysis;
 
 /* The registered analyses: their count and the name of the i-th ("static",
- * "stability", "modal"); NULL for i out of range. */
+ * "stability", "modal", "buckling"); NULL for i out of range. */
 size_t ctn_analysis_count(void);
 const char *ctn_analysis_type(size_t i);
 

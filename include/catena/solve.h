@@ -96,6 +96,17 @@ typedef struct ctn_modal_options {
     ctn_eigen_solver solver; /* default CTN_EIGEN_AUTO */
 } ctn_modal_options;
 
+/* Linear buckling about a converged state (catena/analysis.h, docs/theory.md "Linear
+ * buckling"): the load factors lambda on the last step's loads at which the tangent,
+ * extrapolated linearly in lambda, becomes singular. */
+typedef struct ctn_buckling_options {
+    size_t size;          /* sizeof(ctn_buckling_options): ctn_buckling_options_default sets
+                             it (catena/analysis.h); keys are only ever added at the end */
+    int count;            /* the number of buckling factors N >= 1, the lowest positive
+                             (0: no buckling analysis; the default) */
+    int line;             /* the model file's `buckling` line, named by its errors (0: none) */
+} ctn_buckling_options;
+
 /* Solver options; ctn_solve_options_default() fills the defaults. */
 typedef struct ctn_solve_options {
     size_t size;          /* sizeof(ctn_solve_options): ctn_solve_options_default sets it;
@@ -138,6 +149,9 @@ typedef struct ctn_solve_options {
                              the current tangent, preconditioned by it) instead of factoring
                              again (default 1; 0: factor every iteration). Pure Newton
                              always factors */
+    ctn_buckling_options buckling; /* after a converged solve (and its modes), the static
+                             analysis runs the buckling analysis with these when
+                             buckling.count > 0 (the file's `buckling` line) */
 } ctn_solve_options;
 
 /* Fill the defaults (and size). Options belong to a solve, not to a model: a model file's `solve`

@@ -7,7 +7,7 @@
 #include <string.h>
 
 static const ctn_analysis_ops *const registry[] = {
-    &ctn_analysis_static, &ctn_analysis_stability, &ctn_analysis_modal,
+    &ctn_analysis_static, &ctn_analysis_stability, &ctn_analysis_modal, &ctn_analysis_buckling,
 };
 #define NKINDS (sizeof registry / sizeof registry[0])
 

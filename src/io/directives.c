@@ -464,6 +464,23 @@ static int d_modes(ctn_line *l)
     return CTN_OK;
 }
 
+static int d_buckling(ctn_line *l)
+{
+    ctn_buckling_options o = l->opt->buckling;
+    o.count = 0;
+    int rc = ctn_parse_positional(l, 0, "buckling count=N");
+    if (!rc && !ctn_parse_key(l, 1, "count")) return ctn_parse_missing(l, 1, NULL, "count", NULL);
+    if (!rc) rc = key_int(l, "count", 1, 0x7fffffff, &o.count);
+    if (!rc) rc = ctn_parse_leftovers(l, 1, "buckling");
+    if (rc) return rc;
+    o.line = l->line;
+    if (ctn_buckling_options_check(l->m->ctx, &o)) return options_error(l);
+    if (l->opt->buckling.count > 0)
+        return ctn_parse_error(l, "buckling: given twice (first on line %d)", l->opt->buckling.line);
+    l->opt->buckling = o;
+    return CTN_OK;
+}
+
 static int d_step(ctn_line *l)
 {
     int sub = 0;
@@ -536,6 +553,7 @@ static const directive directives[] = {
     { "lineload", ctn_parse_lineload }, { "case", ctn_parse_case },
     { "combination", ctn_parse_combination }, { "ice", ctn_parse_ice },
     { "wind", ctn_parse_wind },
+    { "buckling", d_buckling },
 };
 
 int ctn_parse_directive(ctn_line *l)

@@ -1,11 +1,13 @@
 /* Result files in a directory: result.json, nodes.csv, elements.csv, result.vtu (the
- * last step), modes.csv when the solution has modes, and for a run of several steps
+ * last step), modes.csv when the solution has modes, buckling.csv when it has buckling
+ * factors, and for a run of several steps
  * result_K.vtu for every step and
  * result.pvd listing them. Each is streamed by its writer (io/writer.h) into a staged
  * temporary (io/atomic.h), synced; only when all are staged is any renamed onto its
  * target. */
 #include "io/atomic.h"
 #include "io/writer.h"
+#include "catena/analysis.h"
 #include "catena/io.h"
 #include "core/ctx.h"
 #include "core/threads.h"
@@ -25,19 +27,22 @@ typedef struct job {
     char name[CTN_VTU_NAME_MAX];
 } job;
 
-/* The set for solution s of n steps: NFIXED files, modes.csv when s has modes, and n + 1
+/* The set for solution s of n steps: NFIXED files, modes.csv when s has modes,
+ * buckling.csv when it has buckling factors, and n + 1
  * more (result_K.vtu, result.pvd) when n > 1. */
 static job *plan(ctn_ctx *ctx, const ctn_solution *s, size_t *count)
 {
     static const ctn_writer_ops *const fixed[NFIXED] = {
         &ctn_writer_json, &ctn_writer_nodes_csv, &ctn_writer_elements_csv, &ctn_writer_vtu
     };
-    size_t n = ctn_solution_step_count(s), nf = NFIXED + (ctn_solution_mode_count(s) > 0);
+    size_t n = ctn_solution_step_count(s), nm = ctn_solution_mode_count(s) > 0;
+    size_t nf = NFIXED + nm + (ctn_solution_buckling_count(s) > 0);
     *count = nf + (n > 1 ? n + 1 : 0);
     job *j = ctn_calloc(ctx, *count, sizeof *j);
     if (!j) return NULL;
     for (size_t i = 0; i < *count; i++) {
-        const ctn_writer_ops *ops = i < NFIXED ? fixed[i] : i < nf ? &ctn_writer_modes_csv
+        const ctn_writer_ops *ops = i < NFIXED ? fixed[i] : i < NFIXED + nm ? &ctn_writer_modes_csv
+                                    : i < nf ? &ctn_writer_buckling_csv
                                     : i + 1 < *count ? &ctn_writer_vtu : &ctn_writer_pvd;
         j[i].ops = ops;
         j[i].step = i < nf || i + 1 == *count ? n - 1 : i - nf;

@@ -14,6 +14,7 @@
  * for no array (a value the model does not know) or for several, numbered NAME_1,
  * NAME_2, ... (e.g. one array per vibration mode). To add an array, add one entry. */
 #include "io/writer.h"
+#include "catena/analysis.h"
 
 #include <stdio.h>
 
@@ -124,6 +125,21 @@ static int point_mode(const vtu_data *d, size_t j, size_t i, double *v)
     return CTN_OK;
 }
 
+/* buckling_1 .. buckling_n: the shapes of the buckling analysis about the last step
+ * (largest component 1), in that step's files only. */
+static size_t buckling_count(const vtu_data *d)
+{
+    return d->k + 1 == ctn_solution_step_count(d->s) ? ctn_solution_buckling_count(d->s) : 0;
+}
+
+static int point_buckling(const vtu_data *d, size_t j, size_t i, double *v)
+{
+    ctn_buckling_mode b;
+    if (ctn_solution_buckling(d->s, j, &b) || i >= ctn_model_node_count(d->m)) return CTN_ERR_INVALID;
+    for (int c = 0; c < 3; c++) v[c] = b.shape[3 * i + (size_t)c];
+    return CTN_OK;
+}
+
 /* The arrays, one entry each. */
 static const vtu_field fields[] = {
     { "displacement", VTU_POINT, 3, 0, NULL, 0, point_displacement },
@@ -136,6 +152,7 @@ static const vtu_field fields[] = {
     { "slack", VTU_CELL, 1, 1, NULL, 0, cell_slack },
     { "utilisation", VTU_CELL, 1, 0, has_capacity, 0, cell_utilisation },
     { "mode", VTU_POINT, 3, 0, mode_count, 1, point_mode },
+    { "buckling", VTU_POINT, 3, 0, buckling_count, 1, point_buckling },
 };
 
 #define NFIELDS (sizeof fields / sizeof *fields)

@@ -33,4 +33,26 @@ void dpotrs_(const char *uplo, const int *n, const int *nrhs, const double *a, c
 void dtrsv_(const char *uplo, const char *ta, const char *diag, const int *n, const double *a, const int *lda,
             double *x, const int *incx, size_t lu, size_t lt, size_t ld);
 
+/* The symmetric-definite pencil reduced to standard form: A <- U^-T A U^-1 (itype 1,
+ * uplo "U"), B = U^T U from dpotrf */
+void dsygst_(const int *itype, const char *uplo, const int *n, double *a, const int *lda, const double *b,
+             const int *ldb, int *info, size_t lu);
+/* A = Q T Q^T, T tridiagonal (d, e), Q by its reflectors (in A, tau) */
+void dsytrd_(const char *uplo, const int *n, double *a, const int *lda, double *d, double *e, double *tau,
+             double *work, const int *lwork, int *info, size_t lu);
+/* All eigenvalues of a symmetric tridiagonal matrix, ascending in d (d, e overwritten) */
+void dsterf_(const int *n, double *d, double *e, int *info);
+/* Selected eigenvalues of a symmetric tridiagonal matrix by bisection (order "B": by
+ * block, with iblock and isplit for dstein) */
+void dstebz_(const char *range, const char *order, const int *n, const double *vl, const double *vu, const int *il,
+             const int *iu, const double *abstol, const double *d, const double *e, int *m, int *nsplit, double *w,
+             int *iblock, int *isplit, double *work, int *iwork, int *info, size_t lr, size_t lo);
+/* Their eigenvectors by inverse iteration */
+void dstein_(const int *n, const double *d, const double *e, const int *m, const double *w, const int *iblock,
+             const int *isplit, double *z, const int *ldz, double *work, int *iwork, int *ifail, int *info);
+/* C <- Q C with Q of dsytrd */
+void dormtr_(const char *side, const char *uplo, const char *trans, const int *m, const int *n, const double *a,
+             const int *lda, const double *tau, double *c, const int *ldc, double *work, const int *lwork,
+             int *info, size_t ls, size_t lu, size_t lt);
+
 #endif

@@ -1,5 +1,6 @@
 /* Solver options, defaults and reason names. */
 #include "problem/problem.h"
+#include "problem/buckling_options.h"
 
 #include "core/versioned.h"
 
@@ -45,6 +46,7 @@ void ctn_solve_options_default(ctn_solve_options *opt)
     ctn_modal_options_default(&opt->modal);
     opt->threads = 0;
     opt->reuse = 1;
+    ctn_buckling_options_default(&opt->buckling);
 }
 
 int ctn_modal_options_fault(const ctn_modal_options *o, char *msg, size_t size)
@@ -95,6 +97,7 @@ int ctn_solve_options_fault(const ctn_solve_options *opt, char *msg, size_t size
         return snprintf(msg, size, "solve: reuse must be 0 or 1 (got %d)", opt->reuse), 1;
     if (opt->linear_solver && !ctn_linsolve_find(opt->linear_solver))
         return snprintf(msg, size, "solve: unknown linear solver '%.40s' (expected cholmod or cholmod-ldl)", opt->linear_solver), 1;
+    if (ctn_buckling_options_fault(&opt->buckling, msg, size)) return 1;
     return ctn_modal_options_fault(&opt->modal, msg, size);
 }
 
@@ -114,6 +117,7 @@ int ctn_solve_options_take(ctn_ctx *ctx, ctn_solve_options *dst, const ctn_solve
     if (!src) return CTN_OK;
     int rc = ctn_versioned_take(ctx, dst, sizeof *dst, src, "solve options");
     dst->modal.size = sizeof dst->modal;   /* the same layout as the caller's, or defaults */
+    dst->buckling.size = sizeof dst->buckling;
     return rc;
 }
 

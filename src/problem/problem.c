@@ -1,5 +1,6 @@
 /* The problem: setup once per model, residual and potential at a load parameter t,
  * factorization with an optional shift, solves. */
+#include "analysis/buckling/buckling.h"
 #include "analysis/modal/modal.h"
 #include "problem/la_options.h"
 
@@ -137,7 +138,8 @@ int ctn_problem_create_any(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_opt
     p->strategy = ctn_strategy_of(o.method);
     if (p->opt.steps < 1) p->opt.steps = 1;
     if (p->opt.maxcuts < 0) p->opt.maxcuts = p->strategy->maxcuts;
-    if ((rc = setup(p)) || (rc = modal_precheck(p))) {
+    if ((rc = setup(p)) || (rc = modal_precheck(p)) ||
+        (p->opt.buckling.count > 0 && (rc = ctn_buckling_check(p, &p->opt.buckling)))) {
         ctn_problem_destroy(&p);
         return rc;
     }

@@ -2,6 +2,7 @@
 #ifndef CTN_SOLVE_SOLUTION_H
 #define CTN_SOLVE_SOLUTION_H
 
+#include "catena/analysis.h"
 #include "catena/solve.h"
 #include "core/ctx.h"
 
@@ -24,6 +25,13 @@ typedef struct ctn_modes {
     double *shapes;            /* 3 nn per mode; mode[k].shape points into it */
 } ctn_modes;
 
+/* The factors of a buckling analysis (analysis/buckling/buckling_result.c). */
+typedef struct ctn_buckles {
+    ctn_buckling_summary sum;
+    ctn_buckling_mode *mode;   /* sum.count, lowest factor first */
+    double *shapes;            /* 3 nn per mode; mode[k].shape points into it */
+} ctn_buckles;
+
 struct ctn_solution {
     ctn_ctx *ctx;
     ctn_solve_summary sum;
@@ -34,6 +42,7 @@ struct ctn_solution {
     double *rhist, *dhist;     /* residual and increment norms */
     size_t nr, nd, capr, capd;
     ctn_modes *modes;          /* the last modal analysis, NULL if none */
+    ctn_buckles *buckling;     /* the last buckling analysis, NULL if none */
     int rot;                   /* some node has rotations: the steps keep rot and moment */
     struct ctn_solution **cases; /* the load cases then combinations of the model, one
                                   solution of one step each (cases.c); NULL if none */
@@ -55,5 +64,8 @@ int ctn_solution_push_increment(ctn_solution *s, double d);
 /* A zeroed set of count modes for nn nodes (shape pointers set); NULL when out of memory. */
 ctn_modes *ctn_modes_create(ctn_ctx *ctx, size_t count, size_t nn);
 void ctn_modes_destroy(ctn_modes **m);
+/* A zeroed set of count buckling modes for nn nodes; NULL when out of memory. */
+ctn_buckles *ctn_buckles_create(ctn_ctx *ctx, size_t count, size_t nn);
+void ctn_buckles_destroy(ctn_buckles **b);
 
 #endif

@@ -3,6 +3,7 @@
  * halved (cut back) up to maxcuts times; the state of each step is kept. Arc-length has
  * its own driver (arclength.c). */
 #include "analysis/analysis.h"
+#include "analysis/buckling/buckling.h"
 #include "problem/la_options.h"
 
 #include <math.h>
@@ -203,6 +204,8 @@ static int static_solve(ctn_problem *p, ctn_solution **out)
         if (!rc && s->sum.reason == CTN_CONVERGED) rc = check_stability(p, s);
         if (s->sum.reason == CTN_CONVERGED) s->sum.fail_element = 0;
         if (!rc && s->sum.reason == CTN_CONVERGED && p->opt.modal.count > 0) rc = ctn_problem_modes(p, s, &p->opt.modal);
+        if (!rc && s->sum.reason == CTN_CONVERGED && p->opt.buckling.count > 0)
+            rc = ctn_problem_buckling(p, s, &p->opt.buckling);
         if (!rc && s->sum.reason == CTN_CONVERGED && !p->max_steps && ctn_model_case_count(p->m)) rc = ctn_problem_cases(p, s);
         if (!s->sum.fext_norm) s->sum.fext_norm = ctn_problem_fref(p);
         s->sum.ordering = p->ls ? ctn_ordering_of_la(ctn_linsolve_ordering(p->ls)) : CTN_ORDER_NATURAL;
