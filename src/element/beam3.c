@@ -7,9 +7,13 @@
  * corotated frame r1 = chord / l, r3 = r1 x q / |r1 x q| with q the mean of the two
  * triads' y axes, r2 = r3 x r1; the local rotations theta_a = log(Rr^T T_a), small in
  * a well-meshed member. Energy (Euler-Bernoulli, or Timoshenko with shear areas):
- *   U = EA (l - L0)^2 / (2 L0)
+ *   U = EA (l - L0 + b_y + b_z)^2 / (2 L0)
  *     + sum over y, z: c0 (theta_1^2 + theta_2^2) + c1 theta_1 theta_2
  *     + G J (theta_2x - theta_1x)^2 / (2 L0),
+ * b = L0 (2 theta_1^2 - theta_1 theta_2 + 2 theta_2^2) / 30 the bowing about y and z
+ * (the integral of w'^2 / 2 of the cubic deflection: the local axial strain of a
+ * shallow arch, which gives the consistent geometric stiffness, so Euler's load
+ * converges at O(h^4)),
  * c0 = EI (4 + phi) / (2 L0 (1 + phi)), c1 = EI (2 - phi) / (L0 (1 + phi)),
  * phi = 12 EI / (G As L0^2) (0 without shear areas). The forces are its gradient and
  * the tangent its Hessian in the DOFs, both exact: the energy is evaluated on
@@ -112,9 +116,17 @@ static int kinematics(const ctn_beam_props *p, const double *X, const double *u,
 /* U of the chord length and the local rotations (the header's energy). */
 static void energy(const ctn_beam_props *p, const ctn_jet *l, ctn_jet th[2][3], ctn_jet *U)
 {
-    ctn_jet a, b;
+    ctn_jet a, b, w;
     ctn_jet_const(&a, p->L0);
     ctn_jet_lin(&a, 1, l, -1, &a);                     /* l - L0 */
+    for (int k = 1; k < 3; k++) {                      /* + the bowing, int w'^2 / 2 */
+        ctn_jet_mul(&w, &th[0][k], &th[0][k]);
+        ctn_jet_mul(&b, &th[1][k], &th[1][k]);
+        ctn_jet_lin(&w, 2, &w, 2, &b);
+        ctn_jet_mul(&b, &th[0][k], &th[1][k]);
+        ctn_jet_lin(&w, 1, &w, -1, &b);
+        ctn_jet_lin(&a, 1, &a, p->L0 / 30, &w);
+    }
     ctn_jet_mul(U, &a, &a);
     ctn_jet_lin(U, 0.5 * p->EA / p->L0, U, 0, U);
     const double c0[3] = { 0, p->cy0, p->cz0 }, c1[3] = { 0, p->cy1, p->cz1 };
@@ -129,6 +141,16 @@ static void energy(const ctn_beam_props *p, const ctn_jet *l, ctn_jet th[2][3], 
     ctn_jet_lin(&a, 1, &th[1][0], -1, &th[0][0]);
     ctn_jet_mul(&a, &a, &a);
     ctn_jet_lin(U, 1, U, 0.5 * p->kt, &a);
+}
+
+/* The member's stretch l - L0 plus its bowing (the values of energy()'s), whose EA / L0
+ * times is the axial force N. */
+static double stretch(const ctn_beam_props *p, double l, const double t[2][3])
+{
+    double s = l - p->L0;
+    for (int k = 1; k < 3; k++)
+        s += p->L0 / 30 * (2 * t[0][k] * t[0][k] - t[0][k] * t[1][k] + 2 * t[1][k] * t[1][k]);
+    return s;
 }
 
 /* The jet variable of each of the 12 DOFs and its sign (the chord is x2 - x1). */
@@ -149,7 +171,10 @@ int ctn_beam_eval(const void *props, unsigned mode, const double *X, const doubl
             K[ctn_packed_index(12, i, j)] = dof_sign[i] * dof_sign[j] * U.h[ctn_packed_index(CTN_JET_N, a, b)];
         }
     if (out) {
-        double eps = (l.v - p->L0) / p->L0, N = p->EA * eps;
+        double t[2][3];
+        for (int a = 0; a < 2; a++)
+            for (int k = 0; k < 3; k++) t[a][k] = th[a][k].v;
+        double eps = stretch(p, l.v, t) / p->L0, N = p->EA * eps;
         *out = (ctn_elem_state){ l.v, eps, N, (mode & CTN_EVAL_STRESS) ? N / p->A : 0, U.v, 0 };
     }
     return 0;
@@ -159,9 +184,10 @@ int ctn_beam_end_forces(const ctn_beam_props *p, const double *X, const double *
 {
     ctn_jet l, th[2][3];
     if (kinematics(p, X, u, &l, th)) return 1;
-    double t[2][3], N = p->EA * (l.v - p->L0) / p->L0;
+    double t[2][3];
     for (int a = 0; a < 2; a++)
         for (int k = 0; k < 3; k++) t[a][k] = th[a][k].v;
+    double N = p->EA * stretch(p, l.v, t) / p->L0;
     double T = p->kt * (t[1][0] - t[0][0]);
     double My[2] = { 2 * p->cy0 * t[0][1] + p->cy1 * t[1][1], 2 * p->cy0 * t[1][1] + p->cy1 * t[0][1] };
     double Mz[2] = { 2 * p->cz0 * t[0][2] + p->cz1 * t[1][2], 2 * p->cz0 * t[1][2] + p->cz1 * t[0][2] };
