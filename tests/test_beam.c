@@ -382,6 +382,42 @@ static void test_shapes(void)
     ctn_ctx_destroy(&ctx);
 }
 
+/* Modes of a cantilever beam (L = 100, r^2 / L^2 = 1e-6: the rotary inertia is below
+ * the checks): the first bending frequency about each axis against Euler-Bernoulli's
+ * 1.8751^2 / (2 pi) sqrt(EI / (m L^4)), O(h^2) from below with both mass matrices. */
+static double beam_mode_error(int n, const char *mass, int mode)
+{
+    char text[768];
+    snprintf(text, sizeof text,
+             "units kN m\nmaterial steel E=2.1e8 nu=0.3\n"
+             "section s material=steel A=1e-2 Iy=1e-4 Iz=2e-4 J=3e-4 mass=0.0785\n"
+             "node 1 0 0 0 fix=xyzrxryrz\nnode 2 100 0 0\n"
+             "beam 1 1 2 section=s orient=0,0,1 n=%d\nmodes count=2 mass=%s\n", n, mass);
+    run r = run_text("modes.cable", text);
+    double err = NAN;
+    ctn_mode md;
+    if (r.rc == CTN_OK && ctn_solution_mode_count(r.s) == 2 && !ctn_solution_mode(r.s, (size_t)mode, &md)) {
+        double I = mode ? 2e-4 : 1e-4, f = 1.8751040687119611 * 1.8751040687119611 / (2 * PI) *
+                                           sqrt(2.1e8 * I / (0.0785 * 1e8));
+        err = md.frequency / f - 1;
+    }
+    CHECK_MSG(r.rc == CTN_OK, "%s", ctn_ctx_message(r.ctx));
+    done(&r);
+    return err;
+}
+
+static void test_modes(void)
+{
+    for (int mode = 0; mode < 2; mode++) {
+        double c20 = beam_mode_error(20, "consistent", mode), c40 = beam_mode_error(40, "consistent", mode);
+        double l20 = beam_mode_error(20, "lumped", mode), l40 = beam_mode_error(40, "lumped", mode);
+        CHECK_MSG(c40 < 0 && fabs(c40) < 1e-4 && fabs(l40) < 5e-4, "mode %d: %g %g", mode, c40, l40);
+        CHECK_MSG(fabs(c20 / c40 - 4) < 0.3 && fabs(l20 / l40 - 4) < 0.3, "mode %d: not O(h^2): %g %g, %g %g", mode,
+                  c20, c40, l20, l40);
+        CHECK(l40 < c40);                               /* the lumped mass is the lower */
+    }
+}
+
 int main(void)
 {
     test_shapes();
@@ -391,5 +427,6 @@ int main(void)
     test_rigid();
     test_truss();
     test_guyed_mast();
+    test_modes();
     CHECK_DONE();
 }

@@ -38,7 +38,7 @@ typedef struct sample {
     ctn_ctx *ctx;
     ctn_model *m;
     const ctn_element_ops *ops;
-    double props[16];   /* room for any family's properties (asserted) */
+    double props[32];   /* room for any family's properties (asserted) */
     int nn;             /* nodes: the family's count, 3 when it takes any (pulley) */
     double X[3 * MAXN];
 } sample;

@@ -539,7 +539,7 @@ static void test_errors(void)
     expect_error(text, CTN_ERR_MODEL, "bad.cable:7: count must be an integer from 1");
     expect_error("units N m\nmaterial steel E=2e11\nsection s material=steel A=1e-6\n"
                  "node 1 0 0 0 fix=xyz\nnode 2 1 0 0 fix=xyz\ncable 1 2 section=s n=2 length=1 shape=straight N0=100\n"
-                 "modes count=1\n", CTN_ERR_MODEL, "bad.cable:7: modes: the model has no mass");
+                 "modes count=1\n", CTN_ERR_MODEL, "bad.cable:7: modes: no free DOF carries mass");
     expect_error("material steel E=2e11\nsection s material=steel A=1e-6 w=1\ngravity 0 -1 0\n"
                  "node 1 0 0 0 fix=xyz\nnode 2 1 0 0 fix=xyz\ncable 1 2 section=s n=2 length=1.1\n"
                  "modes count=1\n", CTN_ERR_MODEL, "bad.cable:2: section 's': its weight w=1 gives no mass");

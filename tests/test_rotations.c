@@ -6,8 +6,8 @@
  * - a mixed model (a cable chain with a rotational spring at one of its nodes) solves
  *   with the cable's results bit for bit those of the chain alone;
  * - the writers add rotations and moments (JSON, CSV, VTU) only for such a model;
- * - model errors: fix=rz and a moment on a node without rotations (file:line), modal
- *   analysis refused;
+ * - model errors: fix=rz and a moment on a node without rotations (file:line), a modal
+ *   analysis whose only free DOF is a massless rotation;
  * - a section's beam constants (Iy, Iz, J, Asy, Asz) and a material's G are read and
  *   kept; a negative one and an unknown key are errors;
  * - every allocation of read + solve failed in turn: a clean error, no leak. */
@@ -138,7 +138,7 @@ static void test_errors(void)
     expect_error("node 1 0 0 0 fix=xyzrxryrz\nnode 2 1 0 0 fix=xyz\nrspring 1 1 2 k=200\ndisplace 2 rz=1\n",
                  "bad.cable:4: node 2: rz is not fixed; only fixed DOFs take a prescribed rotation");
     expect_error("node 1 0 0 0 fix=xyzrxryrz\nnode 2 1 0 0 fix=xyz mass=1\nrspring 1 1 2 k=200\nmodes count=1\n",
-                 "modal analysis of a model with rotations");
+                 "bad.cable:4: modes: no free DOF carries mass");   /* the rotation has none */
 }
 
 static void test_section_keys(void)

@@ -14,6 +14,7 @@ typedef struct ctn_beam_props {
     double e2[3], e3[3];/* the local y and z axes in the reference state */
     double rhoA;        /* mass per unit length (mass op) */
     double rhoJ;        /* rotary inertia per unit length about the axis, rhoA (Iy + Iz) / A */
+    double rhoIy, rhoIz;/* ... about the local y and z axes, rhoA Iy / A, rhoA Iz / A */
 } ctn_beam_props;
 
 /* The kernel (the family's eval, element.h). */

@@ -100,6 +100,37 @@ static void beam_setup(const ctn_model *m, size_t e, void *props)
     p->kt = G * s->J / L;
     p->rhoA = ctn_model_section_mass(m, el->section);
     p->rhoJ = p->rhoA > 0 ? p->rhoA * (s->Iy + s->Iz) / s->A : 0;
+    p->rhoIy = p->rhoA > 0 ? p->rhoA * s->Iy / s->A : 0;
+    p->rhoIz = p->rhoA > 0 ? p->rhoA * s->Iz / s->A : 0;
+}
+
+/* Mass (modal analysis): the translations' rhoA L0 and the rotations' rotary inertia
+ * (rho (Iy + Iz) about the member, rho Iy and rho Iz about its local y and z, per length,
+ * as a tensor in global axes) shared between the nodes by linear interpolation
+ * (consistent: L0/3 at a node, L0/6 between them) or half at each node (lumped). The
+ * bending's Hermite mass is not taken: the translations are interpolated as the cable's,
+ * so the modes converge at O(h^2), from above (consistent) or below (lumped). */
+static void beam_mass(const void *props, const double *X, int lumped, double *M)
+{
+    const ctn_beam_props *p = props;
+    (void)X;
+    const double *e2 = p->e2, *e3 = p->e3;
+    const double e1[3] = { e2[1] * e3[2] - e2[2] * e3[1], e2[2] * e3[0] - e2[0] * e3[2], e2[0] * e3[1] - e2[1] * e3[0] };
+    double d = lumped ? 0.5 : 1.0 / 3, o = lumped ? 0.0 : 1.0 / 6, J[3][3];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            J[i][j] = p->L0 * (p->rhoJ * e1[i] * e1[j] + p->rhoIy * e2[i] * e2[j] + p->rhoIz * e3[i] * e3[j]);
+    for (int t = 0; t < 78; t++) M[t] = 0.0;
+    double m = p->rhoA * p->L0;
+    for (int a = 0; a < 2; a++)
+        for (int b = a; b < 2; b++) {
+            double w = a == b ? d : o;
+            for (int i = 0; i < 3; i++) {
+                M[ctn_packed_index(12, 6 * a + i, 6 * b + i)] = w * m;
+                for (int j = 0; j < 3; j++)
+                    if (a < b || j >= i) M[ctn_packed_index(12, 6 * a + 3 + i, 6 * b + 3 + j)] = w * J[i][j];
+            }
+        }
 }
 
 static void beam_load(const ctn_model *m, size_t e, double *f)
@@ -121,5 +152,5 @@ const ctn_element_ops ctn_beam3_ops = {
     .name = "beam", .nnodes = 2, .ndof_node = 6, .props_size = sizeof(ctn_beam_props),
     .flags = CTN_ELEM_SECTION | CTN_ELEM_FINITE_ROTATION,
     .check = beam_check, .params = beam_params, .setup = beam_setup, .eval = ctn_beam_eval, .load = beam_load,
-    .stiffness = beam_stiffness,
+    .stiffness = beam_stiffness, .mass = beam_mass,
 };

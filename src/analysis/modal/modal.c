@@ -23,8 +23,8 @@ int ctn_modal_check(ctn_problem *p, const ctn_modal_options *o, double *diag, do
 {
     char msg[256];
     size_t bad, nmass = 0;
-    if (p->a->map.rot)                   /* mode shapes are stored 3 per node */
-        return modal_error(p, o, "modes: modal analysis of a model with rotations (6-DOF nodes, such as rspring's) is not supported yet");
+    /* nodes with rotations: their rotary inertia is in M where a family gives it (the
+       beam's); the shapes keep the translations (3 per node) */
     if ((size_t)o->count > p->ndof) {
         snprintf(msg, sizeof msg, "modes: count=%d is more than the %zu free DOFs", o->count, p->ndof);
         return modal_error(p, o, msg);
@@ -36,7 +36,7 @@ int ctn_modal_check(ctn_problem *p, const ctn_modal_options *o, double *diag, do
                             "in a model without units: give mass= (or units)", sec->name, sec->w);
     }
     for (size_t q = 0; q < p->ndof; q++) nmass += diag[q] > 0;
-    if (nmass == 0) return modal_error(p, o, "modes: the model has no mass (give a section mass= or w= with units, or a node mass=)");
+    if (nmass == 0) return modal_error(p, o, "modes: no free DOF carries mass (give a section mass= or w= with units, or a node mass=; a rotation takes mass from a beam's section)");
     if ((size_t)o->count > nmass) {
         snprintf(msg, sizeof msg, "modes: count=%d is more than the %zu free DOFs that carry mass", o->count, nmass);
         return modal_error(p, o, msg);
