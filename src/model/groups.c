@@ -87,10 +87,11 @@ static int thermal(const ctn_model *m, size_t e)
     return ctn_element_family(m->elements.v[e].type)->temperature != NULL;
 }
 
-static int resolve_target(ctn_model *m, const char *target, ctn_tload *t)
+int ctn_model_load_target(ctn_model *m, const char *what, const char *target,
+                          int (*accepts)(const ctn_model *, size_t), const char *refusal, int *kind, int *index)
 {
     if (!strcmp(target, "all")) {
-        t->kind = CTN_TARGET_ALL;
+        *kind = CTN_TARGET_ALL;
         return CTN_OK;
     }
     if (isdigit((unsigned char)*target) || *target == '-' || *target == '+') {
@@ -98,19 +99,20 @@ static int resolve_target(ctn_model *m, const char *target, ctn_tload *t)
         errno = 0;
         long id = strtol(target, &end, 10);
         int e = *end || errno || id <= 0 || id > 0x7fffffff ? -1 : ctn_idmap_get(&m->element_ids, (int)id);
-        if (e < 0) return ctn_model_error(m, CTN_ERR_MODEL, "temperature: undefined element '%.40s'", target);
-        if (!thermal(m, (size_t)e))
-            return ctn_model_error(m, CTN_ERR_MODEL, "temperature: element %ld is a %s, which has no thermal expansion",
-                                   id, ctn_element_family(m->elements.v[e].type)->name);
-        t->kind = CTN_TARGET_ELEMENT;
-        t->target = e;
+        if (e < 0) return ctn_model_error(m, CTN_ERR_MODEL, "%s: undefined element '%.40s'", what, target);
+        if (!accepts(m, (size_t)e))
+            return ctn_model_error(m, CTN_ERR_MODEL, "%s: element %ld is a %s%s", what, id,
+                                   ctn_element_family(m->elements.v[e].type)->name, refusal);
+        *kind = CTN_TARGET_ELEMENT;
+        *index = e;
         return CTN_OK;
     }
     int g = ctn_model_find_group(m, target);
     if (g < 0)
-        return ctn_model_error(m, CTN_ERR_MODEL, "temperature: '%.63s' is not 'all', an element id or a defined group", target);
-    t->kind = CTN_TARGET_GROUP;
-    t->target = g;
+        return ctn_model_error(m, CTN_ERR_MODEL, "%s: '%.63s' is not 'all', an element id or a defined group", what,
+                               target);
+    *kind = CTN_TARGET_GROUP;
+    *index = g;
     return CTN_OK;
 }
 
@@ -120,7 +122,8 @@ int ctn_model_add_temperature(ctn_model *m, const char *target, double dT)
     if (!isfinite(dT) || fabs(dT) > 1e4)
         return ctn_model_error(m, CTN_ERR_MODEL, "temperature: dT must be finite and at most 1e4 K in size (got %g)", dT);
     ctn_tload t = { 0, -1, dT, ctn_model_load_tag(m), m->line };
-    int rc = resolve_target(m, target, &t);
+    int rc = ctn_model_load_target(m, "temperature", target, thermal, ", which has no thermal expansion", &t.kind,
+                                   &t.target);
     if (!rc) rc = CTN_ARRAY_RESERVE(m->ctx, m->tloads, 1);
     if (rc) return rc;
     for (size_t i = 0; i < m->elements.n; i++) {   /* 1 + alpha dT must stay positive */

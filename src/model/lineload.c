@@ -5,8 +5,6 @@
  * would not be exact: a catenary element's curve, a pulley's sliding segments. */
 #include "element/element.h"
 
-#include <ctype.h>
-#include <errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -30,32 +28,9 @@ int ctn_lload_on(const ctn_model *m, const ctn_lload *l, size_t e)
 /* TARGET: all, an element id (a cable element) or a defined group. */
 static int resolve(ctn_model *m, const char *target, ctn_lload *l)
 {
-    const char *what = l->drag ? "wind" : "lineload";
-    if (!strcmp(target, "all")) {
-        l->kind = CTN_TARGET_ALL;
-        return CTN_OK;
-    }
-    if (isdigit((unsigned char)*target) || *target == '-' || *target == '+') {
-        char *end;
-        errno = 0;
-        long id = strtol(target, &end, 10);
-        int e = *end || errno || id <= 0 || id > 0x7fffffff ? -1 : ctn_idmap_get(&m->element_ids, (int)id);
-        if (e < 0) return ctn_model_error(m, CTN_ERR_MODEL, "%s: undefined element '%.40s'", what, target);
-        if (!is_cable(m, (size_t)e))
-            return ctn_model_error(m, CTN_ERR_MODEL, "%s: element %ld is a %s; a load per length is lumped exactly "
-                                   "on cable elements only (mesh the span with cable)", what, id,
-                                   ctn_element_family(m->elements.v[e].type)->name);
-        l->kind = CTN_TARGET_ELEMENT;
-        l->target = e;
-        return CTN_OK;
-    }
-    int g = ctn_model_find_group(m, target);
-    if (g < 0)
-        return ctn_model_error(m, CTN_ERR_MODEL, "%s: '%.63s' is not 'all', an element id or a defined group", what,
-                               target);
-    l->kind = CTN_TARGET_GROUP;
-    l->target = g;
-    return CTN_OK;
+    return ctn_model_load_target(m, l->drag ? "wind" : "lineload", target, is_cable,
+                                 "; a load per length is lumped exactly on cable elements only (mesh the span with "
+                                 "cable)", &l->kind, &l->target);
 }
 
 int ctn_model_add_lineload(ctn_model *m, const char *target, const double q[3])

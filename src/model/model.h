@@ -294,6 +294,12 @@ void ctn_spec_copy(void *dst, size_t dst_size, const void *src);
 int ctn_model_check_parts(const ctn_model *m);
 
 int ctn_model_find_section(const ctn_model *m, const char *name);
+/* A load's TARGET (groups.c): "all", an element id or a defined group, into *kind
+ * (CTN_TARGET_*) and *index (the element's or group's index). An element the family
+ * test accepts() refuses is a model error "WHAT: element ID is a FAMILY" + refusal;
+ * an undefined id or name is one too. */
+int ctn_model_load_target(ctn_model *m, const char *what, const char *target,
+                          int (*accepts)(const ctn_model *, size_t), const char *refusal, int *kind, int *index);
 /* Group index of a name, -1 if none (groups.c). */
 int ctn_model_find_group(const ctn_model *m, const char *name);
 /* Group index of name, created (named at the current line) if new; a model error if the
