@@ -2,26 +2,11 @@
  * whole) and "buckling" (one object per factor, lowest first: factor, node, residual,
  * shape). docs/format.md, "buckling". */
 #include "io/json_buckling.h"
+#include "io/json_modes.h"
 
 #include "catena/analysis.h"
 
 #include <math.h>
-
-static void put_shape(ctn_jw *j, const ctn_model *m, const double *shape)
-{
-    ctn_jw_array(j, "shape");
-    for (size_t i = 0; i < ctn_model_node_count(m); i++) {
-        ctn_node_info n;
-        ctn_model_node(m, i, &n);
-        ctn_jw_object(j, NULL);
-        ctn_jw_number(j, "node", n.id);
-        ctn_jw_number(j, "ux", shape[3 * i]);
-        ctn_jw_number(j, "uy", shape[3 * i + 1]);
-        ctn_jw_number(j, "uz", shape[3 * i + 2]);
-        ctn_jw_end(j);
-    }
-    ctn_jw_end(j);
-}
 
 void ctn_json_put_buckling(ctn_jw *j, const ctn_model *m, const ctn_solution *s)
 {
@@ -43,7 +28,7 @@ void ctn_json_put_buckling(ctn_jw *j, const ctn_model *m, const ctn_solution *s)
         ctn_jw_number(j, "factor", b.factor);
         ctn_jw_number(j, "node", b.node);
         ctn_jw_number(j, "residual", b.residual);
-        put_shape(j, m, b.shape);
+        ctn_json_put_shape(j, m, b.shape);
         ctn_jw_end(j);
     }
     ctn_jw_end(j);

@@ -36,7 +36,7 @@ static void put_modal(ctn_jw *j, const ctn_modal_summary *ms)
     ctn_jw_end(j);
 }
 
-static void put_shape(ctn_jw *j, const ctn_model *m, const double *shape)
+void ctn_json_put_shape(ctn_jw *j, const ctn_model *m, const double *shape)
 {
     ctn_jw_array(j, "shape");
     for (size_t i = 0; i < ctn_model_node_count(m); i++) {
@@ -70,7 +70,7 @@ static void put_mode(ctn_jw *j, const ctn_model *m, size_t k, const ctn_mode *md
         for (int i = 0; i < md->nnodes && i < CTN_MODE_MAX_NODES; i++) ctn_jw_number(j, NULL, md->nodes[i]);
         ctn_jw_end(j);
     }
-    put_shape(j, m, md->shape);
+    ctn_json_put_shape(j, m, md->shape);
     ctn_jw_end(j);
 }
 
