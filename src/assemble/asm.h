@@ -158,8 +158,10 @@ const ctn_asm_block *ctn_asm_block_of(const ctn_asm *a, size_t e);
 const void *ctn_asm_props(const ctn_asm *a, size_t e);
 /* Temperature change dT (ne, model order) of every element whose family expands. */
 void ctn_asm_set_temperatures(ctn_asm *a, const double *dT);
-/* Properties of element e afresh from the model (after its l0 changed). */
-void ctn_asm_setup_element(ctn_asm *a, size_t e);
+/* Properties of element e afresh from the model (after its l0 changed), at the
+ * temperature change dT it is at (the one ctn_asm_set_temperatures gave it; 0 for none):
+ * a length that changes keeps the element's thermal state. */
+void ctn_asm_setup_element(ctn_asm *a, size_t e, double dT);
 
 /* Build steps of ctn_asm_create (blocks.c, pattern.c). */
 int ctn_asm_blocks(ctn_ctx *ctx, ctn_asm *a);

@@ -111,8 +111,10 @@ void ctn_asm_set_temperatures(ctn_asm *a, const double *dT)
     }
 }
 
-void ctn_asm_setup_element(ctn_asm *a, size_t e)
+void ctn_asm_setup_element(ctn_asm *a, size_t e, double dT)
 {
     const ctn_asm_block *b = ctn_asm_block_of(a, e);
-    b->ops->setup(a->m, e, a->props + b->props0 + (e - b->e0) * b->ops->props_size);
+    void *props = a->props + b->props0 + (e - b->e0) * b->ops->props_size;
+    b->ops->setup(a->m, e, props);
+    if (b->ops->temperature) b->ops->temperature(props, dT);
 }

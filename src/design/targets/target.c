@@ -50,12 +50,15 @@ static const char *name_of(const targets *tg, size_t j, char *buf, size_t size)
 
 /* ---- lengths, solves, sensitivities ---- */
 
+/* The length of target j (its elements keep the temperature the last solve left them at:
+ * the sensitivities are those of the heated or cooled cable). */
 static void set_length(targets *tg, size_t j, double L)
 {
     ctn_cable *c = tg->rec[j];
+    const double *dT = tg->p->dT;
     for (size_t e = c->first; e < c->first + c->count; e++) {
         tg->m->elements.v[e].l0 = L / (double)c->count;
-        ctn_asm_setup_element(tg->p->a, e);
+        ctn_asm_setup_element(tg->p->a, e, dT ? dT[e] : 0.0);
     }
     c->length = L;
 }
