@@ -70,13 +70,23 @@ static size_t walk(const ctn_problem *e, chains *c, int e0)
     return n + 1;
 }
 
-/* A free tip: a node of one flexible member and no support. */
+/* A tip: a node of one flexible member, free or held in some directions only (a rope's
+ * end on a slide); place_dangling checks that its supports admit the hanging place. */
 static int tip(const ctn_problem *e, const chains *c, int node)
 {
-    return c->deg[node] == 1 && e->m->nodes.v[node].fix == 0;
+    return c->deg[node] == 1 && (e->m->nodes.v[node].fix & 7u) != 7u;
 }
 
-/* A dangling chain (an anchor, then free nodes to a free tip) hangs, whatever its start,
+/* The hanging place of a tip held in some directions keeps its position along them. */
+static int admits(const ctn_problem *e, int node, const double *dn, double S)
+{
+    unsigned fix = e->m->nodes.v[node].fix;
+    for (int k = 0; k < 3; k++)
+        if ((fix & (1u << k)) && !(fabs(dn[k]) <= 1e-12 * S)) return 0;
+    return 1;
+}
+
+/* A dangling chain (an anchor, then free nodes to a tip) hangs, whatever its start,
  * along the resultant of its loads: a pendulum. Place it there, each member stretched by
  * CTN_PRESHAPE_STRAIN, so Newton starts next to the hanging state instead of swinging
  * the whole chain through a large rigid rotation. 1 if placed. */
@@ -92,13 +102,19 @@ static int place_dangling(const ctn_problem *e, const chains *c, size_t n, const
     rn = sqrt(R[0] * R[0] + R[1] * R[1] + R[2] * R[2]);
     if (!(rn > 0)) return 0;
     current(e, d, c->nodes[flip ? n - 1 : 0], a);
+    double S = 0, dtip[3];
+    for (size_t i = 1; i < n; i++) S += rest_length(e, c->elems[flip ? n - 1 - i : i - 1]) * (1 + CTN_PRESHAPE_STRAIN);
+    int t = c->nodes[flip ? 0 : n - 1];
+    for (int k = 0; k < 3; k++) dtip[k] = a[k] + S * R[k] / rn - e->m->nodes.v[t].X[k];
+    if (!admits(e, t, dtip, S)) return 0;        /* its supports hold it elsewhere */
     double s = 0;
     for (size_t i = 1; i < n; i++) {
         size_t j = flip ? n - 1 - i : i;
         int node = c->nodes[j];
         s += rest_length(e, c->elems[flip ? j : j - 1]) * (1 + CTN_PRESHAPE_STRAIN);
         double *dn = d + ctn_dofmap_node(&e->a->map, (size_t)node);
-        for (int k = 0; k < 3; k++) dn[k] = a[k] + s * R[k] / rn - e->m->nodes.v[node].X[k];
+        for (int k = 0; k < 3; k++)
+            if (!(node == t && (e->m->nodes.v[node].fix & (1u << k)))) dn[k] = a[k] + s * R[k] / rn - e->m->nodes.v[node].X[k];
     }
     return 1;
 }
@@ -195,6 +211,7 @@ static int place_catenary(const ctn_problem *e, const ctn_cable *cb, chains *c, 
     if (cb->start != CTN_START_AUTO || cb->shape != CTN_SHAPE_ARC || cb->count < 2 || c->seen[cb->first]) return 0;
     if (cb->target != CTN_TARGET_NONE && cb->resolved) return 0;   /* its start is the state found */
     if (!weight_only(e, cb, loads)) return 0;          /* the catenary of its weight is not its shape */
+    if (tip(e, c, cb->node[0]) || tip(e, c, cb->node[1])) return 0;   /* an end that is not held: it hangs */
     const ctn_element *el = &m->elements.v[cb->first];
     if (el->section < 0) return 0;
     const ctn_section *sec = &m->sections.v[el->section];
