@@ -22,9 +22,21 @@ typedef struct chains {
     unsigned char *seen; /* per element */
 } chains;
 
+/* A chain's interior node: two flexible members, free or held in some directions only
+ * (a plane model's nodes held out of its plane); every placement below keeps such a node
+ * where its supports hold it, or leaves the chain as it is (admits). */
 static int interior(const ctn_problem *e, const chains *c, int node)
 {
-    return c->deg[node] == 2 && e->m->nodes.v[node].fix == 0;
+    return c->deg[node] == 2 && (e->m->nodes.v[node].fix & 7u) != 7u;
+}
+
+/* A placement that moves node to displacement dn keeps it where its supports hold it. */
+static int admits(const ctn_problem *e, int node, const double *dn, double S)
+{
+    unsigned fix = e->m->nodes.v[node].fix;
+    for (int k = 0; k < 3; k++)
+        if ((fix & (1u << k)) && !(fabs(dn[k]) <= 1e-12 * S)) return 0;
+    return 1;
 }
 
 static void current(const ctn_problem *e, const double *d, int node, double x[3])
@@ -77,13 +89,12 @@ static int tip(const ctn_problem *e, const chains *c, int node)
     return c->deg[node] == 1 && (e->m->nodes.v[node].fix & 7u) != 7u;
 }
 
-/* The hanging place of a tip held in some directions keeps its position along them. */
-static int admits(const ctn_problem *e, int node, const double *dn, double S)
+/* Move node to displacement dn, its held directions left as they are (admits). */
+static void place(const ctn_problem *e, double *d, int node, const double *dn)
 {
-    unsigned fix = e->m->nodes.v[node].fix;
+    double *x = d + ctn_dofmap_node(&e->a->map, (size_t)node);
     for (int k = 0; k < 3; k++)
-        if ((fix & (1u << k)) && !(fabs(dn[k]) <= 1e-12 * S)) return 0;
-    return 1;
+        if (!(e->m->nodes.v[node].fix & (1u << k))) x[k] = dn[k];
 }
 
 /* A dangling chain (an anchor, then free nodes to a tip) hangs, whatever its start,
@@ -102,19 +113,17 @@ static int place_dangling(const ctn_problem *e, const chains *c, size_t n, const
     rn = sqrt(R[0] * R[0] + R[1] * R[1] + R[2] * R[2]);
     if (!(rn > 0)) return 0;
     current(e, d, c->nodes[flip ? n - 1 : 0], a);
-    double S = 0, dtip[3];
-    for (size_t i = 1; i < n; i++) S += rest_length(e, c->elems[flip ? n - 1 - i : i - 1]) * (1 + CTN_PRESHAPE_STRAIN);
-    int t = c->nodes[flip ? 0 : n - 1];
-    for (int k = 0; k < 3; k++) dtip[k] = a[k] + S * R[k] / rn - e->m->nodes.v[t].X[k];
-    if (!admits(e, t, dtip, S)) return 0;        /* its supports hold it elsewhere */
-    double s = 0;
-    for (size_t i = 1; i < n; i++) {
-        size_t j = flip ? n - 1 - i : i;
-        int node = c->nodes[j];
-        s += rest_length(e, c->elems[flip ? j : j - 1]) * (1 + CTN_PRESHAPE_STRAIN);
-        double *dn = d + ctn_dofmap_node(&e->a->map, (size_t)node);
-        for (int k = 0; k < 3; k++)
-            if (!(node == t && (e->m->nodes.v[node].fix & (1u << k)))) dn[k] = a[k] + s * R[k] / rn - e->m->nodes.v[node].X[k];
+    for (int pass = 0; pass < 2; pass++) {       /* check every node's place, then move */
+        double s = 0;
+        for (size_t i = 1; i < n; i++) {
+            size_t j = flip ? n - 1 - i : i;
+            int node = c->nodes[j];
+            s += rest_length(e, c->elems[flip ? j : j - 1]) * (1 + CTN_PRESHAPE_STRAIN);
+            double dn[3];
+            for (int k = 0; k < 3; k++) dn[k] = a[k] + s * R[k] / rn - e->m->nodes.v[node].X[k];
+            if (pass == 0 && !admits(e, node, dn, s)) return 0;   /* its supports hold it elsewhere */
+            if (pass == 1) place(e, d, node, dn);
+        }
     }
     return 1;
 }
@@ -138,14 +147,115 @@ static int place_chain(const ctn_problem *e, const chains *c, size_t n, double *
     if (n < 3 || poly > S || ctn_arc_make(a, b, e->m->gravity, S, &arc) || arc.alpha == 0 ||
         ctn_arc_stretched(&arc, a, b, e->m->gravity, S, lmax / S, CTN_PRESHAPE_STRAIN, &start))
         return 0;
-    double s = 0;
-    for (size_t i = 1; i + 1 < n; i++) {
-        double X[3];
-        s += rest_length(e, c->elems[i - 1]);
-        ctn_arc_point(&start, s / S, X);
-        double *dn = d + ctn_dofmap_node(&e->a->map, (size_t)c->nodes[i]);
-        for (int k = 0; k < 3; k++) dn[k] = X[k] - e->m->nodes.v[c->nodes[i]].X[k];
+    for (int pass = 0; pass < 2; pass++) {       /* check every node's place, then move */
+        double s = 0;
+        for (size_t i = 1; i + 1 < n; i++) {
+            double X[3], dn[3];
+            s += rest_length(e, c->elems[i - 1]);
+            ctn_arc_point(&start, s / S, X);
+            for (int k = 0; k < 3; k++) dn[k] = X[k] - e->m->nodes.v[c->nodes[i]].X[k];
+            if (pass == 0 && !admits(e, c->nodes[i], dn, S)) return 0;
+            if (pass == 1) place(e, d, c->nodes[i], dn);
+        }
     }
+    return 1;
+}
+
+/* Whether element el belongs to a generated cable that keeps the start its line asks
+ * for (start=arc or catenary given, shape=straight, or a target's state found). */
+static int keeps_start(const ctn_model *m, int el)
+{
+    for (size_t i = 0; i < m->cables.n; i++) {
+        const ctn_cable *cb = &m->cables.v[i];
+        if ((size_t)el < cb->first || (size_t)el >= cb->first + cb->count) continue;
+        return cb->start != CTN_START_AUTO || cb->shape != CTN_SHAPE_ARC ||
+               (cb->target != CTN_TARGET_NONE && cb->resolved);
+    }
+    return 0;
+}
+
+/* A chain of cable elements of one section and (nearly) one unstressed length whose
+ * interior nodes carry only loads of one direction, uniform per length (the weight of a
+ * chain of `element`s given as point loads, or any uniform load per length): it hangs
+ * as a weighted cable does, so it starts on the elastic catenary of that load through
+ * its anchors (issue 29, item 2), as a generated cable under its own weight does. The
+ * lengths may differ by less than half the start's stretch (CTN_LOADED_EPS), so every
+ * member still starts stretched; the loads per tributary length by CTN_LOADED_SPREAD
+ * (a chain of equal point loads on a shallow parabola's chords). Not where an element
+ * takes a horizontal load (per projected length) or wind (normal to the member): their
+ * shapes are not this catenary's; nor where a node lies beyond the chord against the
+ * load (an arch, a von Mises truss: the hanging shape is another equilibrium). 1 if
+ * placed. */
+#define CTN_LOADED_EPS 1e-4
+#define CTN_LOADED_SPREAD 1e-3
+static int place_loaded(const ctn_problem *e, const chains *c, size_t n, const double *loads, double *d)
+{
+    const ctn_model *m = e->m;
+    if (n < 3 || keeps_start(m, c->elems[0])) return 0;
+    for (size_t i = 0; i < m->lloads.n; i++)
+        if (m->lloads.v[i].drag) return 0;
+    const ctn_element *e0 = &m->elements.v[c->elems[0]];
+    if (e0->section < 0) return 0;
+    double S = 0, l0 = rest_length(e, c->elems[0]);
+    for (size_t i = 0; i + 1 < n; i++) {
+        size_t el = (size_t)c->elems[i];
+        double li = rest_length(e, c->elems[i]);
+        if (strcmp(ctn_asm_block_of(e->a, el)->ops->name, "cable") || m->elements.v[el].section != e0->section ||
+            !(fabs(li - l0) <= 0.5 * CTN_LOADED_EPS * l0))
+            return 0;
+        for (size_t h = 0; h < m->hloads.n; h++)
+            if (ctn_hload_on(m, &m->hloads.v[h], el)) return 0;
+        S += li;
+    }
+    /* q_i: node i's load per tributary length; one direction, one magnitude */
+    double q0[3] = { 0, 0, 0 }, qn = 0, W[3] = { 0, 0, 0 };
+    for (size_t i = 1; i + 1 < n; i++) {
+        double trib = 0.5 * (rest_length(e, c->elems[i - 1]) + rest_length(e, c->elems[i])), q[3];
+        for (int k = 0; k < 3; k++) {
+            q[k] = loads[3 * (size_t)c->nodes[i] + (size_t)k] / trib;
+            W[k] += loads[3 * (size_t)c->nodes[i] + (size_t)k];
+        }
+        if (i == 1) {
+            memcpy(q0, q, sizeof q0);
+            qn = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+            if (!(qn > 0)) return 0;
+            continue;
+        }
+        double x[3] = { q[1] * q0[2] - q[2] * q0[1], q[2] * q0[0] - q[0] * q0[2], q[0] * q0[1] - q[1] * q0[0] };
+        double dot = q[0] * q0[0] + q[1] * q0[1] + q[2] * q0[2];
+        if (!(sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) <= 1e-9 * qn * qn && dot > 0 &&
+              fabs(dot / qn - qn) <= CTN_LOADED_SPREAD * qn))
+            return 0;
+    }
+    double tribs = S - 0.5 * (rest_length(e, c->elems[0]) + rest_length(e, c->elems[n - 2]));
+    double w = sqrt(W[0] * W[0] + W[1] * W[1] + W[2] * W[2]) / tribs, g[3] = { q0[0] / qn, q0[1] / qn, q0[2] / qn };
+    const ctn_section *sec = &m->sections.v[e0->section];
+    double a[3], b[3], ch[3], c2 = 0;
+    current(e, d, c->nodes[0], a);
+    current(e, d, c->nodes[n - 1], b);
+    for (int k = 0; k < 3; k++) {
+        ch[k] = b[k] - a[k];
+        c2 += ch[k] * ch[k];
+    }
+    for (size_t i = 1; i + 1 < n && c2 > 0; i++) {  /* an arch (a node beyond the chord */
+        double x[3], t = 0, side = 0;                /* against the load) stays an arch */
+        current(e, d, c->nodes[i], x);
+        for (int k = 0; k < 3; k++) t += (x[k] - a[k]) * ch[k] / c2;
+        for (int k = 0; k < 3; k++) side += (x[k] - a[k] - t * ch[k]) * g[k];
+        if (side < -1e-12 * S) return 0;
+    }
+    ctn_catenary_place cat;
+    int ne = (int)(n - 1);
+    if (ctn_catenary_start(e->ctx, a, b, g, w, m->materials.v[sec->material].E * sec->A, S, ne, CTN_LOADED_EPS, &cat))
+        return 0;
+    for (int pass = 0; pass < 2; pass++)          /* check every node's place, then move */
+        for (size_t i = 1; i + 1 < n; i++) {
+            double X[3], dn[3];
+            ctn_catenary_start_point(&cat, (int)i, X);
+            for (int k = 0; k < 3; k++) dn[k] = X[k] - m->nodes.v[c->nodes[i]].X[k];
+            if (pass == 0 && !admits(e, c->nodes[i], dn, S)) return 0;
+            if (pass == 1) place(e, d, c->nodes[i], dn);
+        }
     return 1;
 }
 
@@ -244,7 +354,7 @@ int ctn_preshape(ctn_problem *e, double *d, int *count)
         if (c.seen[i]) continue;
         size_t n = walk(e, &c, (int)i);
         c.seen[i] = 1;
-        if (n) *count += place_dangling(e, &c, n, loads, d) || place_chain(e, &c, n, d);
+        if (n) *count += place_dangling(e, &c, n, loads, d) || place_loaded(e, &c, n, loads, d) || place_chain(e, &c, n, d);
     }
     ctn_free(c.deg);
     ctn_free(c.inc);
