@@ -81,11 +81,37 @@ static int has_beams(const ctn_model *m)
     return 0;
 }
 
+/* Whether an element has more than two nodes (a pulley): elements.csv then ends with a
+ * column `nodes`, every node id of the element in order, separated by spaces. */
+static int has_chains(const ctn_model *m)
+{
+    ctn_element_info e;
+    for (size_t i = 0; i < ctn_model_element_count(m); i++)
+        if (!ctn_model_element(m, i, &e) && e.nnodes > 2) return 1;
+    return 0;
+}
+
 static int elements_begin(void *p, const ctn_model *m, ctn_sink *sink)
 {
-    return csv_begin(p, m, sink, has_beams(m) ? "id,node1,node2,l0,length,strain,force,stress,slack,utilisation,group,"
-                                                "fx1,fy1,fz1,mx1,my1,mz1,fx2,fy2,fz2,mx2,my2,mz2\n"
-                                              : "id,node1,node2,l0,length,strain,force,stress,slack,utilisation,group\n");
+    int rc = csv_begin(p, m, sink, has_beams(m) ? "id,node1,node2,l0,length,strain,force,stress,slack,utilisation,group,"
+                                                  "fx1,fy1,fz1,mx1,my1,mz1,fx2,fy2,fz2,mx2,my2,mz2"
+                                                : "id,node1,node2,l0,length,strain,force,stress,slack,utilisation,group");
+    ctn_writer *w = p;
+    if (!rc) ctn_wbuf_puts(&w->out, has_chains(m) ? ",nodes\n" : "\n");
+    return rc ? rc : w->out.err;
+}
+
+/* The `nodes` field: the element's node ids in order, after a comma. */
+static int nodes_field(ctn_writer *w, const ctn_element_info *e)
+{
+    ctn_wbuf_putc(&w->out, ',');
+    for (int j = 0; j < e->nnodes; j++) {
+        ctn_node_info n;
+        if (ctn_model_node(w->m, (size_t)e->nodes[j], &n)) return ctn_writer_mismatch(w);
+        if (j) ctn_wbuf_putc(&w->out, ' ');
+        ctn_wbuf_int(&w->out, n.id);
+    }
+    return CTN_OK;
 }
 
 /* A beam's end forces in its local axes (ctn_solution_beam), 12 fields after a comma;
@@ -127,13 +153,14 @@ static int elements_step(void *p, const ctn_solution *s, size_t k)
 {
     ctn_writer *w = p;
     if (k + 1 < ctn_solution_step_count(s)) return CTN_OK;
-    int beams = has_beams(w->m);
+    int beams = has_beams(w->m), chains = has_chains(w->m);
     for (size_t i = 0; i < ctn_model_element_count(w->m) && !w->out.err; i++) {
         ctn_element_info e;
         ctn_element_state es;
         if (ctn_model_element(w->m, i, &e) || ctn_solution_step_element(s, k, i, &es) ||
             element_row(w, &e, &es)) return ctn_writer_mismatch(w);
         if (beams) beam_fields(w, s, k, i);
+        if (chains && nodes_field(w, &e)) return ctn_writer_mismatch(w);
         ctn_wbuf_putc(&w->out, '\n');
     }
     return w->out.err;
