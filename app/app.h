@@ -15,6 +15,10 @@ enum {
     CTN_EXIT_IO = 4,         /* a file could not be read or written, or another failure */
 };
 
+/* 1 if the program's start asked the BLAS for one thread to fit an address-space limit
+ * (blas_limit.c): its contexts then run one thread. */
+int ctn_app_blas_capped(void);
+
 int ctn_cmd_solve(int argc, char **argv);
 int ctn_cmd_formfind(int argc, char **argv);
 

@@ -44,7 +44,7 @@ int ctn_app_ctx_create(ctn_ctx **ctx)
 {
     int rc = ctn_ctx_create(ctx);
     if (!rc) ctn_ctx_set_interrupt(*ctx, poll_caught, NULL);
-    return rc ? rc : ctn_ctx_set_threads(*ctx, 0);
+    return rc ? rc : ctn_ctx_set_threads(*ctx, ctn_app_blas_capped() ? 1 : 0);
 }
 
 int ctn_app_interrupt_code(void)
