@@ -161,15 +161,33 @@ static int place_chain(const ctn_problem *e, const chains *c, size_t n, double *
     return 1;
 }
 
+/* The generated cable element el belongs to, or NULL. */
+static const ctn_cable *cable_of(const ctn_model *m, int el)
+{
+    for (size_t i = 0; i < m->cables.n; i++) {
+        const ctn_cable *cb = &m->cables.v[i];
+        if ((size_t)el >= cb->first && (size_t)el < cb->first + cb->count) return cb;
+    }
+    return NULL;
+}
+
 /* Whether element el belongs to a generated cable that keeps the start its line asks
  * for (start=arc or catenary given, shape=straight, or a target's state found). */
 static int keeps_start(const ctn_model *m, int el)
 {
-    for (size_t i = 0; i < m->cables.n; i++) {
-        const ctn_cable *cb = &m->cables.v[i];
-        if ((size_t)el < cb->first || (size_t)el >= cb->first + cb->count) continue;
-        return cb->start != CTN_START_AUTO || cb->shape != CTN_SHAPE_ARC ||
-               (cb->target != CTN_TARGET_NONE && cb->resolved);
+    const ctn_cable *cb = cable_of(m, el);
+    return cb && (cb->start != CTN_START_AUTO || cb->shape != CTN_SHAPE_ARC ||
+                  (cb->target != CTN_TARGET_NONE && cb->resolved));
+}
+
+/* Whether a wind of the first step loads an interior node of cable cb: its loads with
+ * the winds (at the reference geometry) differ from the dead loads. */
+static int windy(const ctn_model *m, const ctn_cable *cb, const double *loads, const double *loadsw)
+{
+    for (size_t k = 1; k < cb->count; k++) {
+        size_t node = (size_t)ctn_elem_nodes(m, cb->first + k)[0];
+        for (int j = 0; j < 3; j++)
+            if (loads[3 * node + (size_t)j] != loadsw[3 * node + (size_t)j]) return 1;
     }
     return 0;
 }
@@ -181,9 +199,12 @@ static int keeps_start(const ctn_model *m, int el)
  * its anchors (issue 29, item 2), as a generated cable under its own weight does. The
  * lengths may differ by less than half the start's stretch (CTN_LOADED_EPS), so every
  * member still starts stretched; the loads per tributary length by CTN_LOADED_SPREAD
- * (a chain of equal point loads on a shallow parabola's chords). Not where an element
- * takes a horizontal load (per projected length) or wind (normal to the member): their
- * shapes are not this catenary's; nor where a node lies beyond the chord against the
+ * (a chain of equal point loads on a shallow parabola's chords). The loads include the
+ * first step's winds at the reference geometry: a span swung by a wind across it starts
+ * in the plane of its weight and the drag (issue 27: a swing of 76 degrees stalled the
+ * default method from the catenary of the weight alone). Not where an element takes a
+ * horizontal load (per projected length: not uniform per length of a sagging member);
+ * nor where a node lies beyond the chord against the
  * load (an arch, a von Mises truss: the hanging shape is another equilibrium). 1 if
  * placed. */
 #define CTN_LOADED_EPS 1e-4
@@ -192,8 +213,6 @@ static int place_loaded(const ctn_problem *e, const chains *c, size_t n, const d
 {
     const ctn_model *m = e->m;
     if (n < 3 || keeps_start(m, c->elems[0])) return 0;
-    for (size_t i = 0; i < m->lloads.n; i++)
-        if (m->lloads.v[i].drag) return 0;
     const ctn_element *e0 = &m->elements.v[c->elems[0]];
     if (e0->section < 0) return 0;
     double S = 0, l0 = rest_length(e, c->elems[0]);
@@ -315,10 +334,17 @@ static int weight_only(const ctn_problem *e, const ctn_cable *cb, const double *
  * any inclination; its elements are then no chain to pre-shape. 1 if placed. */
 static int weight_only(const ctn_problem *e, const ctn_cable *cb, const double *loads);
 
+static int catenary_of_weight(const ctn_problem *e, const ctn_cable *cb, chains *c, const double *loads, double *d);
+
 static int place_catenary(const ctn_problem *e, const ctn_cable *cb, chains *c, const double *loads, double *d)
 {
+    return !c->seen[cb->first] && catenary_of_weight(e, cb, c, loads, d);
+}
+
+static int catenary_of_weight(const ctn_problem *e, const ctn_cable *cb, chains *c, const double *loads, double *d)
+{
     const ctn_model *m = e->m;
-    if (cb->start != CTN_START_AUTO || cb->shape != CTN_SHAPE_ARC || cb->count < 2 || c->seen[cb->first]) return 0;
+    if (cb->start != CTN_START_AUTO || cb->shape != CTN_SHAPE_ARC || cb->count < 2) return 0;
     if (cb->target != CTN_TARGET_NONE && cb->resolved) return 0;   /* its start is the state found */
     if (!weight_only(e, cb, loads)) return 0;          /* the catenary of its weight is not its shape */
     if (tip(e, c, cb->node[0]) || tip(e, c, cb->node[1])) return 0;   /* an end that is not held: it hangs */
@@ -343,19 +369,29 @@ int ctn_preshape(ctn_problem *e, double *d, int *count)
 {
     chains c = { NULL, NULL, NULL, NULL, NULL };
     int rc = incidence(e, &c);
+    const ctn_model *m = e->m;
     double *loads = e->v3;                         /* the first step's dead loads */
+    double *loadsw = ctn_malloc(e->ctx, 3 * m->nodes.n + 1, sizeof(double));   /* and its winds */
+    if (!rc && !loadsw) rc = CTN_ERR_NOMEM;
     *count = 0;
     int junction = 0;
-    if (!rc) ctn_model_step_loads_ex(e->m, 0, 1, loads, NULL);
+    if (!rc) ctn_model_step_loads_ex(m, 0, 1, loads, NULL);
+    if (!rc) ctn_model_step_loads_ex(m, 0, 0, loadsw, NULL);
     if (!rc) rc = ctn_junction_place(e, loads, d, c.seen, &junction);
     *count += junction;
-    for (size_t i = 0; !rc && i < e->m->cables.n; i++) *count += place_catenary(e, &e->m->cables.v[i], &c, loads, d);
+    for (size_t i = 0; !rc && i < m->cables.n; i++)
+        if (!windy(m, &m->cables.v[i], loads, loadsw)) *count += place_catenary(e, &m->cables.v[i], &c, loads, d);
     for (size_t i = 0; !rc && i < e->a->ne; i++) {
         if (c.seen[i]) continue;
         size_t n = walk(e, &c, (int)i);
         c.seen[i] = 1;
-        if (n) *count += place_dangling(e, &c, n, loads, d) || place_loaded(e, &c, n, loads, d) || place_chain(e, &c, n, d);
+        if (!n) continue;
+        const ctn_cable *cb = cable_of(m, c.elems[0]);   /* a windy cable's weight at least */
+        *count += place_dangling(e, &c, n, loads, d) || place_loaded(e, &c, n, loadsw, d) ||
+                  (cb && windy(m, cb, loads, loadsw) && catenary_of_weight(e, cb, &c, loads, d)) ||
+                  place_chain(e, &c, n, d);
     }
+    ctn_free(loadsw);
     ctn_free(c.deg);
     ctn_free(c.inc);
     ctn_free(c.nodes);

@@ -11,6 +11,11 @@
 #   - an arch is not turned over: the same chain bulging upwards (sag -1 m) under the
 #     same loads is not pre-shaped (the start line says so), and converges to the state
 #     load-stepped Newton reaches.
+#   - a span swung 76 degrees by a wind across it (tests/test_wind.c's: 130 m of cable
+#     on a 100 m span, w = 0.5, wind 2 kN/m) starts in the plane of its weight and the
+#     drag: the default method converges within 30 iterations (it stalled at the default
+#     maxit from the catenary of the weight alone) to the answer of load-stepped Newton
+#     (method=newton steps=20) to 1e-9 m.
 # Prints "N passed, N failed"; exit 1 on any failure.
 set -u
 
@@ -68,5 +73,32 @@ if [ ${#WHY[@]} -eq 0 ]; then
     [ -z "$msg" ] || WHY+=("$msg")
 fi
 finish an_arch_is_not_turned_over
+
+swing() {   # swing SOLVE_LINE
+    printf 'units kN m\nmaterial steel E=2.0e8 strain=engineering\nsection s material=steel A=1e-3 w=0.5\n'
+    printf 'gravity 0 0 -1\nnode 1 0 0 0 fix=xyz\nnode 2 100 0 0 fix=xyz\ncable 1 2 section=s n=40 length=130\n'
+    printf 'wind all dir=0,1,0 pressure=2kPa cd=1 d=1m\n%s\n' "$1"
+}
+swing "solve tol=1e-12" >"$T/swing.cable"
+swing "solve tol=1e-12 method=newton steps=20" >"$T/swing_steps.cable"
+"$BIN" solve "$T/swing.cable" --json >"$T/swing.json" 2>"$T/err" || WHY+=("swing: exit $?: $(head -c 300 "$T/err")")
+"$BIN" solve "$T/swing_steps.cable" --json >"$T/swing_steps.json" 2>"$T/err" || WHY+=("swing steps: exit $?")
+if [ ${#WHY[@]} -eq 0 ]; then
+    msg=$(python3 - "$T/swing.json" "$T/swing_steps.json" <<'PY'
+import json, math, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:3])
+out = []
+if a["iterations"] > 30: out.append("%d iterations" % a["iterations"])
+err = max(abs(x[k] - y[k]) for x, y in zip(a["nodes"], b["nodes"]) for k in ("ux", "uy", "uz"))
+if not err <= 1e-9: out.append("differs from load-stepped Newton by %.3g m" % err)
+mid = [x for x in a["nodes"] if x["id"] == 22][0]           # an interior node near mid-span
+ang = math.degrees(math.atan2(mid["y"] + mid["uy"], -(mid["z"] + mid["uz"])))
+if not 70 < ang < 80: out.append("swing %.1f degrees" % ang)
+print("; ".join(out))
+PY
+)
+    [ -z "$msg" ] || WHY+=("swing: $msg")
+fi
+finish a_wind_swing_starts_in_its_plane
 
 cli_summary
