@@ -197,7 +197,19 @@ typedef struct ctn_element_spec {
     double orient[3];         /* beam: a vector in the member's local x-z plane (not along
                                  the member); 0, 0, 0 (default): global z, or global x
                                  for a vertical member */
+    unsigned release;         /* beam: end releases, CTN_RELEASE_* or'ed (0, default: none):
+                                 the member's end does not take the moment about that local
+                                 axis (a hinge); a meshed member (n > 1) releases its first
+                                 element's NODE1 end and its last element's NODE2 end */
 } ctn_element_spec;
+/* Beam end releases (ctn_element_spec.release): the local axes x (torsion), y, z at NODE1
+ * (bits 0..2) and at NODE2 (bits 3..5). */
+#define CTN_RELEASE_RX1 1u
+#define CTN_RELEASE_RY1 2u
+#define CTN_RELEASE_RZ1 4u
+#define CTN_RELEASE_RX2 8u
+#define CTN_RELEASE_RY2 16u
+#define CTN_RELEASE_RZ2 32u
 void ctn_element_spec_init(ctn_element_spec *s);
 int ctn_model_add_element_spec(ctn_model *m, const ctn_element_spec *s);
 

@@ -4,6 +4,7 @@
 #define CTN_ELEMENT_BEAM3_H
 
 #include "element/element.h"
+#include "element/jet.h"
 
 typedef struct ctn_beam_props {
     double L0;          /* reference (unstressed) length */
@@ -15,7 +16,13 @@ typedef struct ctn_beam_props {
     double rhoA;        /* mass per unit length (mass op) */
     double rhoJ;        /* rotary inertia per unit length about the axis, rhoA (Iy + Iz) / A */
     double rhoIy, rhoIz;/* ... about the local y and z axes, rhoA Iy / A, rhoA Iz / A */
+    unsigned rel;       /* end releases, CTN_RELEASE_* (bit 3 a + k: end a, local axis k);
+                           a torsion release sets kt = 0 (beam3_model.c) */
 } ctn_beam_props;
+
+/* The releases of bending (about local y or z, at either end): the kernel then takes
+ * the condensed energy (beam3_release.c). */
+#define CTN_BEAM_REL_BEND (CTN_RELEASE_RY1 | CTN_RELEASE_RZ1 | CTN_RELEASE_RY2 | CTN_RELEASE_RZ2)
 
 /* The kernel (the family's eval, element.h). */
 int ctn_beam_eval(const void *props, unsigned mode, const double *X, const double *u, double *f, double *K,
@@ -27,6 +34,31 @@ int ctn_beam_eval(const void *props, unsigned mode, const double *X, const doubl
  * member (the stiffness method's end forces: N = out[6], T = out[9]). Returns 0, or 1
  * if the state cannot be evaluated (a collapsed chord, a local rotation past 90 deg). */
 int ctn_beam_end_forces(const ctn_beam_props *p, const double *X, const double *u, double out[12]);
+
+/* The pieces of the kernel (beam3.c) the released member shares (beam3_release.c):
+ * the chord length l and the local rotations th[a] of both ends as jets over the chord
+ * (variables 0..2) and the two rotation vectors (3..5, 6..8), 1 if they cannot be formed;
+ * the energy U of l and th (any jets); the stretch l - L0 plus the bowing of the local
+ * rotations t (EA / L0 times it is N); the forces f and packed tangent K (may be NULL) of
+ * the 12 DOFs from U as a jet over the kinematics' variables. */
+int ctn_beam_kinematics(const ctn_beam_props *p, const double *X, const double *u, ctn_jet *l, ctn_jet th[2][3]);
+void ctn_beam_energy(const ctn_beam_props *p, const ctn_jet *l, ctn_jet th[2][3], ctn_jet *U);
+double ctn_beam_stretch(const ctn_beam_props *p, double l, const double t[2][3]);
+void ctn_beam_dofs(const ctn_jet *U, double *f, double *K);
+
+/* A member with bending releases (p->rel & CTN_BEAM_REL_BEND), beam3_release.c: the
+ * local rotations the energy takes at l and th (from the kinematics) into t: a rotation
+ * released at both ends of an axis is 0, one released at one end minimizes the energy
+ * (Newton; the static condensation of that end), the others are th's; the energy's
+ * gradient g and its condensed Hessian H in z = (l, th[0][0..2], th[1][0..2]) (H 7 x 7,
+ * rows and columns of the released rotations zero) and its value U. Returns 1 if the
+ * minimum cannot be found (the member's own stiffness about the released axis lost). */
+int ctn_beam_condense(const ctn_beam_props *p, const ctn_jet *l, ctn_jet th[2][3], double t[2][3], double g[7],
+                      double H[7][7], double *U);
+/* The kernel of a member with bending releases: the condensed energy's gradient and
+ * Hessian carried to the DOFs (ctn_beam_eval's contract). */
+int ctn_beam_eval_released(const ctn_beam_props *p, unsigned mode, const double *X, const double *u, double *f,
+                           double *K, ctn_elem_state *out);
 
 /* Scalar functions of y = |v|^2 with their first two derivatives in y (beam3_fn.c):
  * the Rodrigues coefficients a = sin(t)/t and b = (1 - cos t)/t^2 of t = sqrt(y), and

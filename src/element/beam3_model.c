@@ -1,7 +1,7 @@
 /* The beam family's model side (beam3.c has the kernel): the checks of a definition,
  * the orientation kept in the element record, the properties, self-weight and mass.
  * The orient= vector is kept as its direction, two angles in par[] (azimuth, polar;
- * polar -1: the default orientation). */
+ * polar -1: the default orientation), and its end releases in par[2]. */
 #include "element/beam3.h"
 
 #include <math.h>
@@ -13,6 +13,7 @@ static void beam_params(const ctn_element_spec *s, double *par)
     double n = hypot(hypot(v[0], v[1]), v[2]);
     par[0] = n > 0 ? atan2(v[1], v[0]) : 0;
     par[1] = n > 0 ? acos(fmax(-1, fmin(1, v[2] / n))) : -1;
+    par[2] = s->release;
 }
 
 /* The member's unit axis e1 and the orientation vector v of element e. */
@@ -59,6 +60,9 @@ static int beam_check(const ctn_model *m, const ctn_element *e)
                                mat->name);
     if (!(e->l0 > 0) || !isfinite(e->l0))
         return ctn_model_error(m, CTN_ERR_MODEL, "beam %d: length must be positive and finite (got %g)", e->id, e->l0);
+    if (!(e->par[2] >= 0 && e->par[2] < 64))
+        return ctn_model_error(m, CTN_ERR_MODEL, "beam %d: release must be a set of CTN_RELEASE_* bits (got %g)", e->id,
+                               e->par[2]);
     axis_orient(m, e, e1, v);
     if (sine(e1, v) < 1e-6)
         return ctn_model_error(m, CTN_ERR_MODEL, "beam %d: orient (direction %g, %g, %g) is parallel to the member: it must "
@@ -97,7 +101,8 @@ static void beam_setup(const ctn_model *m, size_t e, void *props)
     p->EA = E * s->A;
     bending(E * s->Iy, L, phiy, &p->cy0, &p->cy1);
     bending(E * s->Iz, L, phiz, &p->cz0, &p->cz1);
-    p->kt = G * s->J / L;
+    p->rel = (unsigned)el->par[2];
+    p->kt = p->rel & (CTN_RELEASE_RX1 | CTN_RELEASE_RX2) ? 0 : G * s->J / L;
     p->rhoA = ctn_model_section_mass(m, el->section);
     p->rhoJ = p->rhoA > 0 ? p->rhoA * (s->Iy + s->Iz) / s->A : 0;
     p->rhoIy = p->rhoA > 0 ? p->rhoA * s->Iy / s->A : 0;

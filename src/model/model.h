@@ -7,7 +7,7 @@
 #include "model/idmap.h"
 
 #define CTN_NAME_MAX 64
-#define CTN_ELEM_NPAR 2  /* per-element parameters a family keeps in the model record */
+#define CTN_ELEM_NPAR 3  /* per-element parameters a family keeps in the model record */
 
 typedef struct ctn_node {
     int id;
