@@ -86,7 +86,8 @@ static int local_rotation(ctn_jet r[3][3], ctn_jet t[3][3], ctn_jet th[3])
  * (variables 0..2) and the rotation vectors (3..5, 6..8). Returns 1 if they cannot be
  * formed (a collapsed chord, the chord along the triads' mean y axis, a local rotation
  * past 90 degrees). */
-int ctn_beam_kinematics(const ctn_beam_props *p, const double *X, const double *u, ctn_jet *l, ctn_jet th[2][3])
+int ctn_beam_kinematics(const ctn_beam_props *p, const double *X, const double *u, ctn_jet *l, ctn_jet th[2][3],
+                        double R[3][3])
 {
     ctn_jet x[3], r[3][3], q[3], pq[3], t[2][3][3];
     double E0[3][3], L = 0;
@@ -110,6 +111,8 @@ int ctn_beam_kinematics(const ctn_beam_props *p, const double *X, const double *
     ctn_jet_cross(pq, r[0], q);
     if (!(ctn_jet_unit(r[2], pq) > 1e-12)) return 1;
     ctn_jet_cross(r[1], r[2], r[0]);
+    for (int i = 0; R && i < 3; i++)
+        for (int k = 0; k < 3; k++) R[i][k] = r[i][k].v;
     return local_rotation(r, t[0], th[0]) || local_rotation(r, t[1], th[1]);
 }
 
@@ -173,7 +176,7 @@ int ctn_beam_eval(const void *props, unsigned mode, const double *X, const doubl
     const ctn_beam_props *p = props;
     ctn_jet l, th[2][3], U;
     if (p->rel & CTN_BEAM_REL_BEND) return ctn_beam_eval_released(p, mode, X, u, f, K, out);
-    if (ctn_beam_kinematics(p, X, u, &l, th)) return 1;
+    if (ctn_beam_kinematics(p, X, u, &l, th, NULL)) return 1;
     ctn_beam_energy(p, &l, th, &U);
     ctn_beam_dofs(&U, f, K);
     if (out) {
@@ -186,10 +189,10 @@ int ctn_beam_eval(const void *props, unsigned mode, const double *X, const doubl
     return 0;
 }
 
-int ctn_beam_end_forces(const ctn_beam_props *p, const double *X, const double *u, double out[12])
+int ctn_beam_end_forces(const ctn_beam_props *p, const double *X, const double *u, double out[12], double R[3][3])
 {
     ctn_jet l, th[2][3];
-    if (ctn_beam_kinematics(p, X, u, &l, th)) return 1;
+    if (ctn_beam_kinematics(p, X, u, &l, th, R)) return 1;
     double t[2][3], g[7], H[7][7], U;
     for (int a = 0; a < 2; a++)
         for (int k = 0; k < 3; k++) t[a][k] = th[a][k].v;

@@ -32,16 +32,19 @@ int ctn_beam_eval(const void *props, unsigned mode, const double *X, const doubl
  * out[0..5] at node 1 and out[6..11] at node 2, each (Fx, Fy, Fz, Mx, My, Mz) in the
  * current local axes of the member, the forces and moments the nodes apply to the
  * member (the stiffness method's end forces: N = out[6], T = out[9]). Returns 0, or 1
- * if the state cannot be evaluated (a collapsed chord, a local rotation past 90 deg). */
-int ctn_beam_end_forces(const ctn_beam_props *p, const double *X, const double *u, double out[12]);
+ * if the state cannot be evaluated (a collapsed chord, a local rotation past 90 deg).
+ * R (may be NULL) gets the current local axes, rows x, y, z in global components. */
+int ctn_beam_end_forces(const ctn_beam_props *p, const double *X, const double *u, double out[12], double R[3][3]);
 
 /* The pieces of the kernel (beam3.c) the released member shares (beam3_release.c):
  * the chord length l and the local rotations th[a] of both ends as jets over the chord
  * (variables 0..2) and the two rotation vectors (3..5, 6..8), 1 if they cannot be formed;
  * the energy U of l and th (any jets); the stretch l - L0 plus the bowing of the local
  * rotations t (EA / L0 times it is N); the forces f and packed tangent K (may be NULL) of
- * the 12 DOFs from U as a jet over the kinematics' variables. */
-int ctn_beam_kinematics(const ctn_beam_props *p, const double *X, const double *u, ctn_jet *l, ctn_jet th[2][3]);
+ * the 12 DOFs from U as a jet over the kinematics' variables. The kinematics' R (may be
+ * NULL) gets the corotated frame's axes (rows x, y, z). */
+int ctn_beam_kinematics(const ctn_beam_props *p, const double *X, const double *u, ctn_jet *l, ctn_jet th[2][3],
+                        double R[3][3]);
 void ctn_beam_energy(const ctn_beam_props *p, const ctn_jet *l, ctn_jet th[2][3], ctn_jet *U);
 double ctn_beam_stretch(const ctn_beam_props *p, double l, const double t[2][3]);
 void ctn_beam_dofs(const ctn_jet *U, double *f, double *K);

@@ -147,6 +147,25 @@ static void beam_load(const ctn_model *m, size_t e, double *f)
         for (int k = 0; k < 3; k++) f[3 * (size_t)nd[a] + (size_t)k] += W * m->gravity[k];
 }
 
+/* A uniform load q per unstressed length in a fixed global direction (lineload, weight):
+ * the Hermite beam's consistent nodal loads on the reference chord, q L0 / 2 at each node
+ * and the moments +-(L0^2 / 12) e1 x q (fixed, like the load: conservative, so the
+ * tangent and the energy need no load term). */
+static void beam_line_load(const ctn_model *m, size_t e, const double q[3], double *f, double *M)
+{
+    const ctn_element *el = &m->elements.v[e];
+    const int *nd = ctn_elem_nodes(m, e);
+    double e1[3], v[3], L = el->l0;
+    axis_orient(m, el, e1, v);
+    const double c[3] = { e1[1] * q[2] - e1[2] * q[1], e1[2] * q[0] - e1[0] * q[2], e1[0] * q[1] - e1[1] * q[0] };
+    for (int a = 0; a < 2; a++)
+        for (int k = 0; k < 3; k++) {
+            size_t i = 3 * (size_t)nd[a] + (size_t)k;
+            if (f) f[i] += 0.5 * L * q[k];
+            if (M) M[i] += (a ? -1 : 1) * L * L / 12 * c[k];
+        }
+}
+
 static double beam_stiffness(const void *props)
 {
     const ctn_beam_props *p = props;
@@ -157,5 +176,5 @@ const ctn_element_ops ctn_beam3_ops = {
     .name = "beam", .nnodes = 2, .ndof_node = 6, .props_size = sizeof(ctn_beam_props),
     .flags = CTN_ELEM_SECTION | CTN_ELEM_FINITE_ROTATION,
     .check = beam_check, .params = beam_params, .setup = beam_setup, .eval = ctn_beam_eval, .load = beam_load,
-    .stiffness = beam_stiffness, .mass = beam_mass,
+    .stiffness = beam_stiffness, .mass = beam_mass, .line_load = beam_line_load,
 };

@@ -145,7 +145,7 @@ int ctn_beam_eval_released(const ctn_beam_props *p, unsigned mode, const double 
 {
     ctn_jet l, th[2][3], W;
     double t[2][3], g[NZ], H[NZ][NZ], Uv;
-    if (ctn_beam_kinematics(p, X, u, &l, th) || ctn_beam_condense(p, &l, th, t, g, H, &Uv)) return 1;
+    if (ctn_beam_kinematics(p, X, u, &l, th, NULL) || ctn_beam_condense(p, &l, th, t, g, H, &Uv)) return 1;
     const ctn_jet *z[NZ] = { &l, &th[0][0], &th[0][1], &th[0][2], &th[1][0], &th[1][1], &th[1][2] };
     ctn_jet_const(&W, Uv);                             /* W = U(z(q)): the chain rule */
     for (int i = 0; i < NZ; i++) {
