@@ -7,6 +7,8 @@
  * - a simply supported beam: one element gives the end rotation q L^3 / (24 EI) and
  *   moment_max q L^2 / 8 (the parabola's vertex), n = 2, 4, 8 the mid-span deflection
  *   5 q L^4 / (384 EI) (the consistent loads make the cubic elements exact at nodes);
+ * - a propped cantilever hinged at the prop (one element, and four): q L^2 / 8 at the
+ *   clamp, the reactions 5 q L / 8 and 3 q L / 8, the mid-span deflection q L^4 / (192 EI);
  * - an inclined simply supported beam (a horizontal roller) under a vertical load per
  *   unstressed length: the load stays vertical; its normal part q cos(a) bends it,
  *   q cos(a) L^2 / 8;
@@ -106,6 +108,42 @@ static void test_simply_supported(void)
     }
 }
 
+/* A propped cantilever of one element hinged at the prop (release=2:ryrz) under q: the
+ * hinge's share of the load moment condensed onto the clamp and the shears: the clamp's
+ * q L^2 / 8 and 5 q L / 8, the prop's 3 q L / 8 (its support clamped: the hinge is the
+ * member's), the mid-span deflection q L^4 / (192 EI) with n = 4,
+ * the member's largest moment the clamp's (9 q L^2 / 128 inside is less); with n = 4 the
+ * same reactions. */
+static void test_propped(void)
+{
+    for (int n = 1; n <= 4; n *= 4) {
+        run r = solve("propped", HEAD("") "node 1 0 0 0 fix=xyzrxryrz\nnode 2 %g 0 0 fix=yzrxryrz\n"
+                      "beam 1 1 2 section=s orient=0,0,1 n=%d release=2:ry\nlineload all qz=%g\n", L, n, -q);
+        if (r.rc) continue;
+        const double *R = ctn_solution_reactions(r.s), *M = ctn_solution_reaction_moments(r.s);
+        CHECK_CLOSE(R[2], 5 * q * L / 8, 1e-8, 0);
+        CHECK_CLOSE(R[5], 3 * q * L / 8, 1e-8, 0);
+        CHECK_CLOSE(M[1], -q * L * L / 8, 1e-8, 0);   /* the clamp's hogging moment */
+        CHECK(fabs(M[4]) < 1e-12 * q * L * L);          /* the hinge's support takes none */
+        if (n == 1) {
+            ctn_beam_result b = beam_at(&r, 0);
+            CHECK(b.end[1][4] == 0);
+            CHECK_CLOSE(b.end[0][4], -q * L * L / 8, 1e-8, 0);
+            CHECK_CLOSE(b.end[1][2], 3 * q * L / 8, 1e-8, 0);
+            CHECK_CLOSE(b.M_max, q * L * L / 8, 1e-8, 0);
+        } else {                                       /* mid-span: q L^4 / (192 EI) */
+            size_t mid = 0, nn = ctn_model_node_count(r.m);
+            for (size_t i = 0; i < nn; i++) {
+                ctn_node_info ni;
+                ctn_model_node(r.m, i, &ni);
+                if (fabs(ni.X[0] - L / 2) < 1e-12) mid = i;
+            }
+            CHECK_CLOSE(ctn_solution_displacements(r.s)[3 * mid + 2], -q * L * L * L * L / (192 * E * Iy), 1e-7, 0);
+        }
+        done(&r);
+    }
+}
+
 static void test_inclined(void)
 {
     double a = PI / 6, c = cos(a), s = sin(a);
@@ -166,6 +204,7 @@ int main(void)
 {
     test_clamped();
     test_simply_supported();
+    test_propped();
     test_inclined();
     test_weight();
     test_case();

@@ -125,6 +125,8 @@ typedef struct ctn_material_spec {
     double alpha;         /* coefficient of thermal expansion [1/K] (default 0) */
     double G;             /* shear modulus >= 0 [force/length^2], for beams (default 0: not
                              given) */
+    double fy;            /* yield stress > 0 [force/length^2]: the beams' utilisation,
+                             combined stress / fy (default 0: not given) */
 } ctn_material_spec;
 void ctn_material_spec_init(ctn_material_spec *s);
 int ctn_model_add_material_spec(ctn_model *m, const ctn_material_spec *s);
@@ -147,6 +149,8 @@ typedef struct ctn_section_spec {
     double Iy, Iz;        /* second moments of area about the section's y and z axes [length^4] */
     double J;             /* torsion constant [length^4] */
     double Asy, Asz;      /* shear areas along y and z [length^2] (0: no shear deformation) */
+    double Wy, Wz;        /* elastic section moduli about y and z [length^3]: the extreme
+                             fibre's bending stress M / W (0: not given) */
 } ctn_section_spec;
 #define CTN_MASS_DEFAULT (-1.0)
 void ctn_section_spec_init(ctn_section_spec *s);

@@ -63,6 +63,12 @@ int ctn_beam_condense(const ctn_beam_props *p, const ctn_jet *l, ctn_jet th[2][3
 int ctn_beam_eval_released(const ctn_beam_props *p, unsigned mode, const double *X, const double *u, double *f,
                            double *K, ctn_elem_state *out);
 
+/* The consistent nodal loads of a uniform load q per unstressed length (global, fixed)
+ * on beam element e of the model, on its reference chord (beam3_model.c): forces F[a]
+ * and moments M[a] at its nodes a = 0, 1: q L0 / 2 and +-(L0^2 / 12) e1 x q, with a
+ * released end's moment condensed onto the other end and the shears. */
+void ctn_beam_line_loads(const ctn_model *m, size_t e, const double q[3], double F[2][3], double M[2][3]);
+
 /* Scalar functions of y = |v|^2 with their first two derivatives in y (beam3_fn.c):
  * the Rodrigues coefficients a = sin(t)/t and b = (1 - cos t)/t^2 of t = sqrt(y), and
  * the coefficient of the rotation log, asin(s)/s of s = sqrt(y) (y < 1). */

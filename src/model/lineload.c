@@ -105,6 +105,12 @@ void ctn_model_add_lineloads(const ctn_model *m, const ctn_loadsel *sel, int dea
                 add_reference_drag(m, l, w, nd, f);
                 continue;
             }
+            const ctn_element_ops *ops = ctn_element_family(m->elements.v[e].type);
+            if (ops->line_load) {                                  /* beams: their own */
+                const double q[3] = { w * l->q[0], w * l->q[1], w * l->q[2] };
+                ops->line_load(m, e, q, f, NULL);
+                continue;
+            }
             double half = 0.5 * w * m->elements.v[e].l0;          /* q l0 / 2 at each end */
             for (int k = 0; k < 3; k++) {
                 f[3 * (size_t)nd[0] + (size_t)k] += half * l->q[k];

@@ -26,6 +26,7 @@ typedef struct ctn_material {
     int tension_only;
     double alpha;    /* coefficient of thermal expansion [1/K] */
     double G;        /* shear modulus [force/length^2], 0 if not given */
+    double fy;       /* yield stress [force/length^2], 0 if not given */
 } ctn_material;
 
 typedef struct ctn_section {
@@ -38,6 +39,7 @@ typedef struct ctn_section {
     double mass;     /* per unit unstressed length; CTN_MASS_DEFAULT: w / g */
     double Iy, Iz, J;   /* beams: second moments of area, torsion constant [length^4] */
     double Asy, Asz;    /* beams: shear areas [length^2], 0 if not given */
+    double Wy, Wz;      /* beams: elastic section moduli [length^3], 0 if not given */
 } ctn_section;
 
 typedef struct ctn_element {

@@ -34,30 +34,23 @@ static int step_line(const ctn_model *m, const ctn_solution *s, size_t k, size_t
     return CTN_OK;
 }
 
-/* f (12, local) less the consistent nodal loads of q on the reference chord X (q L0 / 2,
- * +-(L0^2 / 12) e1 x q at the nodes) in the current local axes R; ql gets q in them. */
-static void less_fixed_end(const double *X, double L0, const double q[3], const double R[3][3], double *f,
+/* f (12, local) less the consistent nodal loads of q on element i (ctn_beam_line_loads:
+ * q L0 / 2, +-(L0^2 / 12) e1 x q, a hinge's share moved) in the current local axes R;
+ * ql gets q in them. */
+static void less_fixed_end(const ctn_model *m, size_t e, const double q[3], const double R[3][3], double *f,
                            double ql[3])
 {
-    double e1[3], L = 0;
-    for (int j = 0; j < 3; j++) {
-        e1[j] = X[3 + j] - X[j];
-        L += e1[j] * e1[j];
-    }
-    for (int j = 0; j < 3; j++) e1[j] /= sqrt(L);
-    const double c[3] = { e1[1] * q[2] - e1[2] * q[1], e1[2] * q[0] - e1[0] * q[2], e1[0] * q[1] - e1[1] * q[0] };
+    double F[2][3], M[2][3];
+    ctn_beam_line_loads(m, e, q, F, M);
     for (int i = 0; i < 3; i++) {
-        double F = 0, M = 0;
         ql[i] = 0;
         for (int j = 0; j < 3; j++) {
-            F += R[i][j] * q[j] * 0.5 * L0;
-            M += R[i][j] * c[j] * L0 * L0 / 12;
             ql[i] += R[i][j] * q[j];
+            for (int a = 0; a < 2; a++) {
+                f[6 * a + i] -= R[i][j] * F[a][j];
+                f[6 * a + 3 + i] -= R[i][j] * M[a][j];
+            }
         }
-        f[i] -= F;
-        f[6 + i] -= F;
-        f[3 + i] -= M;
-        f[9 + i] += M;
     }
 }
 
@@ -70,16 +63,34 @@ static double moment_at(const double *f, const double w[3], double x)
     return hypot(My, Mz);
 }
 
-/* The largest |M| over the chord: the ends, each component's vertex, and 64 points
- * between (exact for a load in one plane, the vertex; else to the sampling). */
-static double moment_max(const double *f, const double w[3], double l)
+/* The combined stress |N| / A + |My| / Wy + |Mz| / Wz at x (c: 1 / A, 1 / Wy, 1 / Wz),
+ * N linear between the ends' (-f[0] at node 1, f[6] at node 2). */
+static double stress_at(const double *f, const double w[3], double l, const double c[3], double x)
+{
+    double My = -(f[4] + x * f[2] + 0.5 * w[2] * x * x), Mz = -(f[5] - x * f[1] - 0.5 * w[1] * x * x);
+    double N = -f[0] + (f[6] + f[0]) * x / l;
+    return c[0] * fabs(N) + c[1] * fabs(My) + c[2] * fabs(Mz);
+}
+
+/* The largest |M| over the chord, and of the combined stress when c is given: the ends,
+ * each component's vertex, and 64 points between (exact for a load in one plane, the
+ * vertex; else to the sampling: a parabola's share of q l^2 / 8 between samples, 1e-4 of
+ * it at most). */
+static double moment_max(const double *f, const double w[3], double l, const double *c, double *smax)
 {
     double M = fmax(hypot(f[4], f[5]), hypot(f[10], f[11]));
+    if (c) *smax = fmax(stress_at(f, w, l, c, 0), stress_at(f, w, l, c, l));
     if (w[1] == 0 && w[2] == 0) return M;
     const double xv[2] = { w[2] != 0 ? -f[2] / w[2] : -1, w[1] != 0 ? f[1] / w[1] : -1 };
     for (int a = 0; a < 2; a++)
-        if (xv[a] > 0 && xv[a] < l) M = fmax(M, moment_at(f, w, xv[a]));
-    for (int k = 1; k < 64; k++) M = fmax(M, moment_at(f, w, l * k / 64));
+        if (xv[a] > 0 && xv[a] < l) {
+            M = fmax(M, moment_at(f, w, xv[a]));
+            if (c) *smax = fmax(*smax, stress_at(f, w, l, c, xv[a]));
+        }
+    for (int k = 1; k < 64; k++) {
+        M = fmax(M, moment_at(f, w, l * k / 64));
+        if (c) *smax = fmax(*smax, stress_at(f, w, l, c, l * k / 64));
+    }
     return M;
 }
 
@@ -104,7 +115,7 @@ int ctn_solution_beam(const ctn_model *m, const ctn_solution *s, size_t k, size_
     for (int j = 0; j < 3; j++) l += pow((X[3 + j] + u[6 + j]) - (X[j] + u[j]), 2);
     l = sqrt(l);
     if (q[0] != 0 || q[1] != 0 || q[2] != 0) {
-        less_fixed_end(X, p.L0, q, R, f, ql);
+        less_fixed_end(m, i, q, R, f, ql);
         for (int j = 0; j < 3; j++) w[j] = ql[j] * p.L0 / l;   /* per unit current length */
     }
     memset(out, 0, sizeof *out);
@@ -114,6 +125,30 @@ int ctn_solution_beam(const ctn_model *m, const ctn_solution *s, size_t k, size_
     memcpy(out->end[1], f + 6, 6 * sizeof *f);
     out->N = f[6];
     out->T = f[9];
-    out->M_max = moment_max(f, w, l);
+    const ctn_section *sec = &m->sections.v[m->elements.v[i].section];
+    const double c[3] = { 1 / sec->A, sec->Wy > 0 ? 1 / sec->Wy : 0, sec->Wz > 0 ? 1 / sec->Wz : 0 };
+    int moduli = sec->Wy > 0 && sec->Wz > 0;
+    out->M_max = moment_max(f, w, l, moduli ? c : NULL, &out->stress);
+    out->fy = m->materials.v[sec->material].fy;
+    out->utilisation = out->fy > 0 && moduli ? out->stress / out->fy : 0;
     return CTN_OK;
+}
+
+int ctn_solution_worst_beam(const ctn_model *m, const ctn_solution *s, size_t k, size_t *e, ctn_beam_result *out)
+{
+    if (!m || !s || !e || !out || out->size < sizeof *out) return CTN_ERR_INVALID;
+    int found = 0;
+    for (size_t i = 0; i < m->elements.n; i++) {
+        ctn_beam_result b = { .size = sizeof b };
+        if (ctn_element_family(m->elements.v[i].type) != &ctn_beam3_ops ||
+            !(m->materials.v[m->sections.v[m->elements.v[i].section].material].fy > 0) ||
+            ctn_solution_beam(m, s, k, i, &b))
+            continue;
+        if (!found || b.utilisation > out->utilisation) {
+            *out = b;
+            *e = i;
+            found = 1;
+        }
+    }
+    return found ? CTN_OK : CTN_ERR_INVALID;
 }

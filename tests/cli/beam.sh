@@ -5,7 +5,10 @@
 # - examples/beam/cantilever.cable: the tip deflection P L^3 / (3 E I) (1e-4: the load is
 #   not small), the root element's end_forces_local (shear P, moment P L) in result.json
 #   and the same twelve end forces in elements.csv;
-# - examples/beam/bend45.cable: the published tip displacement at P = 600 (0.25).
+# - examples/beam/bend45.cable: the published tip displacement at P = 600 (0.25);
+# - examples/beam/portal_design.cable: the girder's combined stress against the box's A
+#   and Wy by hand at its elements' ends, utilisation = stress / fy in result.json, in
+#   elements.csv and the summary's "beams:" line; the girder's q L^2 / 8; its hinge.
 # Prints "N passed, N failed"; exit 1 on any failure.
 set -u
 
@@ -53,5 +56,28 @@ for k, v in zip(("ux", "uy", "uz"), (-23.5, -13.4, 53.4)):
     assert abs(n[9][k] - v) < 0.25, (k, n[9][k], v)
 PYEOF
 finish "bend45: Bathe and Bolourchi at P = 600"
+
+"$BIN" solve examples/beam/portal_design.cable -o "$T/portal" >"$T/portal.txt" 2>"$T/err" || WHY+=("portal: exit $?: $(head -c 300 "$T/err")")
+"$PY" - "$T/portal/result.json" "$T/portal/elements.csv" "$T/portal.txt" >"$T/check" 2>&1 <<'PYEOF' || WHY+=("$(head -n 5 "$T/check")")
+import csv, json, sys
+r = json.load(open(sys.argv[1]))
+rows = {int(x["id"]): x for x in csv.DictReader(open(sys.argv[2]))}
+text = open(sys.argv[3]).read()
+A = 0.15 * 0.4 - 0.13 * 0.38                       # the girder's box, by hand
+Wy = (0.15 * 0.4**3 - 0.13 * 0.38**3) / 12 / 0.2
+worst = max(r["elements"], key=lambda e: e["utilisation"])
+for e in r["elements"]:
+    f = e["end_forces_local"]
+    if e.get("group") != "girder":
+        continue
+    ends = [abs(f[0][0]) / A + abs(f[0][4]) / Wy, abs(f[1][0]) / A + abs(f[1][4]) / Wy]
+    assert e["stress_combined"] >= max(ends) * (1 - 1e-12), (e["id"], e["stress_combined"], ends)
+    assert abs(e["utilisation"] - e["stress_combined"] / 355e3) < 1e-12, e
+    assert float(rows[e["id"]]["utilisation"]) == e["utilisation"], rows[e["id"]]
+assert f"beams: max utilisation {worst['utilisation']:.4f} at element {worst['id']}" in text, text
+assert abs(max(abs(x) for x in [worst["moment_max"]]) - 20 * 8**2 / 8) < 1e-2 * 160, worst   # q L^2 / 8, P-delta 1e-3
+assert r["elements"][8]["end_forces_local"][0][4] == 0, r["elements"][8]                         # the hinge
+PYEOF
+finish "portal_design: hinged girder, deck load, utilisation against fy"
 
 cli_summary
