@@ -193,10 +193,10 @@ int ctn_beam_end_forces(const ctn_beam_props *p, const double *X, const double *
 {
     ctn_jet l, th[2][3];
     if (ctn_beam_kinematics(p, X, u, &l, th, R)) return 1;
-    double t[2][3], g[7], H[7][7], U;
+    double t[2][3];
     for (int a = 0; a < 2; a++)
         for (int k = 0; k < 3; k++) t[a][k] = th[a][k].v;
-    if ((p->rel & CTN_BEAM_REL_BEND) && ctn_beam_condense(p, &l, th, t, g, H, &U)) return 1;
+    if (p->rel & CTN_BEAM_REL_BEND) ctn_beam_condense(p, th, t);
     double N = p->EA * ctn_beam_stretch(p, l.v, t) / p->L0;
     double T = p->kt * (t[1][0] - t[0][0]);
     double My[2] = { 2 * p->cy0 * t[0][1] + p->cy1 * t[1][1], 2 * p->cy0 * t[1][1] + p->cy1 * t[0][1] };

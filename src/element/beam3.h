@@ -50,16 +50,13 @@ double ctn_beam_stretch(const ctn_beam_props *p, double l, const double t[2][3])
 void ctn_beam_dofs(const ctn_jet *U, double *f, double *K);
 
 /* A member with bending releases (p->rel & CTN_BEAM_REL_BEND), beam3_release.c: the
- * local rotations the energy takes at l and th (from the kinematics) into t: a rotation
- * released at both ends of an axis is 0, one released at one end minimizes the energy
- * (Newton; the static condensation of that end), the others are th's; the energy's
- * gradient g and its condensed Hessian H in z = (l, th[0][0..2], th[1][0..2]) (H 7 x 7,
- * rows and columns of the released rotations zero) and its value U. Returns 1 if the
- * minimum cannot be found (the member's own stiffness about the released axis lost). */
-int ctn_beam_condense(const ctn_beam_props *p, const ctn_jet *l, ctn_jet th[2][3], double t[2][3], double g[7],
-                      double H[7][7], double *U);
-/* The kernel of a member with bending releases: the condensed energy's gradient and
- * Hessian carried to the DOFs (ctn_beam_eval's contract). */
+ * local rotations the energy takes, from the kinematics' th, into t: a rotation released
+ * at both ends of an axis is 0, one released at one end -rho times the other end's
+ * (rho = c1 / (2 c0): its bending moment 0, the static condensation of that end), the
+ * others th's. */
+void ctn_beam_condense(const ctn_beam_props *p, ctn_jet th[2][3], double t[2][3]);
+/* The kernel of a member with bending releases: the energy of the condensed rotations,
+ * its gradient and Hessian in the DOFs (ctn_beam_eval's contract). */
 int ctn_beam_eval_released(const ctn_beam_props *p, unsigned mode, const double *X, const double *u, double *f,
                            double *K, ctn_elem_state *out);
 

@@ -8,7 +8,12 @@
 # - examples/beam/bend45.cable: the published tip displacement at P = 600 (0.25);
 # - examples/beam/portal_design.cable: the girder's combined stress against the box's A
 #   and Wy by hand at its elements' ends, utilisation = stress / fy in result.json, in
-#   elements.csv and the summary's "beams:" line; the girder's q L^2 / 8; its hinge.
+#   elements.csv and the summary's "beams:" line; the girder's q L^2 / 8; its hinge;
+# - examples/structures/footbridge.cable: the reactions carry the weights (w l0 of every
+#   member) and the crowd; four increasing frequencies; a buckling factor above 1;
+# - examples/structures/transmission_towers.cable: each tower's base holds 2 H of its two
+#   conductors (H = 25 by the targets) before the wind; the wind q times the conductors'
+#   unstressed length, half at each tower; no moment at the strings' hinges.
 # Prints "N passed, N failed"; exit 1 on any failure.
 set -u
 
@@ -79,5 +84,37 @@ assert abs(max(abs(x) for x in [worst["moment_max"]]) - 20 * 8**2 / 8) < 1e-2 * 
 assert r["elements"][8]["end_forces_local"][0][4] == 0, r["elements"][8]                         # the hinge
 PYEOF
 finish "portal_design: hinged girder, deck load, utilisation against fy"
+
+"$BIN" solve examples/structures/footbridge.cable --json >"$T/foot.json" 2>"$T/err" || WHY+=("footbridge: exit $?: $(head -c 300 "$T/err")")
+"$PY" - "$T/foot.json" >"$T/check" 2>&1 <<'PYEOF' || WHY+=("$(head -n 5 "$T/check")")
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["converged"] and r["stable"], r["reason"]
+w = {"deck": 4.0, "pylon": 3.8, "stays": 0.12}
+load = sum(w[e["group"]] * e["l0"] for e in r["elements"]) + 10 * 40     # weights and the crowd
+fz = sum(q["fz"] for q in r["reactions"])
+assert abs(fz - load) < 1e-8 * load, (fz, load)
+f = [m["frequency"] for m in r["modes"]]
+assert len(f) == 4 and all(0 < a < b for a, b in zip(f, f[1:])), f
+assert len(r["buckling"]) == 1 and r["buckling"][0]["factor"] > 1, r["buckling"]
+PYEOF
+finish "footbridge: weights and crowd carried, modes, buckling"
+
+sed '/^step wind/,$d' examples/structures/transmission_towers.cable >"$T/still.cable"
+"$BIN" solve "$T/still.cable" --json >"$T/still.json" 2>"$T/err" || WHY+=("towers (still): exit $?: $(head -c 300 "$T/err")")
+"$BIN" solve examples/structures/transmission_towers.cable --json >"$T/wind.json" 2>"$T/err" || WHY+=("towers: exit $?: $(head -c 300 "$T/err")")
+"$PY" - "$T/still.json" "$T/wind.json" >"$T/check" 2>&1 <<'PYEOF' || WHY+=("$(head -n 5 "$T/check")")
+import json, sys
+s, w = (json.load(open(a)) for a in sys.argv[1:3])
+q = {p["node"]: p for p in s["reactions"]}
+assert abs(q[1]["fx"] + 2 * 25) < 1e-6 and abs(q[11]["fx"] - 2 * 25) < 1e-6, q    # each base: the two conductors' H
+q = {p["node"]: p for p in w["reactions"]}
+L0 = sum(e["l0"] for e in w["elements"] if e.get("group") == "conductors")
+assert abs(q[1]["fy"] + q[11]["fy"] + 0.01686 * L0) < 1e-8, (q, L0)               # the wind per unstressed length
+assert abs(q[1]["fy"] - q[11]["fy"]) < 1e-6, q                                      # shared by symmetry
+ins = [e for e in w["elements"] if e.get("group") == "insulators"]
+assert all(e["end_forces_local"][0][4] == 0 and e["end_forces_local"][0][5] == 0 for e in ins), ins   # the hinges
+PYEOF
+finish "transmission_towers: 2 H at each base, the wind shared, hinged strings"
 
 cli_summary
