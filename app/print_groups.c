@@ -19,6 +19,25 @@ void ctn_print_groups(FILE *out, const ctn_model *m, const ctn_solution *s)
     if (!ctn_solution_worst_utilisation(m, s, k, &e, &u) && !ctn_model_element(m, e, &info))
         fprintf(out, "capacity: max utilisation %.4f at element %d (force / (mbl / safety))%s\n", u, info.id,
                 u > 1 ? ": OVER CAPACITY" : "");
+    ctn_beam_result b = { .size = sizeof b };
+    if (!ctn_solution_worst_beam(m, s, k, &e, &b) && !ctn_model_element(m, e, &info))
+        fprintf(out, "beams: max utilisation %.4f at element %d (|N|/A + |My|/Wy + |Mz|/Wz = %.6g over fy %.6g)%s\n",
+                b.utilisation, info.id, b.stress, b.fy, b.utilisation > 1 ? ": OVER CAPACITY" : "");
+}
+
+/* The warning when a beam's combined stress is over its material's fy. */
+static void beam_warning(FILE *out, const char *model, const ctn_model *m, const ctn_solution *s, size_t k)
+{
+    size_t e = 0, over = 0;
+    ctn_beam_result b = { .size = sizeof b };
+    ctn_element_info info;
+    if (ctn_solution_worst_beam(m, s, k, &e, &b) || !(b.utilisation > 1) || ctn_model_element(m, e, &info)) return;
+    for (size_t i = 0; i < ctn_model_element_count(m); i++) {
+        ctn_beam_result r = { .size = sizeof r };
+        if (!ctn_solution_beam(m, s, k, i, &r) && r.fy > 0 && r.utilisation > 1) over++;
+    }
+    fprintf(out, "catena: %s: warning: %zu beam element(s) over their yield stress; the worst, element %d, at "
+                 "utilisation %.4f (combined stress %.6g, fy %.6g)\n", model, over, info.id, b.utilisation, b.stress, b.fy);
 }
 
 void ctn_print_capacity_warning(FILE *out, const char *model, const ctn_model *m, const ctn_solution *s)
@@ -26,6 +45,7 @@ void ctn_print_capacity_warning(FILE *out, const char *model, const ctn_model *m
     size_t e = 0, over = 0, k = ctn_solution_step_count(s) - 1;
     double u = 0;
     ctn_element_info info;
+    beam_warning(out, model, m, s, k);
     if (ctn_solution_worst_utilisation(m, s, k, &e, &u) || !(u > 1) || ctn_model_element(m, e, &info)) return;
     for (size_t i = 0; i < ctn_model_element_count(m); i++) {
         ctn_element_info ei;

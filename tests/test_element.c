@@ -100,6 +100,7 @@ static int make_sample(sample *s, int type, int variant, unsigned *seed)
     double chord = 0;
     for (int a = 0; a + 1 < s->nn; a++) chord += sqrt(pow(s->X[3 * a + 3] - s->X[3 * a], 2) + pow(s->X[3 * a + 4] - s->X[3 * a + 1], 2) +
                                                  pow(s->X[3 * a + 5] - s->X[3 * a + 2], 2));
+    spec.release = (unsigned)variant >> 4;             /* beams: end releases (test_beam_releases) */
     spec.l0 = chord * urand(seed, 0.8, 1.2);
     spec.k = urand(seed, 1e3, 1e5);
     rc = rc || ctn_model_add_element_spec(s->m, &spec);
@@ -327,6 +328,54 @@ static void test_energy_gradient(int type)
     }
 }
 
+/* Beams with end releases (every set of CTN_RELEASE_* bits but none, in turn, ten times
+ * each): the tangent against central differences and the energy's gradient, in tension
+ * and compression (l0 0.8 to 1.2 of the chord, as the other samples), and objectivity
+ * under a rigid motion (check_finite_rotation). */
+static void test_beam_releases(void)
+{
+    int type = ctn_element_family_find("beam");
+    unsigned seed = 99u;
+    for (int trial = 0; trial < 630; trial++) {
+        sample s;
+        unsigned rel = 1 + (unsigned)trial % 63;
+        if (make_sample(&s, type, (int)(rel << 4), &seed)) return;
+        double u[MAXD], f[MAXD], fp[MAXD], fm[MAXD];
+        ctn_elem_state st, sp, sm;
+        int tries = 0;
+        do random_u(&s, &seed, 0.5, u);                /* a state the kinematics can form */
+        while (s.ops->eval(s.props, 0, s.X, u, f, NULL, &st) && ++tries < 10);
+        double err = tangent_error(&s, u);
+        CHECK_MSG(err < 1e-6, "release %u trial %d: relative tangent error %.3g", rel, trial, err);
+        CHECK(s.ops->eval(s.props, 0, s.X, u, f, NULL, &st) == 0);
+        for (int j = 0; j < 12; j++) {
+            double up[MAXD], um[MAXD], h = 1e-6;
+            for (int k = 0; k < 12; k++) up[k] = um[k] = u[k];
+            up[j] += h;
+            um[j] -= h;
+            s.ops->eval(s.props, 0, s.X, up, fp, NULL, &sp);
+            s.ops->eval(s.props, 0, s.X, um, fm, NULL, &sm);
+            CHECK_CLOSE((sp.energy - sm.energy) / (2 * h), f[j], 1e-6, 1e-6 * fabs(st.N) + 1e-9);
+        }
+        double ur[MAXD], R[9], n[3], t[3];                /* objectivity, as test_objectivity */
+        for (int k = 0; k < 12; k++) u[k] = ur[k] = urand(&seed, -0.3, 0.3);
+        for (int k = 0; k < 3; k++) { n[k] = urand(&seed, -1, 1); t[k] = urand(&seed, -100, 100); }
+        double nn = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        for (int k = 0; k < 3; k++) n[k] /= nn;
+        rotation(n, urand(&seed, -3, 3), R);
+        if (s.ops->eval(s.props, 0, s.X, u, f, NULL, &st) == 0) {
+            for (int a = 0; a < 2; a++)
+                for (int i = 0; i < 3; i++) {
+                    double xr = t[i];
+                    for (int j = 0; j < 3; j++) xr += R[3 * i + j] * (s.X[3 * a + j] + u[6 * a + j]);
+                    ur[6 * a + i] = xr - s.X[3 * a + i];
+                }
+            check_finite_rotation(&s, R, u, ur, f, &st);
+        }
+        free_sample(&s);
+    }
+}
+
 /* Cable: the axial laws of both strain measures against their closed forms. */
 static void test_cable_laws(void)
 {
@@ -402,6 +451,7 @@ int main(void)
         test_objectivity(t);
         test_energy_gradient(t);
     }
+    test_beam_releases();
     test_cable_laws();
     test_cable_tension_only();
     test_spring_law();

@@ -140,7 +140,7 @@ static void visit(const char *path, void *data)
 int main(void)
 {
     const char *dirs[] = { "examples/paper", "examples/robust", "examples/springs", "examples/catenary", "examples/design",
-                           "examples/beam" };
+                           "examples/beam", "examples/structures" };
     int files = each_example(dirs, sizeof dirs / sizeof *dirs, visit, NULL);
     CHECK(files >= 8);
     CHECK_DONE();

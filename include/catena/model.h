@@ -125,6 +125,8 @@ typedef struct ctn_material_spec {
     double alpha;         /* coefficient of thermal expansion [1/K] (default 0) */
     double G;             /* shear modulus >= 0 [force/length^2], for beams (default 0: not
                              given) */
+    double fy;            /* yield stress > 0 [force/length^2]: the beams' utilisation,
+                             combined stress / fy (default 0: not given) */
 } ctn_material_spec;
 void ctn_material_spec_init(ctn_material_spec *s);
 int ctn_model_add_material_spec(ctn_model *m, const ctn_material_spec *s);
@@ -147,6 +149,8 @@ typedef struct ctn_section_spec {
     double Iy, Iz;        /* second moments of area about the section's y and z axes [length^4] */
     double J;             /* torsion constant [length^4] */
     double Asy, Asz;      /* shear areas along y and z [length^2] (0: no shear deformation) */
+    double Wy, Wz;        /* elastic section moduli about y and z [length^3]: the extreme
+                             fibre's bending stress M / W (0: not given) */
 } ctn_section_spec;
 #define CTN_MASS_DEFAULT (-1.0)
 void ctn_section_spec_init(ctn_section_spec *s);
@@ -197,7 +201,19 @@ typedef struct ctn_element_spec {
     double orient[3];         /* beam: a vector in the member's local x-z plane (not along
                                  the member); 0, 0, 0 (default): global z, or global x
                                  for a vertical member */
+    unsigned release;         /* beam: end releases, CTN_RELEASE_* or'ed (0, default: none):
+                                 the member's end does not take the moment about that local
+                                 axis (a hinge); a meshed member (n > 1) releases its first
+                                 element's NODE1 end and its last element's NODE2 end */
 } ctn_element_spec;
+/* Beam end releases (ctn_element_spec.release): the local axes x (torsion), y, z at NODE1
+ * (bits 0..2) and at NODE2 (bits 3..5). */
+#define CTN_RELEASE_RX1 1u
+#define CTN_RELEASE_RY1 2u
+#define CTN_RELEASE_RZ1 4u
+#define CTN_RELEASE_RX2 8u
+#define CTN_RELEASE_RY2 16u
+#define CTN_RELEASE_RZ2 32u
 void ctn_element_spec_init(ctn_element_spec *s);
 int ctn_model_add_element_spec(ctn_model *m, const ctn_element_spec *s);
 

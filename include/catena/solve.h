@@ -491,8 +491,18 @@ typedef struct ctn_beam_result {
     double end[2][6];     /* end forces [force] and moments [force length], local axes */
     double N;             /* axial tension [force] */
     double T;             /* torque about the member's axis [force length] */
-    double M_max;         /* the larger end bending moment, hypot(My, Mz) [force length] */
+    double M_max;         /* the largest bending moment hypot(My, Mz) along the element: the
+                             larger end's, or inside under a uniform load [force length] */
+    double stress;        /* the largest combined stress |N| / A + |My| / Wy + |Mz| / Wz along
+                             the element (N, My, Mz at the same section), 0 when its section
+                             has no Wy, Wz [force/length^2] */
+    double fy;            /* its material's yield stress, 0 if not given [force/length^2] */
+    double utilisation;   /* stress / fy, 0 without fy */
 } ctn_beam_result;
+/* The beam element of the largest utilisation (ctn_beam_result.utilisation) at the end of
+ * step k: its index in *e and its result in *out (out->size set by the caller);
+ * CTN_ERR_INVALID when no beam's material has fy. */
+int ctn_solution_worst_beam(const ctn_model *m, const ctn_solution *s, size_t k, size_t *e, ctn_beam_result *out);
 /* Element i (a "beam") at the end of step k. CTN_ERR_INVALID if i is not a beam or k, i
  * are out of range; CTN_ERR_NOCONV if its state cannot be evaluated. The caller sets
  * out->size. */
@@ -535,8 +545,10 @@ typedef struct ctn_group_result {
     double max_force, min_force;   /* [force] */
     double max_stress;       /* largest N / A of the members with a section [force/length^2] */
     double max_strain;
-    int has_capacity;        /* 1 if some member's section has an mbl */
-    double max_utilisation;  /* largest utilisation of those members (0 if none) */
+    int has_capacity;        /* 1 if some member's section has an mbl, or is a beam whose
+                                material has fy */
+    double max_utilisation;  /* largest utilisation of those members (0 if none): a cable's
+                                force / (mbl / safety), a beam's combined stress / fy */
     int worst_element;       /* id of the member with it (0 if none) */
     size_t slack;            /* slack tension-only members */
     double length;           /* sum of unstressed lengths (reference temperature) [length] */

@@ -86,7 +86,8 @@ static int local_rotation(ctn_jet r[3][3], ctn_jet t[3][3], ctn_jet th[3])
  * (variables 0..2) and the rotation vectors (3..5, 6..8). Returns 1 if they cannot be
  * formed (a collapsed chord, the chord along the triads' mean y axis, a local rotation
  * past 90 degrees). */
-static int kinematics(const ctn_beam_props *p, const double *X, const double *u, ctn_jet *l, ctn_jet th[2][3])
+int ctn_beam_kinematics(const ctn_beam_props *p, const double *X, const double *u, ctn_jet *l, ctn_jet th[2][3],
+                        double R[3][3])
 {
     ctn_jet x[3], r[3][3], q[3], pq[3], t[2][3][3];
     double E0[3][3], L = 0;
@@ -110,11 +111,13 @@ static int kinematics(const ctn_beam_props *p, const double *X, const double *u,
     ctn_jet_cross(pq, r[0], q);
     if (!(ctn_jet_unit(r[2], pq) > 1e-12)) return 1;
     ctn_jet_cross(r[1], r[2], r[0]);
+    for (int i = 0; R && i < 3; i++)
+        for (int k = 0; k < 3; k++) R[i][k] = r[i][k].v;
     return local_rotation(r, t[0], th[0]) || local_rotation(r, t[1], th[1]);
 }
 
 /* U of the chord length and the local rotations (the header's energy). */
-static void energy(const ctn_beam_props *p, const ctn_jet *l, ctn_jet th[2][3], ctn_jet *U)
+void ctn_beam_energy(const ctn_beam_props *p, const ctn_jet *l, ctn_jet th[2][3], ctn_jet *U)
 {
     ctn_jet a, b, w;
     ctn_jet_const(&a, p->L0);
@@ -145,7 +148,7 @@ static void energy(const ctn_beam_props *p, const ctn_jet *l, ctn_jet th[2][3], 
 
 /* The member's stretch l - L0 plus its bowing (the values of energy()'s), whose EA / L0
  * times is the axial force N. */
-static double stretch(const ctn_beam_props *p, double l, const double t[2][3])
+double ctn_beam_stretch(const ctn_beam_props *p, double l, const double t[2][3])
 {
     double s = l - p->L0;
     for (int k = 1; k < 3; k++)
@@ -157,40 +160,51 @@ static double stretch(const ctn_beam_props *p, double l, const double t[2][3])
 static const int dof_var[12] = { 0, 1, 2, 3, 4, 5, 0, 1, 2, 6, 7, 8 };
 static const double dof_sign[12] = { -1, -1, -1, 1, 1, 1, 1, 1, 1, 1, 1, 1 };
 
+void ctn_beam_dofs(const ctn_jet *U, double *f, double *K)
+{
+    for (int i = 0; i < 12; i++) f[i] = dof_sign[i] * U->g[dof_var[i]];
+    for (int i = 0; K && i < 12; i++)
+        for (int j = i; j < 12; j++) {
+            int a = dof_var[i] < dof_var[j] ? dof_var[i] : dof_var[j], b = dof_var[i] + dof_var[j] - a;
+            K[ctn_packed_index(12, i, j)] = dof_sign[i] * dof_sign[j] * U->h[ctn_packed_index(CTN_JET_N, a, b)];
+        }
+}
+
 int ctn_beam_eval(const void *props, unsigned mode, const double *X, const double *u, double *f, double *K,
                   ctn_elem_state *out)
 {
     const ctn_beam_props *p = props;
     ctn_jet l, th[2][3], U;
-    if (kinematics(p, X, u, &l, th)) return 1;
-    energy(p, &l, th, &U);
-    for (int i = 0; i < 12; i++) f[i] = dof_sign[i] * U.g[dof_var[i]];
-    for (int i = 0; K && i < 12; i++)
-        for (int j = i; j < 12; j++) {
-            int a = dof_var[i] < dof_var[j] ? dof_var[i] : dof_var[j], b = dof_var[i] + dof_var[j] - a;
-            K[ctn_packed_index(12, i, j)] = dof_sign[i] * dof_sign[j] * U.h[ctn_packed_index(CTN_JET_N, a, b)];
-        }
+    if (p->rel & CTN_BEAM_REL_BEND) return ctn_beam_eval_released(p, mode, X, u, f, K, out);
+    if (ctn_beam_kinematics(p, X, u, &l, th, NULL)) return 1;
+    ctn_beam_energy(p, &l, th, &U);
+    ctn_beam_dofs(&U, f, K);
     if (out) {
         double t[2][3];
         for (int a = 0; a < 2; a++)
             for (int k = 0; k < 3; k++) t[a][k] = th[a][k].v;
-        double eps = stretch(p, l.v, t) / p->L0, N = p->EA * eps;
+        double eps = ctn_beam_stretch(p, l.v, t) / p->L0, N = p->EA * eps;
         *out = (ctn_elem_state){ l.v, eps, N, (mode & CTN_EVAL_STRESS) ? N / p->A : 0, U.v, 0 };
     }
     return 0;
 }
 
-int ctn_beam_end_forces(const ctn_beam_props *p, const double *X, const double *u, double out[12])
+int ctn_beam_end_forces(const ctn_beam_props *p, const double *X, const double *u, double out[12], double R[3][3])
 {
     ctn_jet l, th[2][3];
-    if (kinematics(p, X, u, &l, th)) return 1;
+    if (ctn_beam_kinematics(p, X, u, &l, th, R)) return 1;
     double t[2][3];
     for (int a = 0; a < 2; a++)
         for (int k = 0; k < 3; k++) t[a][k] = th[a][k].v;
-    double N = p->EA * stretch(p, l.v, t) / p->L0;
+    if (p->rel & CTN_BEAM_REL_BEND) ctn_beam_condense(p, th, t);
+    double N = p->EA * ctn_beam_stretch(p, l.v, t) / p->L0;
     double T = p->kt * (t[1][0] - t[0][0]);
     double My[2] = { 2 * p->cy0 * t[0][1] + p->cy1 * t[1][1], 2 * p->cy0 * t[1][1] + p->cy1 * t[0][1] };
     double Mz[2] = { 2 * p->cz0 * t[0][2] + p->cz1 * t[1][2], 2 * p->cz0 * t[1][2] + p->cz1 * t[0][2] };
+    for (int a = 0; a < 2; a++) {                      /* a hinge takes no moment */
+        if (p->rel & CTN_RELEASE_RY1 << 3 * a) My[a] = 0;
+        if (p->rel & CTN_RELEASE_RZ1 << 3 * a) Mz[a] = 0;
+    }
     double Fy2 = -(Mz[0] + Mz[1]) / l.v, Fz2 = (My[0] + My[1]) / l.v;   /* the member's moment balance */
     const double e[12] = { -N, -Fy2, -Fz2, -T, My[0], Mz[0], N, Fy2, Fz2, T, My[1], Mz[1] };
     for (int k = 0; k < 12; k++) out[k] = e[k] + 0.0;   /* no negative zeros */

@@ -4,6 +4,7 @@
 #define CTN_ELEMENT_BEAM3_H
 
 #include "element/element.h"
+#include "element/jet.h"
 
 typedef struct ctn_beam_props {
     double L0;          /* reference (unstressed) length */
@@ -15,7 +16,13 @@ typedef struct ctn_beam_props {
     double rhoA;        /* mass per unit length (mass op) */
     double rhoJ;        /* rotary inertia per unit length about the axis, rhoA (Iy + Iz) / A */
     double rhoIy, rhoIz;/* ... about the local y and z axes, rhoA Iy / A, rhoA Iz / A */
+    unsigned rel;       /* end releases, CTN_RELEASE_* (bit 3 a + k: end a, local axis k);
+                           a torsion release sets kt = 0 (beam3_model.c) */
 } ctn_beam_props;
+
+/* The releases of bending (about local y or z, at either end): the kernel then takes
+ * the condensed energy (beam3_release.c). */
+#define CTN_BEAM_REL_BEND (CTN_RELEASE_RY1 | CTN_RELEASE_RZ1 | CTN_RELEASE_RY2 | CTN_RELEASE_RZ2)
 
 /* The kernel (the family's eval, element.h). */
 int ctn_beam_eval(const void *props, unsigned mode, const double *X, const double *u, double *f, double *K,
@@ -25,8 +32,39 @@ int ctn_beam_eval(const void *props, unsigned mode, const double *X, const doubl
  * out[0..5] at node 1 and out[6..11] at node 2, each (Fx, Fy, Fz, Mx, My, Mz) in the
  * current local axes of the member, the forces and moments the nodes apply to the
  * member (the stiffness method's end forces: N = out[6], T = out[9]). Returns 0, or 1
- * if the state cannot be evaluated (a collapsed chord, a local rotation past 90 deg). */
-int ctn_beam_end_forces(const ctn_beam_props *p, const double *X, const double *u, double out[12]);
+ * if the state cannot be evaluated (a collapsed chord, a local rotation past 90 deg).
+ * R (may be NULL) gets the current local axes, rows x, y, z in global components. */
+int ctn_beam_end_forces(const ctn_beam_props *p, const double *X, const double *u, double out[12], double R[3][3]);
+
+/* The pieces of the kernel (beam3.c) the released member shares (beam3_release.c):
+ * the chord length l and the local rotations th[a] of both ends as jets over the chord
+ * (variables 0..2) and the two rotation vectors (3..5, 6..8), 1 if they cannot be formed;
+ * the energy U of l and th (any jets); the stretch l - L0 plus the bowing of the local
+ * rotations t (EA / L0 times it is N); the forces f and packed tangent K (may be NULL) of
+ * the 12 DOFs from U as a jet over the kinematics' variables. The kinematics' R (may be
+ * NULL) gets the corotated frame's axes (rows x, y, z). */
+int ctn_beam_kinematics(const ctn_beam_props *p, const double *X, const double *u, ctn_jet *l, ctn_jet th[2][3],
+                        double R[3][3]);
+void ctn_beam_energy(const ctn_beam_props *p, const ctn_jet *l, ctn_jet th[2][3], ctn_jet *U);
+double ctn_beam_stretch(const ctn_beam_props *p, double l, const double t[2][3]);
+void ctn_beam_dofs(const ctn_jet *U, double *f, double *K);
+
+/* A member with bending releases (p->rel & CTN_BEAM_REL_BEND), beam3_release.c: the
+ * local rotations the energy takes, from the kinematics' th, into t: a rotation released
+ * at both ends of an axis is 0, one released at one end -rho times the other end's
+ * (rho = c1 / (2 c0): its bending moment 0, the static condensation of that end), the
+ * others th's. */
+void ctn_beam_condense(const ctn_beam_props *p, ctn_jet th[2][3], double t[2][3]);
+/* The kernel of a member with bending releases: the energy of the condensed rotations,
+ * its gradient and Hessian in the DOFs (ctn_beam_eval's contract). */
+int ctn_beam_eval_released(const ctn_beam_props *p, unsigned mode, const double *X, const double *u, double *f,
+                           double *K, ctn_elem_state *out);
+
+/* The consistent nodal loads of a uniform load q per unstressed length (global, fixed)
+ * on beam element e of the model, on its reference chord (beam3_model.c): forces F[a]
+ * and moments M[a] at its nodes a = 0, 1: q L0 / 2 and +-(L0^2 / 12) e1 x q, with a
+ * released end's moment condensed onto the other end and the shears. */
+void ctn_beam_line_loads(const ctn_model *m, size_t e, const double q[3], double F[2][3], double M[2][3]);
 
 /* Scalar functions of y = |v|^2 with their first two derivatives in y (beam3_fn.c):
  * the Rodrigues coefficients a = sin(t)/t and b = (1 - cos t)/t^2 of t = sqrt(y), and

@@ -1,7 +1,7 @@
 /* The beam family's model side (beam3.c has the kernel): the checks of a definition,
  * the orientation kept in the element record, the properties, self-weight and mass.
  * The orient= vector is kept as its direction, two angles in par[] (azimuth, polar;
- * polar -1: the default orientation). */
+ * polar -1: the default orientation), and its end releases in par[2]. */
 #include "element/beam3.h"
 
 #include <math.h>
@@ -13,6 +13,7 @@ static void beam_params(const ctn_element_spec *s, double *par)
     double n = hypot(hypot(v[0], v[1]), v[2]);
     par[0] = n > 0 ? atan2(v[1], v[0]) : 0;
     par[1] = n > 0 ? acos(fmax(-1, fmin(1, v[2] / n))) : -1;
+    par[2] = s->release;
 }
 
 /* The member's unit axis e1 and the orientation vector v of element e. */
@@ -57,8 +58,15 @@ static int beam_check(const ctn_model *m, const ctn_element *e)
     if (!(mat->G > 0))
         return ctn_model_error(m, CTN_ERR_MODEL, "beam %d: material '%s' has no shear modulus (give G= or nu=)", e->id,
                                mat->name);
+    if (mat->fy > 0 && !(s->Wy > 0 && s->Wz > 0))
+        return ctn_model_error(m, CTN_ERR_MODEL, "beam %d: material '%s' has fy= but section '%s' no section moduli "
+                               "(Wy=%g, Wz=%g): give Wy= and Wz=, or the section by its shape", e->id, mat->name, s->name,
+                               s->Wy, s->Wz);
     if (!(e->l0 > 0) || !isfinite(e->l0))
         return ctn_model_error(m, CTN_ERR_MODEL, "beam %d: length must be positive and finite (got %g)", e->id, e->l0);
+    if (!(e->par[2] >= 0 && e->par[2] < 64))
+        return ctn_model_error(m, CTN_ERR_MODEL, "beam %d: release must be a set of CTN_RELEASE_* bits (got %g)", e->id,
+                               e->par[2]);
     axis_orient(m, e, e1, v);
     if (sine(e1, v) < 1e-6)
         return ctn_model_error(m, CTN_ERR_MODEL, "beam %d: orient (direction %g, %g, %g) is parallel to the member: it must "
@@ -97,7 +105,8 @@ static void beam_setup(const ctn_model *m, size_t e, void *props)
     p->EA = E * s->A;
     bending(E * s->Iy, L, phiy, &p->cy0, &p->cy1);
     bending(E * s->Iz, L, phiz, &p->cz0, &p->cz1);
-    p->kt = G * s->J / L;
+    p->rel = (unsigned)el->par[2];
+    p->kt = p->rel & (CTN_RELEASE_RX1 | CTN_RELEASE_RX2) ? 0 : G * s->J / L;
     p->rhoA = ctn_model_section_mass(m, el->section);
     p->rhoJ = p->rhoA > 0 ? p->rhoA * (s->Iy + s->Iz) / s->A : 0;
     p->rhoIy = p->rhoA > 0 ? p->rhoA * s->Iy / s->A : 0;
@@ -133,13 +142,80 @@ static void beam_mass(const void *props, const double *X, int lumped, double *M)
         }
 }
 
-static void beam_load(const ctn_model *m, size_t e, double *f)
+
+static void cross(const double a[3], const double b[3], double c[3])
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* A hinge at end a about the local axis ek (a unit vector) takes no load moment: the
+ * moment Mr = M[a] . ek it would take goes, by the condensation of the linear bending
+ * energy c0 (t1^2 + t2^2) + c1 t1 t2 (t = theta - psi, psi the chord's rotation about
+ * ek), rho = c1 / (2 c0) of it against the other end (unless released too) and
+ * (1 + rho) Mr onto psi, i.e. the forces -+(1 + rho) Mr (ek x e1) / L at the nodes (a
+ * propped cantilever: q L^2 / 8 at the clamp, shears 3 q L / 8 and 5 q L / 8). */
+static void release_load(int a, int other, double rho, const double ek[3], const double e1[3], double L,
+                         double F[2][3], double M[2][3])
+{
+    double Mr = M[a][0] * ek[0] + M[a][1] * ek[1] + M[a][2] * ek[2], n[3];
+    double Q = other ? Mr : (1 + rho) * Mr;
+    cross(ek, e1, n);
+    for (int k = 0; k < 3; k++) {
+        M[a][k] -= Mr * ek[k];
+        if (!other) M[1 - a][k] -= rho * Mr * ek[k];
+        F[0][k] -= Q * n[k] / L;
+        F[1][k] += Q * n[k] / L;
+    }
+}
+
+void ctn_beam_line_loads(const ctn_model *m, size_t e, const double q[3], double F[2][3], double M[2][3])
 {
     const ctn_element *el = &m->elements.v[e];
-    const int *nd = ctn_elem_nodes(m, e);
-    double W = 0.5 * m->sections.v[el->section].w * el->l0;
+    ctn_beam_props p;
+    double e1[3], v[3], c[3], L = el->l0;
+    axis_orient(m, el, e1, v);
+    cross(e1, q, c);
     for (int a = 0; a < 2; a++)
-        for (int k = 0; k < 3; k++) f[3 * (size_t)nd[a] + (size_t)k] += W * m->gravity[k];
+        for (int k = 0; k < 3; k++) {
+            F[a][k] = 0.5 * L * q[k];
+            M[a][k] = (a ? -1 : 1) * L * L / 12 * c[k];
+        }
+    unsigned rel = (unsigned)el->par[2];
+    if (!(rel & CTN_BEAM_REL_BEND)) return;
+    beam_setup(m, e, &p);
+    for (int k = 1; k < 3; k++) {
+        const double *ek = k == 1 ? p.e2 : p.e3;
+        double rho = k == 1 ? p.cy1 / (2 * p.cy0) : p.cz1 / (2 * p.cz0);
+        int r[2] = { (rel >> k) & 1, (rel >> (3 + k)) & 1 };
+        for (int a = 0; a < 2; a++)
+            if (r[a]) release_load(a, r[1 - a], rho, ek, e1, L, F, M);
+    }
+}
+
+/* A uniform load q per unstressed length in a fixed global direction (lineload, weight):
+ * the beam's consistent nodal loads on the reference chord (ctn_beam_line_loads; fixed,
+ * like the load: conservative, so the tangent and the energy need no load term). */
+static void beam_line_load(const ctn_model *m, size_t e, const double q[3], double *f, double *M)
+{
+    const int *nd = ctn_elem_nodes(m, e);
+    double Fe[2][3], Me[2][3];
+    ctn_beam_line_loads(m, e, q, Fe, Me);
+    for (int a = 0; a < 2; a++)
+        for (int k = 0; k < 3; k++) {
+            size_t i = 3 * (size_t)nd[a] + (size_t)k;
+            if (f) f[i] += Fe[a][k];
+            if (M) M[i] += Me[a][k];
+        }
+}
+
+/* Self-weight: the uniform load w g, its forces (the moments: ctn_model_add_line_moments). */
+static void beam_load(const ctn_model *m, size_t e, double *f)
+{
+    double w = m->sections.v[m->elements.v[e].section].w;
+    const double q[3] = { w * m->gravity[0], w * m->gravity[1], w * m->gravity[2] };
+    if (w > 0) beam_line_load(m, e, q, f, NULL);
 }
 
 static double beam_stiffness(const void *props)
@@ -152,5 +228,5 @@ const ctn_element_ops ctn_beam3_ops = {
     .name = "beam", .nnodes = 2, .ndof_node = 6, .props_size = sizeof(ctn_beam_props),
     .flags = CTN_ELEM_SECTION | CTN_ELEM_FINITE_ROTATION,
     .check = beam_check, .params = beam_params, .setup = beam_setup, .eval = ctn_beam_eval, .load = beam_load,
-    .stiffness = beam_stiffness, .mass = beam_mass,
+    .stiffness = beam_stiffness, .mass = beam_mass, .line_load = beam_line_load,
 };

@@ -93,6 +93,11 @@ typedef struct ctn_element_ops {
      * upper triangle kk (6: xx, xy, xz, yy, yz, zz) instead of the packed 6 x 6, bit for
      * bit the values eval gives. The assembler then writes the tangent node by node
      * (assemble/gather.c); eval stays the generic path. */
+    /* Optional: the consistent nodal loads of a uniform load q [F/L] per unstressed
+     * length in a fixed global direction on element e, added to f (forces, 3 per node in
+     * model node order) and M (moments, likewise); either may be NULL. A family without
+     * it takes a lineload as q l0 / 2 at each node (cable). */
+    void (*line_load)(const ctn_model *m, size_t e, const double q[3], double *f, double *M);
     int (*eval_axial)(const void *props, unsigned mode, const double *X, const double *u, double *f,
                       double *kk, ctn_elem_state *st);
 } ctn_element_ops;

@@ -126,10 +126,17 @@ static void beam_fields(ctn_writer *w, const ctn_solution *s, size_t k, size_t i
     }
 }
 
+/* A beam's utilisation (ctn_solution_beam) when its material has fy, else -1. */
+static double beam_utilisation(ctn_writer *w, const ctn_solution *s, size_t k, size_t i)
+{
+    ctn_beam_result b = { .size = sizeof b };
+    return !ctn_solution_beam(w->m, s, k, i, &b) && b.fy > 0 ? b.utilisation : -1;
+}
+
 /* id,node1,node2,l0,length,strain,force,stress,slack,utilisation,group (utilisation and
- * group empty when the section has no mbl / the element no group), without the line's
- * end */
-static int element_row(ctn_writer *w, const ctn_element_info *e, const ctn_element_state *es)
+ * group empty when the section has no mbl / the element no group; a beam's utilisation,
+ * beam_util >= 0, when its material has fy), without the line's end */
+static int element_row(ctn_writer *w, const ctn_element_info *e, const ctn_element_state *es, double beam_util)
 {
     ctn_node_info a, b;
     if (ctn_model_node(w->m, (size_t)e->node[0], &a) || ctn_model_node(w->m, (size_t)e->node[1], &b))
@@ -144,6 +151,7 @@ static int element_row(ctn_writer *w, const ctn_element_info *e, const ctn_eleme
     ctn_wbuf_int(&w->out, es->slack);
     ctn_wbuf_putc(&w->out, ',');
     if (e->capacity > 0) ctn_wbuf_g17(&w->out, ctn_utilisation(e, es));
+    else if (beam_util >= 0) ctn_wbuf_g17(&w->out, beam_util);
     ctn_wbuf_putc(&w->out, ',');
     if (e->group) ctn_wbuf_puts(&w->out, e->group);
     return CTN_OK;
@@ -158,7 +166,7 @@ static int elements_step(void *p, const ctn_solution *s, size_t k)
         ctn_element_info e;
         ctn_element_state es;
         if (ctn_model_element(w->m, i, &e) || ctn_solution_step_element(s, k, i, &es) ||
-            element_row(w, &e, &es)) return ctn_writer_mismatch(w);
+            element_row(w, &e, &es, beams ? beam_utilisation(w, s, k, i) : -1)) return ctn_writer_mismatch(w);
         if (beams) beam_fields(w, s, k, i);
         if (chains && nodes_field(w, &e)) return ctn_writer_mismatch(w);
         ctn_wbuf_putc(&w->out, '\n');

@@ -71,11 +71,14 @@ static int d_material(ctn_line *l)
     ctn_material_spec spec;
     ctn_material_spec_init(&spec);
     ctn_strain strain = CTN_STRAIN_GREEN_LAGRANGE;
-    int rc = ctn_parse_positional(l, 1, "material NAME E=VALUE [strain=green-lagrange|engineering] [tension-only] [alpha=PER_KELVIN] [G=VALUE|nu=RATIO]");
+    int rc = ctn_parse_positional(l, 1, "material NAME E=VALUE [strain=green-lagrange|engineering] [tension-only] [alpha=PER_KELVIN] [G=VALUE|nu=RATIO] [fy=STRESS]");
     if (!rc) rc = ctn_parse_key_num(l, 2, "E", 1, &spec.E);
     if (!rc) rc = ctn_parse_key_num(l, 2, "G", 0, &spec.G);
     if (!rc) rc = material_nu(l, &spec);
     if (!rc) rc = ctn_parse_key_num(l, 2, "alpha", 0, &spec.alpha);
+    if (!rc) rc = ctn_parse_key_num(l, 2, "fy", 0, &spec.fy);
+    if (!rc && ctn_parse_key(l, 2, "fy") && !(spec.fy > 0))
+        return ctn_parse_error(l, "material %s: fy must be positive (found %g)", l->tok[1], spec.fy);
     const char *s = rc ? NULL : ctn_parse_key(l, 2, "strain");
     if (s && !strcmp(s, "engineering")) strain = CTN_STRAIN_ENGINEERING;
     else if (s && strcmp(s, "green-lagrange"))
@@ -92,7 +95,7 @@ static int d_section(ctn_line *l)
 {
     ctn_section_spec spec;
     ctn_section_spec_init(&spec);
-    int rc = ctn_parse_positional(l, 1, "section NAME material=MATERIAL A=AREA|d= [t=]|b= h= t=|b= h= tf= tw= [w=WEIGHT] [mass=MASS] [mbl=FORCE] [safety=FACTOR] [Iy=] [Iz=] [J=] [Asy=] [Asz=]");
+    int rc = ctn_parse_positional(l, 1, "section NAME material=MATERIAL A=AREA|d= [t=]|b= h= t=|b= h= tf= tw= [w=WEIGHT] [mass=MASS] [mbl=FORCE] [safety=FACTOR] [Iy=] [Iz=] [J=] [Asy=] [Asz=] [Wy=] [Wz=]");
     const char *mat = rc ? NULL : ctn_parse_key(l, 2, "material");
     if (!rc && !mat) return ctn_parse_missing(l, 2, NULL, "material", NULL);
     int shaped = 0;
@@ -105,9 +108,11 @@ static int d_section(ctn_line *l)
     }
     if (!rc) rc = ctn_parse_key_num(l, 2, "mbl", 0, &spec.mbl);
     if (!rc) rc = ctn_parse_key_num(l, 2, "safety", 0, &spec.safety);
-    double *beam[5] = { &spec.Iy, &spec.Iz, &spec.J, &spec.Asy, &spec.Asz };
-    static const char *const beam_key[5] = { "Iy", "Iz", "J", "Asy", "Asz" };
-    for (int k = 0; k < 5 && !rc; k++) rc = ctn_parse_key_num(l, 2, beam_key[k], 0, beam[k]);
+    double *beam[7] = { &spec.Iy, &spec.Iz, &spec.J, &spec.Asy, &spec.Asz, &spec.Wy, &spec.Wz };
+    static const char *const beam_key[7] = { "Iy", "Iz", "J", "Asy", "Asz", "Wy", "Wz" };
+    const double shape_I[2] = { spec.Iy, spec.Iz }, shape_W[2] = { spec.Wy, spec.Wz };
+    for (int k = 0; k < 7 && !rc; k++) rc = ctn_parse_key_num(l, 2, beam_key[k], 0, beam[k]);
+    if (!rc && shaped) ctn_parse_section_moduli(l, shape_I, shape_W, &spec);
     if (!rc && ctn_parse_key(l, 2, "mbl") && !(spec.mbl > 0))
         return ctn_parse_error(l, "section %s: mbl must be positive (found %g)", l->tok[1], spec.mbl);
     if (!rc && ctn_parse_key(l, 2, "safety") && !ctn_parse_key(l, 2, "mbl"))

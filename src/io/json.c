@@ -193,6 +193,10 @@ static void put_beam(json_writer *jw, const ctn_solution *s, size_t k, size_t i)
     ctn_jw_end(j);
     ctn_jw_number(j, "torque", b.T);
     ctn_jw_number(j, "moment_max", b.M_max);
+    if (!(b.fy > 0)) return;                         /* the utilisation of a yield stress */
+    ctn_jw_number(j, "stress_combined", b.stress);
+    ctn_element_info e;
+    if (!ctn_model_element(jw->w.m, i, &e) && !(e.capacity > 0)) ctn_jw_number(j, "utilisation", b.utilisation);
 }
 
 static void put_element(json_writer *jw, const ctn_element_info *e, const ctn_element_state *es,

@@ -88,6 +88,10 @@ int ctn_parse_beam(ctn_line *l);      /* directives_beam.c */
 /* A section's shape keys (d= t=, b= h= t=, b= h= tf= tw=) into s's A, Iy, Iz, J;
  * *shaped = 1 if some were given (section_shapes.c). */
 int ctn_parse_section_shape(ctn_line *l, ctn_section_spec *s, int *shaped);
+/* After the keys of a shaped section line: an Iy= or Iz= given (I differing from the
+ * shape's I) keeps the shape's extreme fibre, W = I / (I_shape / W_shape), unless Wy= /
+ * Wz= is given too (section_shapes.c). */
+void ctn_parse_section_moduli(ctn_line *l, const double I[2], const double W[2], ctn_section_spec *s);
 /* Loads and cases (directives_loads.c). */
 int ctn_parse_lineload(ctn_line *l);
 int ctn_parse_case(ctn_line *l);

@@ -9,7 +9,9 @@
  *   b=B h=H tf=F tw=W  I-section (flanges B x F, web W, depth H along local z): A =
  *                    2 B F + (H - 2F) W, Iy = (B H^3 - (B - W)(H - 2F)^3) / 12, Iz =
  *                    (2 F B^3 + (H - 2F) W^3) / 12, J = (2 B F^3 + (H - F) W^3) / 3
- * The keys A=, Iy=, Iz=, J= given on the same line replace the values computed. */
+ * and the elastic section moduli W = I / c of the extreme fibre, c = D / 2, H / 2 (Wy)
+ * or B / 2 (Wz). The keys A=, Iy=, Iz=, J=, Wy=, Wz= given on the same line replace the
+ * values computed; an Iy= or Iz= given keeps the shape's extreme fibre for W. */
 #include "io/parse.h"
 
 #include <math.h>
@@ -22,6 +24,7 @@ static void circle(double D, double T, ctn_section_spec *s)
     s->A = PI * (D * D - Di * Di) / 4;
     s->Iy = s->Iz = PI * (D * D * D * D - Di * Di * Di * Di) / 64;
     s->J = 2 * s->Iy;
+    s->Wy = s->Wz = s->Iy / (D / 2);
 }
 
 static void box(double B, double H, double T, ctn_section_spec *s)
@@ -31,6 +34,8 @@ static void box(double B, double H, double T, ctn_section_spec *s)
     s->Iy = (B * H * H * H - Bi * Hi * Hi * Hi) / 12;
     s->Iz = (H * B * B * B - Hi * Bi * Bi * Bi) / 12;
     s->J = 2 * T * (B - T) * (B - T) * (H - T) * (H - T) / (B + H - 2 * T);
+    s->Wy = s->Iy / (H / 2);
+    s->Wz = s->Iz / (B / 2);
 }
 
 static void ibeam(double B, double H, double F, double W, ctn_section_spec *s)
@@ -40,6 +45,8 @@ static void ibeam(double B, double H, double F, double W, ctn_section_spec *s)
     s->Iy = (B * H * H * H - (B - W) * hw * hw * hw) / 12;
     s->Iz = (2 * F * B * B * B + hw * W * W * W) / 12;
     s->J = (2 * B * F * F * F + (H - F) * W * W * W) / 3;
+    s->Wy = s->Iy / (H / 2);
+    s->Wz = s->Iz / (B / 2);
 }
 
 /* The dimension keys present (v[k] = 0 if absent): the count of those given, or a
@@ -89,4 +96,12 @@ int ctn_parse_section_shape(ctn_line *l, ctn_section_spec *s, int *shaped)
     return isfinite(s->A) && isfinite(s->Iy) && isfinite(s->Iz) && isfinite(s->J)
                ? CTN_OK
                : ctn_parse_error(l, "section %s: its dimensions overflow", name);
+}
+
+void ctn_parse_section_moduli(ctn_line *l, const double I[2], const double W[2], ctn_section_spec *s)
+{
+    double *Is[2] = { &s->Iy, &s->Iz }, *Ws[2] = { &s->Wy, &s->Wz };
+    static const char *const wkey[2] = { "Wy", "Wz" };
+    for (int k = 0; k < 2; k++)       /* an I= given: the same extreme fibre, I / c */
+        if (!ctn_parse_key(l, 2, wkey[k]) && *Is[k] != I[k] && I[k] > 0) *Ws[k] = *Is[k] * (W[k] / I[k]);
 }

@@ -21,7 +21,8 @@ static const key_dim dims[] = {
     { "'sag'", 0, 1 },             { "'x'", 0, 1 },               { "'y'", 0, 1 },
     { "'z'", 0, 1 },               { "'arclength'", 0, 1 },       { "'thickness'", 0, 1 },
     { "'d'", 0, 1 },               { "'density'", 1, -4 },        { "'rho'", 1, -4 },
-    { "'pressure'", 1, -2 },
+    { "'pressure'", 1, -2 },       { "'fy'", 1, -2 },             { "'Wy'", 0, 3 },
+    { "'Wz'", 0, 3 },
 };
 
 int ctn_parse_unit_dim(const char *what, int *f, int *l)

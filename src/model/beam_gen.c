@@ -2,7 +2,7 @@
  * on the chord, numbered after the largest node id; the first element takes the spec's
  * id, the others are numbered from CTN_BEAM_GEN_ID + 1 on (after the largest element id
  * once it is there), out of the way of the ids of the members that follow, in order
- * from the first node to the second. */
+ * from the first node to the second. The member's end releases go to its end elements. */
 #include "model/model.h"
 
 #include <string.h>
@@ -34,6 +34,7 @@ int ctn_model_add_beam(ctn_model *m, const ctn_element_spec *spec, int n)
             if ((rc = ctn_model_add_node(m, nodes[1], X, 0))) return rc;
         }
         if (k > 1) s.id = (m->max_element_id > CTN_BEAM_GEN_ID ? m->max_element_id : CTN_BEAM_GEN_ID) + 1;
+        s.release = spec->release & ((k == 1 ? 7u : 0u) | (k == n ? 56u : 0u));   /* the member's ends */
         if ((rc = ctn_model_add_element_spec(m, &s))) return rc;
         nodes[0] = nodes[1];
     }

@@ -90,6 +90,8 @@ int ctn_model_add_material_spec(ctn_model *m, const ctn_material_spec *spec)
         return ctn_model_error(m, CTN_ERR_MODEL, "material '%s': alpha must be finite and below 0.01 per kelvin in size (got %g)", name, s.alpha);
     if (!isfinite(s.G) || s.G < 0)
         return ctn_model_error(m, CTN_ERR_MODEL, "material '%s': G must be >= 0 and finite (got %g)", name, s.G);
+    if (!isfinite(s.fy) || s.fy < 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "material '%s': fy must be positive and finite (got %g)", name, s.fy);
     if ((rc = CTN_ARRAY_RESERVE(m->ctx, m->materials, 1))) return rc;
     ctn_material *p = &m->materials.v[m->materials.n++];
     snprintf(p->name, sizeof p->name, "%s", name);
@@ -98,15 +100,16 @@ int ctn_model_add_material_spec(ctn_model *m, const ctn_material_spec *spec)
     p->tension_only = tension_only != 0;
     p->alpha = s.alpha;
     p->G = s.G;
+    p->fy = s.fy;
     return CTN_OK;
 }
 
 /* The beam properties of a section: each >= 0 and finite. */
 static int check_beam(const ctn_model *m, const ctn_section_spec *s)
 {
-    const char *key[5] = { "Iy", "Iz", "J", "Asy", "Asz" };
-    const double v[5] = { s->Iy, s->Iz, s->J, s->Asy, s->Asz };
-    for (int k = 0; k < 5; k++)
+    const char *key[7] = { "Iy", "Iz", "J", "Asy", "Asz", "Wy", "Wz" };
+    const double v[7] = { s->Iy, s->Iz, s->J, s->Asy, s->Asz, s->Wy, s->Wz };
+    for (int k = 0; k < 7; k++)
         if (!isfinite(v[k]) || v[k] < 0)
             return ctn_model_error(m, CTN_ERR_MODEL, "section '%s': %s must be >= 0 and finite (got %g)", s->name, key[k], v[k]);
     return CTN_OK;
@@ -156,5 +159,7 @@ int ctn_model_add_section_spec(ctn_model *m, const ctn_section_spec *spec)
     p->J = s.J;
     p->Asy = s.Asy;
     p->Asz = s.Asz;
+    p->Wy = s.Wy;
+    p->Wz = s.Wz;
     return CTN_OK;
 }

@@ -1,8 +1,10 @@
 /* Loads per unit unstressed length in a fixed direction (`lineload`): wind, ice, any
  * distributed load of a cable element, lumped consistently: an element of unstressed
  * length l0 under q carries q l0, half at each end (exact for a straight two-node
- * element with linear shape functions). Other families are refused where the lumping
- * would not be exact: a catenary element's curve, a pulley's sliding segments. */
+ * element with linear shape functions). A beam takes the same forces and its fixed-end
+ * moments (its family's line_load), as it takes its weight. Other families are refused
+ * where the lumping would not be exact: a catenary element's curve, a pulley's sliding
+ * segments. */
 #include "element/element.h"
 
 #include <math.h>
@@ -12,6 +14,13 @@
 static int is_cable(const ctn_model *m, size_t e)
 {
     return !strcmp(ctn_element_family(m->elements.v[e].type)->name, "cable");
+}
+
+/* A lineload's families: cables (q l0 / 2 at each end) and the families with their own
+ * consistent loads (line_load: beams, with the fixed-end moments). */
+static int takes_lineload(const ctn_model *m, size_t e)
+{
+    return is_cable(m, e) || ctn_element_family(m->elements.v[e].type)->line_load;
 }
 
 int ctn_lload_on(const ctn_model *m, const ctn_lload *l, size_t e)
@@ -28,7 +37,11 @@ int ctn_lload_on(const ctn_model *m, const ctn_lload *l, size_t e)
 /* TARGET: all, an element id (a cable element) or a defined group. */
 static int resolve(ctn_model *m, const char *target, ctn_lload *l)
 {
-    return ctn_model_load_target(m, l->drag ? "wind" : "lineload", target, is_cable,
+    if (!l->drag)
+        return ctn_model_load_target(m, "lineload", target, takes_lineload,
+                                     "; a load per length is lumped exactly on cable elements only, or taken by beams "
+                                     "(mesh the span with cable)", &l->kind, &l->target);
+    return ctn_model_load_target(m, "wind", target, is_cable,
                                  "; a load per length is lumped exactly on cable elements only (mesh the span with "
                                  "cable)", &l->kind, &l->target);
 }
@@ -92,6 +105,12 @@ void ctn_model_add_lineloads(const ctn_model *m, const ctn_loadsel *sel, int dea
                 add_reference_drag(m, l, w, nd, f);
                 continue;
             }
+            const ctn_element_ops *ops = ctn_element_family(m->elements.v[e].type);
+            if (ops->line_load) {                                  /* beams: their own */
+                const double q[3] = { w * l->q[0], w * l->q[1], w * l->q[2] };
+                ops->line_load(m, e, q, f, NULL);
+                continue;
+            }
             double half = 0.5 * w * m->elements.v[e].l0;          /* q l0 / 2 at each end */
             for (int k = 0; k < 3; k++) {
                 f[3 * (size_t)nd[0] + (size_t)k] += half * l->q[k];
@@ -108,12 +127,13 @@ int ctn_model_check_lineloads(const ctn_model *m)
         int hit = 0;
         for (size_t e = 0; e < m->elements.n; e++) {
             if (!ctn_lload_on(m, l, e)) continue;
-            if (!is_cable(m, e))
+            if (!(l->drag ? is_cable(m, e) : takes_lineload(m, e)))
                 return ctn_error_at(m->ctx, CTN_ERR_MODEL, m->file, l->line,
                                     "%s: element %d is a %s; a load per length is lumped exactly on cable elements "
-                                    "only (mesh the span with cable, or leave it out of the target)",
+                                    "only%s (mesh the span with cable, or leave it out of the target)",
                                     l->drag ? "wind" : "lineload", m->elements.v[e].id,
-                                    ctn_element_family(m->elements.v[e].type)->name);
+                                    ctn_element_family(m->elements.v[e].type)->name,
+                                    l->drag ? "" : ", or taken by beams");
             hit = 1;
         }
         if (!hit && l->kind == CTN_TARGET_GROUP)
@@ -124,4 +144,53 @@ int ctn_model_check_lineloads(const ctn_model *m)
                                 l->drag ? "wind" : "lineload");
     }
     return CTN_OK;
+}
+
+/* The moments of a selection's lineloads on the families that take them with moments
+ * (line_load: beams' fixed-end moments), added to M (3 per node). */
+static void add_lineload_moments(const ctn_model *m, const ctn_loadsel *sel, double *M)
+{
+    for (size_t j = 0; j < m->lloads.n; j++) {
+        const ctn_lload *l = &m->lloads.v[j];
+        double w = ctn_loadsel_weight(sel, l->step);
+        if (w == 0 || l->drag) continue;
+        const double q[3] = { w * l->q[0], w * l->q[1], w * l->q[2] };
+        for (size_t e = 0; e < m->elements.n; e++) {
+            const ctn_element_ops *ops = ctn_element_family(m->elements.v[e].type);
+            if (ops->line_load && ctn_lload_on(m, l, e)) ops->line_load(m, e, q, NULL, M);
+        }
+    }
+}
+
+/* Self-weight w g per unstressed length of a family with line_load, its section's w. */
+static int weight_line(const ctn_model *m, size_t e, double q[3])
+{
+    const ctn_element *el = &m->elements.v[e];
+    if (!ctn_element_family(el->type)->line_load || el->section < 0) return 0;
+    double w = m->sections.v[el->section].w;
+    for (int k = 0; k < 3; k++) q[k] = w * m->gravity[k];
+    return w > 0 && (q[0] != 0 || q[1] != 0 || q[2] != 0);
+}
+
+void ctn_model_add_line_moments(const ctn_model *m, const ctn_loadsel *sel, double *M)
+{
+    double q[3];
+    for (size_t e = 0; e < m->elements.n; e++)             /* the weight's, always on */
+        if (weight_line(m, e, q)) ctn_element_family(m->elements.v[e].type)->line_load(m, e, q, NULL, M);
+    add_lineload_moments(m, sel, M);
+}
+
+void ctn_model_element_line(const ctn_model *m, const ctn_loadsel *sel, size_t e, double q[3])
+{
+    double wq[3];
+    q[0] = q[1] = q[2] = 0;
+    if (!ctn_element_family(m->elements.v[e].type)->line_load) return;
+    if (weight_line(m, e, wq))
+        for (int k = 0; k < 3; k++) q[k] += wq[k];
+    for (size_t j = 0; j < m->lloads.n; j++) {
+        const ctn_lload *l = &m->lloads.v[j];
+        double w = ctn_loadsel_weight(sel, l->step);
+        if (w == 0 || l->drag || !ctn_lload_on(m, l, e)) continue;
+        for (int k = 0; k < 3; k++) q[k] += w * l->q[k];
+    }
 }

@@ -110,6 +110,7 @@ void ctn_model_sel_moments(const ctn_model *m, const ctn_loadsel *sel, double *M
     if (M) {
         memset(M, 0, 3 * m->nodes.n * sizeof(double));
         add_nodal(m->mloads.v, m->mloads.n, sel, M);
+        ctn_model_add_line_moments(m, sel, M);
     }
     if (r) add_prescribed(m, sel, 1, r);
 }

@@ -7,7 +7,7 @@
 #include "model/idmap.h"
 
 #define CTN_NAME_MAX 64
-#define CTN_ELEM_NPAR 2  /* per-element parameters a family keeps in the model record */
+#define CTN_ELEM_NPAR 3  /* per-element parameters a family keeps in the model record */
 
 typedef struct ctn_node {
     int id;
@@ -26,6 +26,7 @@ typedef struct ctn_material {
     int tension_only;
     double alpha;    /* coefficient of thermal expansion [1/K] */
     double G;        /* shear modulus [force/length^2], 0 if not given */
+    double fy;       /* yield stress [force/length^2], 0 if not given */
 } ctn_material;
 
 typedef struct ctn_section {
@@ -38,6 +39,7 @@ typedef struct ctn_section {
     double mass;     /* per unit unstressed length; CTN_MASS_DEFAULT: w / g */
     double Iy, Iz, J;   /* beams: second moments of area, torsion constant [length^4] */
     double Asy, Asz;    /* beams: shear areas [length^2], 0 if not given */
+    double Wy, Wz;      /* beams: elastic section moduli [length^3], 0 if not given */
 } ctn_section;
 
 typedef struct ctn_element {
@@ -265,6 +267,13 @@ void ctn_model_sel_temperatures(const ctn_model *m, const ctn_loadsel *sel, doub
 /* Add the lineloads of a selection to f (3 per node): q l0 / 2 at each end; with
  * !dead_only the winds too, on the reference geometry (lineload.c). */
 void ctn_model_add_lineloads(const ctn_model *m, const ctn_loadsel *sel, int dead_only, double *f);
+/* Add the moments of the uniform loads on the families that take them with moments
+ * (beams: the fixed-end moments of their weight and of a selection's lineloads) to M
+ * (3 per node) (lineload.c). */
+void ctn_model_add_line_moments(const ctn_model *m, const ctn_loadsel *sel, double *M);
+/* The uniform load per unstressed length [F/L] on element e of a family with line_load
+ * (weight w g and a selection's lineloads), global axes; 0 for other families. */
+void ctn_model_element_line(const ctn_model *m, const ctn_loadsel *sel, size_t e, double q[3]);
 /* wind TARGET: drag q_w [force/length] along the unit direction dir (lineload.c). */
 int ctn_model_add_wind(ctn_model *m, const char *target, const double dir[3], double q);
 /* Whether lineload l acts on element e (cable elements of its target). */

@@ -1,4 +1,5 @@
-/* Results by group and the capacity check (utilisation = force / (mbl / safety)). */
+/* Results by group and the capacity check (utilisation = force / (mbl / safety); a beam's
+ * with fy, its combined stress / fy). */
 #include "model/model.h"
 #include "problem/solution.h"
 
@@ -11,7 +12,7 @@ double ctn_utilisation(const ctn_element_info *e, const ctn_element_state *st)
 }
 
 static void add_member(ctn_group_result *r, const ctn_model *m, const ctn_element_info *e,
-                       const ctn_element_state *st)
+                       const ctn_element_state *st, const ctn_beam_result *beam)
 {
     double g = sqrt(m->gravity[0] * m->gravity[0] + m->gravity[1] * m->gravity[1] + m->gravity[2] * m->gravity[2]);
     if (!r->elements++) {
@@ -26,6 +27,11 @@ static void add_member(ctn_group_result *r, const ctn_model *m, const ctn_elemen
     if (e->capacity > 0 && (!r->has_capacity || ctn_utilisation(e, st) > r->max_utilisation)) {
         r->has_capacity = 1;
         r->max_utilisation = ctn_utilisation(e, st);
+        r->worst_element = e->id;
+    }
+    if (beam && beam->fy > 0 && (!r->has_capacity || beam->utilisation > r->max_utilisation)) {
+        r->has_capacity = 1;
+        r->max_utilisation = beam->utilisation;
         r->worst_element = e->id;
     }
     r->slack += (size_t)(e->tension_only && st->slack);
@@ -46,7 +52,8 @@ int ctn_solution_group(const ctn_model *m, const ctn_solution *s, size_t k, size
         if (ctn_model_element(m, i, &e) || ctn_solution_step_element(s, k, i, &st)) return CTN_ERR_INVALID;
         ctn_catenary_result c = { .size = sizeof c };
         if (!ctn_solution_catenary(m, s, k, i, &c)) st.length = c.length;   /* the curve, not the chord */
-        add_member(out, m, &e, &st);
+        ctn_beam_result b = { .size = sizeof b };
+        add_member(out, m, &e, &st, ctn_solution_beam(m, s, k, i, &b) ? NULL : &b);
     }
     if (!(out->max_stress > -INFINITY)) out->max_stress = 0;
     return CTN_OK;
