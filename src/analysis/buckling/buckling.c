@@ -62,8 +62,10 @@ static int bk_alloc(bk_work *w)
     w->fs = ctn_calloc(p->ctx, p->ns, sizeof(double));
     w->f = ctn_calloc(p->ctx, n, sizeof(double));
     w->u = ctn_calloc(p->ctx, n, sizeof(double));
-    w->K0 = ctn_malloc(p->ctx, nz, sizeof(double));
-    w->K1 = ctn_malloc(p->ctx, nz, sizeof(double));
+    /* zeroed: the assembly assigns an entry from its first element and adds the others,
+     * and leaves an entry of the pattern that no element reaches as it was */
+    w->K0 = ctn_calloc(p->ctx, nz, sizeof(double));
+    w->K1 = ctn_calloc(p->ctx, nz, sizeof(double));
     w->A = ctn_calloc(p->ctx, n * n, sizeof(double));
     w->B = ctn_calloc(p->ctx, n * n, sizeof(double));
     w->theta = ctn_malloc(p->ctx, n, sizeof(double));
