@@ -399,6 +399,14 @@ int ctn_model_external_forces(const ctn_model *m, double *f);
  * at least one support, ... */
 int ctn_model_validate(const ctn_model *m);
 
+/* Time histories that a dynamics analysis records (catena/analysis.h), in the order
+ * asked: the displacements of node id in the directions dofs (bits CTN_FIX_X, CTN_FIX_Y,
+ * CTN_FIX_Z; 0: all three), or the axial force of element id. CTN_ERR_MODEL for an
+ * undefined id or one recorded twice. */
+int ctn_model_record_node(ctn_model *m, int id, unsigned dofs);
+int ctn_model_record_element(ctn_model *m, int id);
+size_t ctn_model_record_count(const ctn_model *m);
+
 CTN_API_END
 #ifdef __cplusplus
 }

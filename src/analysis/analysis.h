@@ -22,6 +22,13 @@ typedef struct ctn_analysis_ops {
 
 extern const ctn_analysis_ops ctn_analysis_static, ctn_analysis_stability, ctn_analysis_modal;
 extern const ctn_analysis_ops ctn_analysis_buckling;   /* buckling/buckling.c */
+extern const ctn_analysis_ops ctn_analysis_dynamics;   /* dynamics/dynamics.c */
+
+/* The dynamics analysis with options o into s (dynamics/dynamics.c): from rest at the
+ * start geometry when s has no step, else from its last step's state; a step "dynamics"
+ * (the state reached) and the histories added to s. A failed time step is an outcome
+ * (s->sum.reason, the dynamics summary's t_fail), not an error. */
+int ctn_dynamics_run(ctn_problem *p, ctn_solution *s, const ctn_dynamics_options *o);
 
 /* The registered kind of a name, NULL if none. */
 const ctn_analysis_ops *ctn_analysis_find(const char *name);

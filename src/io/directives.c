@@ -554,6 +554,7 @@ static const directive directives[] = {
     { "combination", ctn_parse_combination }, { "ice", ctn_parse_ice },
     { "wind", ctn_parse_wind },
     { "buckling", d_buckling },
+    { "dynamics", ctn_parse_dynamics }, { "damping", ctn_parse_damping }, { "record", ctn_parse_record },
 };
 
 int ctn_parse_directive(ctn_line *l)

@@ -49,6 +49,7 @@ void ctn_model_destroy(ctn_model **m)
     ctn_free(p->terms.v);
     ctn_free(p->etargets.v);
     ctn_free(p->densities.v);
+    ctn_free(p->records.v);
     ctn_idmap_free(&p->node_ids);
     ctn_idmap_free(&p->element_ids);
     ctn_free(p);

@@ -177,6 +177,14 @@ typedef struct ctn_cable {
     int target_iterations;   /* outer iterations that found the length */
 } ctn_cable;
 
+/* A time history a dynamics analysis records (records.c). */
+typedef struct ctn_record {
+    int node;        /* node index, or -1 */
+    unsigned dofs;   /* the node's directions (CTN_FIX_X | _Y | _Z) */
+    int element;     /* element index (its axial force), or -1 */
+    int line;
+} ctn_record;
+
 /* A growable array: data, count and capacity. */
 #define CTN_ARRAY(T) struct { T *v; size_t n, cap; }
 
@@ -218,6 +226,7 @@ struct ctn_model {
     CTN_ARRAY(ctn_cable) etargets;  /* catenary elements set by a target, each as the
                                        record of a one-element cable (first = the element
                                        index, count = 1), by increasing element index */
+    CTN_ARRAY(ctn_record) records;  /* time histories of a dynamics analysis, in order */
 };
 
 /* Make room for one more item in a CTN_ARRAY; 0 or CTN_ERR_NOMEM. */

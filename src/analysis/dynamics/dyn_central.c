@@ -1,0 +1,58 @@
+/* Explicit central differences on the lumped mass, in the velocity form:
+ *   v(n+1/2) = v_n + h/2 a_n,  d1 = d0 + h v(n+1/2),
+ *   a1 = M_L^-1 (f_ext - f_int(d1) - C v(n+1/2)),  v1 = v(n+1/2) + h/2 a1,
+ * stable for h <= 2 / omega_max (sqrt(1 + zeta^2) - zeta); omega_max^2 is bounded by
+ * Gershgorin's theorem on M_L^-1 K_T at the start: max_q sum_j |K_qj| / M_qq (for a
+ * uniform taut string that is exactly the largest eigenvalue: h <= l / c). */
+#include "analysis/dynamics/dynamics.h"
+
+#include <math.h>
+#include <string.h>
+
+int ctn_dyn_stable_step(ctn_dyn *dy)
+{
+    ctn_problem *p = dy->p;
+    size_t n = p->ndof;
+    int valid = 0;
+    int rc = ctn_dyn_residual(dy, dy->d0, 1, dy->r1, &valid);
+    if (rc) return rc;
+    if (!valid) return ctn_error(p->ctx, CTN_ERR_MODEL, "dynamics: the start state cannot be evaluated");
+    double *row = dy->w, wmax2 = 0;
+    memset(row, 0, n * sizeof(double));
+    for (size_t j = 0; j < n; j++)
+        for (int k = p->a->colptr[j]; k < p->a->colptr[j + 1]; k++) {
+            size_t i = (size_t)p->a->rowind[k];
+            row[j] += fabs(p->Kx[k]);
+            if (i != j) row[i] += fabs(p->Kx[k]);
+        }
+    for (size_t q = 0; q < n; q++) wmax2 = fmax(wmax2, row[q] / dy->diag[q]);
+    double w = sqrt(wmax2), zeta = w > 0 ? 0.5 * (dy->o->damping_alpha / w + dy->o->damping_beta * w) : 0;
+    dy->sum.dt_stable = w > 0 ? 2.0 / w * (sqrt(1 + zeta * zeta) - zeta) : dy->o->t_end;   /* no stiffness: no limit */
+    return CTN_OK;
+}
+
+int ctn_dyn_central_step(ctn_dyn *dy, double h, int *ok)
+{
+    ctn_problem *p = dy->p;
+    const int *eq = p->a->map.eq;
+    size_t n = p->ndof;
+    int valid = 0;
+    double *vh = dy->w;
+    *ok = 0;
+    for (size_t q = 0; q < n; q++) vh[q] = dy->v0[q] + 0.5 * h * dy->a0[q];
+    for (size_t i = 0; i < p->ns; i++) {
+        int q = eq[i];
+        dy->d1[i] = q < 0 ? dy->d0[i] : dy->d0[i] + h * vh[q];
+    }
+    int rc = ctn_dyn_residual(dy, dy->d1, 0, dy->r1, &valid);
+    if (rc || !valid) return rc;
+    ctn_dyn_damp(dy, vh, dy->w2);
+    for (size_t q = 0; q < n; q++) {
+        dy->a1[q] = (dy->r1[q] - dy->w2[q]) / dy->diag[q];
+        dy->v1[q] = vh[q] + 0.5 * h * dy->a1[q];
+        if (!isfinite(dy->v1[q])) return CTN_OK;
+    }
+    dy->sum.iterations++;
+    *ok = 1;
+    return ctn_interrupted(p->ctx);
+}
