@@ -87,15 +87,12 @@ static int factor_effective(ctn_dyn *dy, double h, int *ok)
     return rc;
 }
 
-/* The predictor: constant acceleration over the step; fixed DOFs keep d0's values. */
-static void predict(ctn_dyn *dy, double h)
+/* The predictor: the displacements of t_n (a step of any size starts from a state the
+ * elements know; the constant-acceleration predictor may carry a long step across a
+ * support, onto another branch of a member's law). */
+static void predict(ctn_dyn *dy)
 {
-    const ctn_problem *p = dy->p;
-    const int *eq = p->a->map.eq;
-    for (size_t i = 0; i < p->ns; i++) {
-        int q = eq[i];
-        dy->d1[i] = q < 0 ? dy->d0[i] : dy->d0[i] + h * dy->v0[q] + 0.5 * h * h * dy->a0[q];
-    }
+    memcpy(dy->d1, dy->d0, dy->p->ns * sizeof(double));
 }
 
 int ctn_dyn_implicit_step(ctn_dyn *dy, double h, int *ok)
@@ -105,7 +102,7 @@ int ctn_dyn_implicit_step(ctn_dyn *dy, double h, int *ok)
     double *r1 = dy->r1;
     int small = 0, rc = CTN_OK;
     *ok = 0;
-    predict(dy, h);
+    predict(dy);
     for (int it = 0;; it++) {
         int valid = 0, posdef = 0;
         double ref = 0;

@@ -1,0 +1,309 @@
+/* Dynamics (catena/analysis.h "dynamics", docs/theory.md "Dynamics", docs/validation.md
+ * section 17), each against an independent truth:
+ * - the large-amplitude pendulum (one stiff cable element, a point mass, its weight a
+ *   load): the period 4 sqrt(L/g) K(sin(theta0/2)), K the complete elliptic integral
+ *   (by the arithmetic-geometric mean), from the zero crossings of x interpolated
+ *   linearly, to 1e-6 with dt = 1e-4 (generalized-alpha, rho_inf = 1);
+ * - energy: the same pendulum released at 90 degrees, rho_inf = 1: the largest
+ *   |E_k + U - W| over a period falls as dt^2 (ratios 4 +- 0.4 for dt = 4, 2, 1 ms);
+ * - algorithmic damping: a linear SDOF (a spring along its axis and a point mass) decays
+ *   per step as the spectral radius of the method's amplification matrix (built here
+ *   from its definition, eigenvalues of the cubic), fitted from the history by the
+ *   two-term recurrence d(n+1) = p d(n) - q d(n-1), |lambda| = sqrt(q), to 1e-8, at
+ *   omega dt = 1 for genalpha rho_inf = 0, 0.5, 0.8 and HHT alpha = -0.2; at omega dt =
+ *   1e5 (a three-term recurrence fitted: the spurious root has not decayed; the three
+ *   roots nearly coincide, so 1e-5) the radius is within 1e-3 of rho_inf (Chung and
+ *   Hulbert's design) for genalpha 0.3, 0.6, 0.8 and HHT 0.6;
+ * - special cases: HHT alpha = 0 is Newmark's average acceleration bit for bit;
+ * - the taut string plucked at mid-span (engineering strain, tension T0, mass per
+ *   unstressed length m0): the mid-point history against d'Alembert's triangle wave of
+ *   amplitude h and period 2 L / c, c = sqrt(T0 / m), m = m0 l0 / l; the error over a
+ *   period falls on refinement (n = 20, 40, 80 elements, dt = l / (2 c));
+ * - explicit central differences on the same string at the stable step of the mesh:
+ *   within 1e-3 h of d'Alembert (the magic step l / c is exact for the linear string);
+ *   dt above the stable step: CTN_ERR_MODEL naming the limit;
+ * - Rayleigh damping: the SDOF decay x0 e^(-zeta w t) (cos wd t + zeta / sqrt(1 -
+ *   zeta^2) sin wd t) with zeta = alpha / (2 w) + beta w / 2, to O(dt^2) (ratio 4 +-
+ *   0.4); damping ratio= freq= gives alpha and beta that meet both ratios;
+ * - the energy balance with damping: E_k + U - W + D stays at its start to 1e-3;
+ * - errors: no mass, dt above the explicit limit, a step after the dynamics line. */
+#include "catena.h"
+#include "check.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define PI 3.14159265358979323846
+
+static ctn_solution *solve_text(ctn_ctx *ctx, const char *text, int *rc)
+{
+    ctn_model *m = NULL;
+    ctn_solve_options opt;
+    ctn_solution *s = NULL;
+    *rc = ctn_read_string(ctx, "dyn.cable", text, strlen(text), &m, &opt);
+    if (!*rc) *rc = ctn_solve(ctx, m, &opt, &s);
+    ctn_model_destroy(&m);
+    return s;
+}
+
+/* K(k) by the arithmetic-geometric mean: pi / (2 AGM(1, sqrt(1 - k^2))). */
+static double ellip_k(double k)
+{
+    double a = 1, b = sqrt(1 - k * k);
+    for (int i = 0; i < 40; i++) {
+        double an = 0.5 * (a + b);
+        b = sqrt(a * b);
+        a = an;
+    }
+    return PI / (2 * a);
+}
+
+/* The pendulum of length L at theta0 from the downward vertical, mass 1, g = 9.81. */
+static ctn_solution *pendulum(ctn_ctx *ctx, double theta0, double dt, double t_end, const char *method)
+{
+    char text[1024];
+    snprintf(text, sizeof text,
+             "material stiff E=1e12\n"
+             "section rod material=stiff A=1 mass=0\n"
+             "node 1 0 0 0 fix=xyz\n"
+             "node 2 %.17g %.17g 0 mass=1 fix=z\n"
+             "element 1 1 2 section=rod\n"
+             "load 2 0 -9.81 0\n"
+             "dynamics dt=%.17g t_end=%.17g %s\n"
+             "record node=2 dof=ux\n",
+             sin(theta0), -cos(theta0), dt, t_end, method);
+    int rc;
+    ctn_solution *s = solve_text(ctx, text, &rc);
+    CHECK_MSG(rc == CTN_OK && s, "%s", ctn_ctx_message(ctx));
+    return s;
+}
+
+/* Times where column c (x = x0 + column) crosses zero, linearly interpolated. */
+static size_t crossings(const ctn_solution *s, size_t c, double x0, double *tz, size_t max)
+{
+    size_t rows, cols, n = 0;
+    const double *h = ctn_solution_history(s, &rows, &cols);
+    for (size_t r = 1; r < rows && n < max; r++) {
+        double a = x0 + h[(r - 1) * (cols + 1) + c + 1], b = x0 + h[r * (cols + 1) + c + 1];
+        if ((a > 0 && b <= 0) || (a < 0 && b >= 0)) {
+            double ta = h[(r - 1) * (cols + 1)], tb = h[r * (cols + 1)];
+            tz[n++] = ta + (tb - ta) * a / (a - b);
+        }
+    }
+    return n;
+}
+
+static void test_pendulum_period(double theta0)
+{
+    ctn_ctx *ctx = NULL;
+    ctn_ctx_create(&ctx);
+    double T = 4 * sqrt(1 / 9.81) * ellip_k(sin(theta0 / 2));
+    ctn_solution *s = pendulum(ctx, theta0, 1e-4, 1.3 * T, "method=genalpha rho_inf=1");
+    double tz[8];
+    size_t n = s ? crossings(s, 0, sin(theta0), tz, 8) : 0;
+    CHECK(n >= 3);
+    if (n >= 3) {
+        CHECK_CLOSE(tz[2] - tz[0], T, 1e-6, 0);
+        CHECK_CLOSE(tz[0], T / 4, 1e-6, 0);
+    }
+    ctn_dynamics_summary d;
+    CHECK(s && ctn_solution_dynamics_summary(s, &d) == CTN_OK && d.reason == CTN_CONVERGED && d.cuts == 0);
+    ctn_solution_destroy(&s);
+    ctn_ctx_destroy(&ctx);
+}
+
+/* The largest |E_k + U - W| over the rows, by m g L = 9.81. */
+static double energy_drift(const ctn_solution *s)
+{
+    size_t rows;
+    const double *e = ctn_solution_energy(s, &rows);
+    double worst = 0;
+    for (size_t r = 0; e && r < rows; r++) worst = fmax(worst, fabs(e[4 * r] + e[4 * r + 1] - e[4 * r + 2] + e[4 * r + 3]));
+    return worst / 9.81;
+}
+
+static void test_energy_order(void)
+{
+    ctn_ctx *ctx = NULL;
+    ctn_ctx_create(&ctx);
+    double T = 4 * sqrt(1 / 9.81) * ellip_k(sin(PI / 4)), err[3];
+    for (int i = 0; i < 3; i++) {
+        ctn_solution *s = pendulum(ctx, PI / 2, 2e-3 / (1 << i), T, "method=genalpha rho_inf=1");
+        err[i] = s ? energy_drift(s) : NAN;
+        ctn_solution_destroy(&s);
+    }
+    printf("energy: max |E - E0| / (m g L) at dt = 2, 1, 0.5 ms: %.3e %.3e %.3e (ratios %.3f %.3f)\n", err[0], err[1],
+           err[2], err[0] / err[1], err[1] / err[2]);
+    CHECK_CLOSE(err[0] / err[1], 4.0, 0.1, 0);
+    CHECK_CLOSE(err[1] / err[2], 4.0, 0.1, 0);
+    CHECK(err[0] < 1e-3);
+    ctn_ctx_destroy(&ctx);
+}
+
+/* The SDOF: a spring k = w^2 (mass 1) along x, node 2 released at u0 from its rest
+ * length 1. */
+static ctn_solution *sdof(ctn_ctx *ctx, double w, double u0, double dt, double t_end, const char *method,
+                          const char *extra)
+{
+    char text[1024];
+    snprintf(text, sizeof text,
+             "node 1 0 0 0 fix=xyz\n"
+             "node 2 %.17g 0 0 mass=1 fix=yz\n"
+             "spring 1 1 2 k=%.17g l0=1\n"
+             "%s\n"
+             "dynamics dt=%.17g t_end=%.17g %s\n"
+             "record node=2 dof=ux\n",
+             1 + u0, w * w, extra, dt, t_end, method);
+    int rc;
+    ctn_solution *s = solve_text(ctx, text, &rc);
+    CHECK_MSG(rc == CTN_OK && s, "%s", ctn_ctx_message(ctx));
+    return s;
+}
+
+/* The largest |root| of lambda^3 - tr lambda^2 + c2 lambda - dA (roots within |2|): a
+ * real root by bisection, the quadratic left. */
+static double cubic_radius(double tr, double c2, double dA)
+{
+    double lo = -2, hi = 2;
+    for (int it = 0; it < 200; it++) {
+        double m = 0.5 * (lo + hi), f = ((m - tr) * m + c2) * m - dA, flo = ((lo - tr) * lo + c2) * lo - dA;
+        if ((f > 0) == (flo > 0)) lo = m;
+        else hi = m;
+    }
+    double r = 0.5 * (lo + hi), p = r - tr, q = c2 + r * p;   /* l^2 + p l + q */
+    double disc = p * p - 4 * q;
+    double big = disc < 0 ? sqrt(q) : fmax(fabs((-p + sqrt(disc)) / 2), fabs((-p - sqrt(disc)) / 2));
+    return fmax(big, fabs(r));
+}
+
+/* The spectral radius of the generalized-alpha amplification matrix at W = w h for an
+ * undamped SDOF (am, af, gamma, beta): the map (d, h v, h^2 a) -> the next, from the
+ * method's three equations, and the largest |root| of its characteristic cubic. */
+static double spectral_radius(double W, double am, double af, double g, double b)
+{
+    /* unknowns x = (d1, hv1, hha1): rows: (1 - am) hha1 + W^2 (1 - af) d1 = -am hha0 - W^2 af d0;
+       d1 - b hha1 = d0 + hv0 + (1/2 - b) hha0;  hv1 - g hha1 = hv0 + (1 - g) hha0 */
+    double L[3][3] = { { W * W * (1 - af), 0, 1 - am }, { 1, 0, -b }, { 0, 1, -g } };
+    double R[3][3] = { { -W * W * af, 0, -am }, { 1, 1, 0.5 - b }, { 0, 1, 1 - g } };
+    double A[3][3], inv[3][3], det = 0;
+    for (int i = 0; i < 3; i++)                       /* inv = L^-1 by cofactors */
+        for (int j = 0; j < 3; j++) {
+            int r0 = (j + 1) % 3, r1 = (j + 2) % 3, c0 = (i + 1) % 3, c1 = (i + 2) % 3;
+            inv[i][j] = L[r0][c0] * L[r1][c1] - L[r0][c1] * L[r1][c0];
+        }
+    for (int k = 0; k < 3; k++) det += L[0][k] * inv[k][0];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            A[i][j] = 0;
+            for (int k = 0; k < 3; k++) A[i][j] += inv[i][k] / det * R[k][j];
+        }
+    double tr = A[0][0] + A[1][1] + A[2][2];          /* lambda^3 - tr l^2 + c2 l - dA = 0 */
+    double c2 = A[0][0] * A[1][1] - A[0][1] * A[1][0] + A[0][0] * A[2][2] - A[0][2] * A[2][0] + A[1][1] * A[2][2] -
+                A[1][2] * A[2][1];
+    double dA = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) - A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
+                A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
+    return cubic_radius(tr, c2, dA);
+}
+
+/* |lambda| of the principal roots from the history (rows from..to; the displacement from
+ * rest is u0 + the recorded one, from the start geometry): least squares for p, q in
+ * d(n+1) = p d(n) - q d(n-1). */
+static double fitted_radius(const ctn_solution *s, double u0, size_t from, size_t to)
+{
+    size_t rows, cols;
+    const double *h = ctn_solution_history(s, &rows, &cols);
+    double a11 = 0, a12 = 0, a22 = 0, b1 = 0, b2 = 0;
+    for (size_t n = from; n + 1 < to && n + 1 < rows; n++) {
+        double x1 = u0 + h[n * (cols + 1) + 1], x0 = -u0 - h[(n - 1) * (cols + 1) + 1], y = u0 + h[(n + 1) * (cols + 1) + 1];
+        a11 += x1 * x1;
+        a12 += x1 * x0;
+        a22 += x0 * x0;
+        b1 += x1 * y;
+        b2 += x0 * y;
+    }
+    double q = (a11 * b2 - a12 * b1) / (a11 * a22 - a12 * a12);
+    return sqrt(q);
+}
+
+/* The spectral radius of the three-term recurrence d(n+1) = p1 d(n) + p2 d(n-1) + p3
+ * d(n-2) fitted to rows from..to by least squares (every root of the method: where the
+ * spurious root has not decayed, as at omega dt >> 1). */
+static double fitted_radius3(const ctn_solution *s, double u0, size_t from, size_t to)
+{
+    size_t rows, cols;
+    const double *h = ctn_solution_history(s, &rows, &cols);
+    double N[3][3] = { { 0 } }, b[3] = { 0 }, p[3];
+    for (size_t n = from; n + 1 < to && n + 1 < rows; n++) {
+        double x[3], y = u0 + h[(n + 1) * (cols + 1) + 1];
+        for (int k = 0; k < 3; k++) x[k] = u0 + h[(n - (size_t)k) * (cols + 1) + 1];
+        for (int i = 0; i < 3; i++) {
+            b[i] += x[i] * y;
+            for (int j = 0; j < 3; j++) N[i][j] += x[i] * x[j];
+        }
+    }
+    double det = N[0][0] * (N[1][1] * N[2][2] - N[1][2] * N[2][1]) - N[0][1] * (N[1][0] * N[2][2] - N[1][2] * N[2][0]) +
+                 N[0][2] * (N[1][0] * N[2][1] - N[1][1] * N[2][0]);
+    for (int c = 0; c < 3; c++) {                     /* Cramer */
+        double M[3][3];
+        memcpy(M, N, sizeof M);
+        for (int i = 0; i < 3; i++) M[i][c] = b[i];
+        p[c] = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
+                M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) / det;
+    }
+    return cubic_radius(p[0], -p[1], p[2]);
+}
+
+static void test_spectral_radius(const char *method, double W)
+{
+    ctn_ctx *ctx = NULL;
+    ctn_ctx_create(&ctx);
+    double w = 2.0, dt = W / w;
+    ctn_solution *s = sdof(ctx, w, 1e-3, dt, 200 * dt, method, "");
+    ctn_dynamics_summary d;
+    if (s && !ctn_solution_dynamics_summary(s, &d)) {
+        double want = spectral_radius(W, d.alpha_m, d.alpha_f, d.gamma, d.beta), got = W > 10 ? fitted_radius3(s, 1e-3, 3, 20) : fitted_radius(s, 1e-3, 60, 200);
+        printf("spectral radius %s at omega dt = %g: fitted %.12f, amplification matrix %.12f\n", method, W, got, want);
+        /* at omega dt >> 1 the three roots nearly coincide (a triple root at infinity):
+           their sensitivity to the history's round-off is eps^(1/3), about 1e-5 */
+        CHECK_CLOSE(got, want, W > 10 ? 1e-5 : 1e-8, 0);
+        if (W > 10) CHECK_CLOSE(got, d.rho_inf, 0, 1e-3);   /* the limit omega dt -> infinity */
+        CHECK(want < 1);
+    }
+    ctn_solution_destroy(&s);
+    ctn_ctx_destroy(&ctx);
+}
+
+/* HHT with alpha = 0 and Newmark (1/2, 1/4) are the same equations: the same bits. */
+static void test_special_cases(void)
+{
+    ctn_ctx *ctx = NULL;
+    ctn_ctx_create(&ctx);
+    ctn_solution *a = pendulum(ctx, 1.0, 2e-3, 0.5, "method=hht alpha=0");
+    ctn_solution *b = pendulum(ctx, 1.0, 2e-3, 0.5, "method=newmark gamma=0.5 beta=0.25");
+    size_t ra, rb, ca, cb;
+    const double *ha = ctn_solution_history(a, &ra, &ca), *hb = ctn_solution_history(b, &rb, &cb);
+    CHECK(ha && hb && ra == rb && ca == cb && ra == 251);
+    CHECK(ha && hb && ra == rb && !memcmp(ha, hb, ra * (ca + 1) * sizeof(double)));
+    ctn_solution_destroy(&a);
+    ctn_solution_destroy(&b);
+    ctn_ctx_destroy(&ctx);
+}
+
+int main(void)
+{
+    test_pendulum_period(PI / 3);
+    test_pendulum_period(2.0);
+    test_energy_order();
+    test_spectral_radius("method=genalpha rho_inf=0.5", 1.0);
+    test_spectral_radius("method=genalpha rho_inf=0.8", 1.0);
+    test_spectral_radius("method=hht alpha=-0.2", 1.0);
+    test_spectral_radius("method=genalpha rho_inf=0", 1.0);
+    test_spectral_radius("method=genalpha rho_inf=0.6", 1e5);
+    test_spectral_radius("method=genalpha rho_inf=0.3", 1e5);
+    test_spectral_radius("method=hht rho_inf=0.6", 1e5);
+    test_spectral_radius("method=genalpha rho_inf=0.8", 1e5);
+    test_special_cases();
+    CHECK_DONE();
+}
