@@ -291,6 +291,159 @@ static void test_special_cases(void)
     ctn_ctx_destroy(&ctx);
 }
 
+/* The taut string: L = 1 between fixed ends, n elements, tension T0 = 1 in the straight
+ * string (engineering strain, EA = 100: l0 = l / (1 + T0 / EA)), m0 = 1 per unstressed
+ * length, plucked to h at mid-span (y only: x and z fixed). c = sqrt(T0 / m), m = m0 l0 /
+ * l the mass per current length. */
+static const double string_h = 1e-3, string_EA = 100;
+
+static ctn_solution *plucked_string(ctn_ctx *ctx, int n, double dt, double t_end, const char *method, int expect_ok)
+{
+    size_t size = 512 + 192 * (size_t)n;
+    char *text = malloc(size), *p = text;
+    double l = 1.0 / n, l0 = l / (1 + 1 / string_EA);
+    p += sprintf(p, "material m E=%.17g strain=engineering\nsection s material=m A=1 mass=1\n", string_EA);
+    for (int j = 0; j <= n; j++) {
+        double x = j * l, y = string_h * (1 - fabs(2 * x - 1));
+        p += sprintf(p, "node %d %.17g %.17g 0 fix=%s\n", j + 1, x, y, j == 0 || j == n ? "xyz" : "xz");
+    }
+    for (int j = 0; j < n; j++) p += sprintf(p, "element %d %d %d section=s l0=%.17g\n", j + 1, j + 1, j + 2, l0);
+    sprintf(p, "dynamics dt=%.17g t_end=%.17g %s\nrecord node=%d dof=uy\n", dt, t_end, method, n / 2 + 1);
+    int rc;
+    ctn_solution *s = solve_text(ctx, text, &rc);
+    if (expect_ok) CHECK_MSG(rc == CTN_OK && s, "%s", ctn_ctx_message(ctx));
+    free(text);
+    return s;
+}
+
+static double string_c(void) { return sqrt(1.0 / (1.0 / (1 + 1 / string_EA))); }
+
+/* d'Alembert's mid-point: a triangle wave between h and -h, period 2 L / c. */
+static double dalembert_mid(double t)
+{
+    double ph = fmod(t * string_c() / 2.0, 1.0);      /* fraction of the period */
+    return string_h * (ph < 0.5 ? 1 - 4 * ph : 4 * ph - 3);
+}
+
+/* The largest |y_mid - d'Alembert| over the history, by h. */
+static double pluck_error(const ctn_solution *s)
+{
+    size_t rows, cols;
+    const double *hs = ctn_solution_history(s, &rows, &cols);
+    double worst = 0;
+    for (size_t r = 0; hs && r < rows; r++)
+        worst = fmax(worst, fabs(string_h + hs[r * (cols + 1) + 1] - dalembert_mid(hs[r * (cols + 1)])));
+    return hs ? worst / string_h : NAN;
+}
+
+static void test_string_implicit(void)
+{
+    ctn_ctx *ctx = NULL;
+    ctn_ctx_create(&ctx);
+    double err[3], T = 2.0 / string_c();
+    for (int i = 0; i < 3; i++) {
+        int n = 20 << i;
+        ctn_solution *s = plucked_string(ctx, n, 0.5 / (n * string_c()), T, "method=genalpha rho_inf=1 mass=lumped", 1);
+        err[i] = s ? pluck_error(s) : NAN;
+        ctn_solution_destroy(&s);
+    }
+    printf("string pluck, implicit: max |y_mid - d'Alembert| / h over a period at n = 20, 40, 80: %.3e %.3e %.3e\n",
+           err[0], err[1], err[2]);
+    CHECK(err[1] < err[0] && err[2] < err[1] && err[2] < 0.1);
+    ctn_ctx_destroy(&ctx);
+}
+
+static void test_string_central(void)
+{
+    ctn_ctx *ctx = NULL;
+    ctn_ctx_create(&ctx);
+    int n = 40;
+    double T = 2.0 / string_c(), magic = 1.0 / (n * string_c());
+    ctn_solution *s = plucked_string(ctx, n, 1.001 * magic, T, "method=central", 0);     /* above the limit */
+    CHECK(!s && ctn_ctx_code(ctx) == CTN_ERR_MODEL && strstr(ctn_ctx_message(ctx), "stable step"));
+    printf("central above its limit: %s\n", ctn_ctx_message(ctx));
+    ctn_ctx_clear(ctx);
+    s = plucked_string(ctx, n, 0.999 * magic, T, "method=central", 1);
+    ctn_dynamics_summary d;
+    if (s && !ctn_solution_dynamics_summary(s, &d)) {
+        double err = pluck_error(s);
+        printf("string pluck, central at 0.999 l/c (stable step %.9g = %.9f l/c): max error / h %.3e\n", d.dt_stable,
+               d.dt_stable / magic, err);
+        CHECK(d.dt_stable <= magic && d.dt_stable > 0.999 * magic);
+        CHECK(err < 1e-2);
+    }
+    ctn_solution_destroy(&s);
+    ctn_ctx_destroy(&ctx);
+}
+
+/* The damped SDOF against x0 e^(-zeta w t) (cos wd t + zeta / sqrt(1 - zeta^2) sin wd
+ * t): the largest error over 3 periods, by x0. */
+static double damped_error(ctn_ctx *ctx, double w, double a, double b, double dt)
+{
+    char extra[128];
+    snprintf(extra, sizeof extra, "damping alpha=%.17g beta=%.17g", a, b);
+    double u0 = 1e-3, zeta = a / (2 * w) + b * w / 2, wd = w * sqrt(1 - zeta * zeta);
+    ctn_solution *s = sdof(ctx, w, u0, dt, 3 * 2 * PI / w, "method=genalpha rho_inf=1", extra);
+    size_t rows, cols;
+    const double *h = ctn_solution_history(s, &rows, &cols);
+    double worst = h ? 0 : NAN;
+    for (size_t r = 0; h && r < rows; r++) {
+        double t = h[r * (cols + 1)], x = u0 * exp(-zeta * w * t) * (cos(wd * t) + zeta / sqrt(1 - zeta * zeta) * sin(wd * t));
+        worst = fmax(worst, fabs(u0 + h[r * (cols + 1) + 1] - x));
+    }
+    ctn_dynamics_summary d;
+    if (s && !ctn_solution_dynamics_summary(s, &d)) CHECK_MSG(d.energy_error < 1e-3, "energy balance %g", d.energy_error);
+    ctn_solution_destroy(&s);
+    return worst / u0;
+}
+
+static void test_rayleigh(void)
+{
+    ctn_ctx *ctx = NULL;
+    ctn_ctx_create(&ctx);
+    double w = 3.0, e[3];
+    for (int i = 0; i < 3; i++) e[i] = damped_error(ctx, w, 0.3, 0.02, 0.02 / (1 << i));
+    printf("Rayleigh SDOF (zeta = %.3f): max error / x0 at dt = 20, 10, 5 ms: %.3e %.3e %.3e (ratios %.3f %.3f)\n",
+           0.3 / (2 * w) + 0.02 * w / 2, e[0], e[1], e[2], e[0] / e[1], e[1] / e[2]);
+    CHECK_CLOSE(e[0] / e[1], 4.0, 0.1, 0);
+    CHECK_CLOSE(e[1] / e[2], 4.0, 0.1, 0);
+    CHECK(e[2] < 1e-3);
+    /* ratio= freq=: alpha, beta meeting both ratios */
+    const char *text = "node 1 0 0 0 fix=xyz\nnode 2 1.001 0 0 mass=1 fix=yz\nspring 1 1 2 k=4 l0=1\n"
+                       "damping ratio=0.02,0.05 freq=0.5,8\ndynamics dt=0.01 t_end=0.1\n";
+    int rc;
+    ctn_solution *s = solve_text(ctx, text, &rc);
+    ctn_dynamics_summary d;
+    CHECK(s && !ctn_solution_dynamics_summary(s, &d));
+    if (s) {
+        double w1 = 2 * PI * 0.5, w2 = 2 * PI * 8;
+        CHECK_CLOSE(d.damping_alpha / (2 * w1) + d.damping_beta * w1 / 2, 0.02, 1e-12, 0);
+        CHECK_CLOSE(d.damping_alpha / (2 * w2) + d.damping_beta * w2 / 2, 0.05, 1e-12, 0);
+    }
+    ctn_solution_destroy(&s);
+    ctn_ctx_destroy(&ctx);
+}
+
+/* Errors at the dynamics line: a model without mass, a step after the line. */
+static void test_errors(void)
+{
+    ctn_ctx *ctx = NULL;
+    ctn_ctx_create(&ctx);
+    int rc;
+    const char *nomass = "material m E=1\nsection s material=m A=1\nnode 1 0 0 0 fix=xyz\nnode 2 1 0 0\n"
+                         "element 1 1 2 section=s\nload 2 1 0 0\ndynamics dt=0.1 t_end=1\n";
+    ctn_solution *s = solve_text(ctx, nomass, &rc);
+    CHECK(!s && rc == CTN_ERR_MODEL && strstr(ctn_ctx_message(ctx), "dyn.cable:7:") &&
+          strstr(ctn_ctx_message(ctx), "node 2") && strstr(ctn_ctx_message(ctx), "section 's'"));
+    printf("no mass: %s\n", ctn_ctx_message(ctx));
+    const char *late = "node 1 0 0 0 fix=xyz\nnode 2 1 0 0 mass=1\nspring 1 1 2 k=1\ndynamics dt=0.1 t_end=1\n"
+                       "step two\nload 2 1 0 0\n";
+    s = solve_text(ctx, late, &rc);
+    CHECK(!s && rc == CTN_ERR_MODEL && strstr(ctn_ctx_message(ctx), "dyn.cable:4:") &&
+          strstr(ctn_ctx_message(ctx), "after the last"));
+    ctn_ctx_destroy(&ctx);
+}
+
 int main(void)
 {
     test_pendulum_period(PI / 3);
@@ -305,5 +458,9 @@ int main(void)
     test_spectral_radius("method=hht rho_inf=0.6", 1e5);
     test_spectral_radius("method=genalpha rho_inf=0.8", 1e5);
     test_special_cases();
+    test_string_implicit();
+    test_string_central();
+    test_rayleigh();
+    test_errors();
     CHECK_DONE();
 }
