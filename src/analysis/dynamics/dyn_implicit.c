@@ -95,19 +95,24 @@ static void predict(ctn_dyn *dy)
     memcpy(dy->d1, dy->d0, dy->p->ns * sizeof(double));
 }
 
+/* Newton corrections below this fraction of |d| + L_ref make the next residual a
+ * round-off one (quadratic convergence): it is then evaluated without the tangent,
+ * which is assembled only if that residual fails the test after all. */
+#define CTN_DYN_LIKELY 1e-5
+
 int ctn_dyn_implicit_step(ctn_dyn *dy, double h, int *ok)
 {
     ctn_problem *p = dy->p;
     const ctn_dynamics_options *o = dy->o;
     double *r1 = dy->r1;
-    int small = 0, rc = CTN_OK;
+    int small = 0, with_K = 1, rc = CTN_OK;
     *ok = 0;
     predict(dy);
     for (int it = 0;; it++) {
         int valid = 0, posdef = 0;
         double ref = 0;
         kinematics(dy, h);
-        if ((rc = ctn_dyn_residual(dy, dy->d1, !small, r1, &valid)) || !valid) return rc;
+        if ((rc = ctn_dyn_residual(dy, dy->d1, with_K, r1, &valid)) || !valid) return rc;
         step_residual(dy, r1, &ref);
         double rn = ctn_layout_norm(&p->eq, dy->R);
         if (!isfinite(rn)) return CTN_OK;
@@ -116,13 +121,18 @@ int ctn_dyn_implicit_step(ctn_dyn *dy, double h, int *ok)
             return CTN_OK;
         }
         if (it >= o->maxit) return CTN_OK;
+        if (!with_K) {                                /* not converged after all: K too */
+            with_K = 1;
+            continue;
+        }
         if ((rc = factor_effective(dy, h, &posdef)) || !posdef) return rc;
         for (size_t q = 0; q < p->ndof; q++) dy->R[q] /= 1 - dy->af;
         if ((rc = ctn_problem_linsolve(p, dy->R, dy->w))) return rc;
         ctn_problem_update(p, dy->d1, 1.0, dy->w);
         dy->sum.iterations++;
-        double dn = ctn_layout_norm(&p->eq, dy->w), dd = ctn_layout_norm(&p->st, dy->d1);
-        small = dn <= o->dtol * (dd + p->lref);
+        double dn = ctn_layout_norm(&p->eq, dy->w), dd = ctn_layout_norm(&p->st, dy->d1) + p->lref;
+        small = dn <= o->dtol * dd;
+        with_K = !(dn <= CTN_DYN_LIKELY * dd);
         if ((rc = ctn_interrupted(p->ctx))) return rc;
     }
 }
