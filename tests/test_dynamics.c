@@ -34,6 +34,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #define PI 3.14159265358979323846
 
@@ -444,6 +445,107 @@ static void test_errors(void)
     ctn_ctx_destroy(&ctx);
 }
 
+/* The largest |x - want(t)| over the SDOF's history (x = the recorded ux: the mass starts
+ * at rest at its spring's rest length here). */
+static double sdof_error(const ctn_solution *s, double (*want)(double t, const double *par), const double *par)
+{
+    size_t rows, cols;
+    const double *h = ctn_solution_history(s, &rows, &cols);
+    double worst = h ? 0 : NAN;
+    for (size_t r = 0; h && r < rows; r++) worst = fmax(worst, fabs(h[r * (cols + 1) + 1] - want(h[r * (cols + 1)], par)));
+    return worst;
+}
+
+/* x'' + w^2 x = w^2 U sin(W t) from rest (a force k U sin, or a support moving U sin):
+ * x = U / (1 - r^2) (sin W t - r sin w t), r = W / w. par: w, W, U. */
+static double harmonic_response(double t, const double *par)
+{
+    double r = par[1] / par[0];
+    return par[2] / (1 - r * r) * (sin(par[1] * t) - r * sin(par[0] * t));
+}
+
+/* A ramp of F to its full value at t1: x = F/k (t/t1 - sin(w t) / (w t1)) for t <= t1,
+ * then free vibration about F/k. par: w, t1, F/k. */
+static double ramp_response(double t, const double *par)
+{
+    double w = par[0], t1 = par[1], xs = par[2];
+    if (t <= t1) return xs * (t / t1 - sin(w * t) / (w * t1));
+    double x1 = xs * (1 - sin(w * t1) / (w * t1)), v1 = xs * (1 - cos(w * t1)) / t1;
+    return xs + (x1 - xs) * cos(w * (t - t1)) + v1 / w * sin(w * (t - t1));
+}
+
+/* The SDOF (k = w^2 = 4, m = 1, at rest at its rest length) driven by `drive` lines. */
+static ctn_solution *driven(ctn_ctx *ctx, const char *support, const char *drive, double dt, double t_end)
+{
+    char text[2048];
+    snprintf(text, sizeof text,
+             "node 1 0 0 0 fix=%s\nnode 2 1 0 0 mass=1 fix=yz\nspring 1 1 2 k=4\n%s\n"
+             "dynamics dt=%.17g t_end=%.17g method=genalpha rho_inf=1\nrecord node=2 dof=ux\n",
+             support, drive, dt, t_end);
+    int rc;
+    ctn_solution *s = solve_text(ctx, text, &rc);
+    CHECK_MSG(rc == CTN_OK && s, "%s", ctn_ctx_message(ctx));
+    return s;
+}
+
+static void test_time_functions(void)
+{
+    ctn_ctx *ctx = NULL;
+    ctn_ctx_create(&ctx);
+    double e[2], par[3] = { 2.0, 1.3, 0.01 };
+    const char *force = "function f harmonic amp=1 freq=0.20690142964317865\nload 2 0.04 0 0 fn=f";   /* 1.3 rad/s */
+    const char *base = "function f harmonic amp=0.01 freq=0.20690142964317865\ndisplace 1 x=1 fn=f";
+    for (int which = 0; which < 2; which++) {
+        for (int i = 0; i < 2; i++) {
+            ctn_solution *s = driven(ctx, "xyz", which ? base : force, 0.01 / (1 << i), 10);
+            e[i] = s ? sdof_error(s, harmonic_response, par) / 0.01 : NAN;
+            ctn_solution_destroy(&s);
+        }
+        printf("harmonic %s: max error / U at dt = 10, 5 ms: %.3e %.3e (ratio %.3f)\n", which ? "support motion" : "force",
+               e[0], e[1], e[0] / e[1]);
+        CHECK_CLOSE(e[0] / e[1], 4.0, 0.1, 0);
+        /* the trapezoidal rule's phase error, w t (w dt)^2 / 12 over t = 10 s, on the
+           largest response (1 + r) / (1 - r^2) U */
+        double r = par[1] / par[0], bound = (1 + r) / (1 - r * r) * par[0] * 10 * pow(par[0] * 0.005, 2) / 12;
+        CHECK_MSG(e[1] < bound, "%g >= %g", e[1], bound);
+    }
+    /* a ramp, and the same ramp as a table: the same history */
+    char path[] = "/tmp/catena-dyn-table-XXXXXX", drive[512];
+    int fd = mkstemp(path);
+    FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
+    if (f) {
+        fprintf(f, "# t, value\n0, 0\n2.5, 1\n\n9 1\n");
+        fclose(f);
+    }
+    double rp[3] = { 2.0, 2.5, 0.05 };
+    ctn_solution *a = driven(ctx, "xyz", "function r ramp t0=0 t1=2.5\nload 2 0.2 0 0 fn=r", 0.005, 6);
+    snprintf(drive, sizeof drive, "function r table %s\nload 2 0.2 0 0 fn=r", path);
+    ctn_solution *b = driven(ctx, "xyz", drive, 0.005, 6);
+    double ea = a ? sdof_error(a, ramp_response, rp) / 0.05 : NAN;
+    printf("ramp: max error / (F/k) at dt = 5 ms: %.3e\n", ea);
+    CHECK(ea < 1e-4);
+    size_t ra, rb, ca, cb;
+    const double *ha = ctn_solution_history(a, &ra, &ca), *hb = ctn_solution_history(b, &rb, &cb);
+    CHECK(ha && hb && ra == rb && !memcmp(ha, hb, ra * (ca + 1) * sizeof(double)));
+    ctn_solution_destroy(&a);
+    ctn_solution_destroy(&b);
+    /* a table whose times do not increase: its file's line */
+    f = fopen(path, "w");
+    if (f) {
+        fprintf(f, "0 0\n1 1\n0.5 2\n");
+        fclose(f);
+    }
+    char text[1024];
+    snprintf(text, sizeof text, "node 1 0 0 0 fix=xyz\nnode 2 1 0 0 mass=1\nspring 1 1 2 k=4\nfunction r table %s\n", path);
+    int rc;
+    ctn_solution *s = solve_text(ctx, text, &rc);
+    char want[128];
+    snprintf(want, sizeof want, "%s:3: table times must increase: t=0.5 is not after t=1", path);
+    CHECK_MSG(!s && rc == CTN_ERR_MODEL && strstr(ctn_ctx_message(ctx), want), "%s", ctn_ctx_message(ctx));
+    remove(path);
+    ctn_ctx_destroy(&ctx);
+}
+
 int main(void)
 {
     test_pendulum_period(PI / 3);
@@ -462,5 +564,6 @@ int main(void)
     test_string_central();
     test_rayleigh();
     test_errors();
+    test_time_functions();
     CHECK_DONE();
 }

@@ -167,3 +167,91 @@ int ctn_parse_record(ctn_line *l)
     if (rc) return rc;
     return node ? ctn_model_record_node(l->m, id, bits) : ctn_model_record_element(l->m, id);
 }
+
+/* The path of a table named in the model file `file`: as given when absolute, else
+ * beside the model file. */
+static int table_path(const ctn_line *l, const char *name, char *path, size_t size)
+{
+    const char *slash = strrchr(l->file, '/');
+    int n = name[0] == '/' || !slash ? snprintf(path, size, "%s", name)
+                                     : snprintf(path, size, "%.*s/%s", (int)(slash - l->file), l->file, name);
+    return n >= 0 && (size_t)n < size ? CTN_OK : ctn_parse_error(l, "function: table path too long");
+}
+
+/* Grow t, v to hold n + 1 points. */
+static int table_room(ctn_ctx *ctx, double **t, double **v, size_t n, size_t *cap)
+{
+    size_t c1 = *cap, c2 = *cap;
+    int rc = ctn_array_reserve(ctx, (void **)t, &c1, n + 1, sizeof(double));
+    if (!rc) rc = ctn_array_reserve(ctx, (void **)v, &c2, n + 1, sizeof(double));
+    if (!rc) *cap = c1 < c2 ? c1 : c2;
+    return rc;
+}
+
+/* The points of a table file: a time and a value per line (blanks or a comma between
+ * them, '#' comments, blank lines skipped); its errors at the table's file:line. */
+static int read_table(ctn_line *l, const char *path, double **t, double **v, size_t *n)
+{
+    char *data = NULL;
+    size_t len = 0, pos = 0, cap = 0;
+    int rc = ctn_read_all(l->m->ctx, path, &data, &len);
+    if (rc) return rc == CTN_ERR_IO ? ctn_parse_error(l, "function %s: %s", l->tok[1], ctn_ctx_message(l->m->ctx)) : rc;
+    for (size_t i = 0; i < len; i++)
+        if (data[i] == ',') data[i] = ' ';
+    ctn_line tl = *l;
+    tl.file = path;
+    tl.line = 0;
+    *n = 0;
+    while (!rc && pos < len) {
+        tl.line++;
+        if ((rc = ctn_parse_scan_line(&tl, data, len, &pos)) || tl.ntok == 0) continue;
+        double tv[2];
+        if (tl.ntok != 2) rc = ctn_parse_error(&tl, "a table line holds a time and a value (found %d fields)", tl.ntok);
+        for (int k = 0; k < 2 && !rc; k++) rc = ctn_parse_num(&tl, k ? "a value" : "a time", tl.tok[k], &tv[k]);
+        if (!rc && *n && !(tv[0] > (*t)[*n - 1]))
+            rc = ctn_parse_error(&tl, "table times must increase: t=%g is not after t=%g (function %s, line %d of %s)", tv[0],
+                                 (*t)[*n - 1], l->tok[1], l->line, l->file);
+        if (!rc) rc = table_room(l->m->ctx, t, v, *n, &cap);
+        if (!rc) {
+            (*t)[*n] = tv[0];
+            (*v)[(*n)++] = tv[1];
+        }
+    }
+    ctn_free(data);
+    if (!rc && *n < 2) rc = ctn_parse_error(l, "function %s: table '%s' holds %zu point(s); it needs two or more", l->tok[1], path, *n);
+    return rc;
+}
+
+/* function NAME ramp t0= t1= | step t0= | harmonic amp= freq= [phase=DEG] [offset=] |
+ * table FILE */
+int ctn_parse_function(ctn_line *l)
+{
+    static const char *const kinds[] = { "ramp", "step", "harmonic", "table" };
+    int rc = ctn_parse_positional(l, l->ntok > 3 && !strcmp(l->tok[2], "table") ? 3 : 2,
+                                  "function NAME ramp t0=T0 t1=T1 | step t0=T0 | harmonic amp=A freq=HZ [phase=DEG] "
+                                  "[offset=B] | table FILE");
+    int kind = -1;
+    for (int k = 0; !rc && k < 4; k++)
+        if (!strcmp(l->tok[2], kinds[k])) kind = k;
+    if (!rc && kind < 0) return ctn_parse_error(l, "function: unknown kind '%.40s' (expected ramp, step, harmonic or table)", l->tok[2]);
+    double par[4] = { 0, 0, 0, 0 }, *t = NULL, *v = NULL, deg = 0;
+    size_t n = 0;
+    if (!rc && kind <= CTN_FN_STEP) rc = ctn_parse_key_num(l, 3, "t0", 1, &par[0]);
+    if (!rc && kind == CTN_FN_RAMP) rc = ctn_parse_key_num(l, 3, "t1", 1, &par[1]);
+    if (!rc && kind == CTN_FN_HARMONIC) {
+        rc = ctn_parse_key_num(l, 3, "amp", 1, &par[0]);
+        if (!rc) rc = ctn_parse_key_num(l, 3, "freq", 1, &par[1]);
+        if (!rc) rc = ctn_parse_key_num(l, 3, "phase", 0, &deg);
+        if (!rc) rc = ctn_parse_key_num(l, 3, "offset", 0, &par[3]);
+        par[2] = deg * 0.017453292519943295769;       /* degrees to radians */
+    }
+    if (!rc && kind == CTN_FN_TABLE && l->ntok < 4) return ctn_parse_error(l, "function %s: table needs a FILE", l->tok[1]);
+    if (!rc) rc = ctn_parse_leftovers(l, kind == CTN_FN_TABLE ? 4 : 3, "function");
+    char path[4096];
+    if (!rc && kind == CTN_FN_TABLE) rc = table_path(l, l->tok[3], path, sizeof path);
+    if (!rc && kind == CTN_FN_TABLE) rc = read_table(l, path, &t, &v, &n);
+    if (!rc) rc = ctn_model_add_function(l->m, l->tok[1], (ctn_fn_kind)kind, par, t, v, n);
+    ctn_free(t);
+    ctn_free(v);
+    return rc;
+}

@@ -42,7 +42,7 @@ int ctn_dyn_central_step(ctn_dyn *dy, double h, int *ok)
     for (size_t q = 0; q < n; q++) vh[q] = dy->v0[q] + 0.5 * h * dy->a0[q];
     for (size_t i = 0; i < p->ns; i++) {
         int q = eq[i];
-        dy->d1[i] = q < 0 ? dy->d0[i] : dy->d0[i] + h * vh[q];
+        if (q >= 0) dy->d1[i] = dy->d0[i] + h * vh[q];      /* fixed DOFs: at t_n+1 already */
     }
     int rc = ctn_dyn_residual(dy, dy->d1, 0, dy->r1, &valid);
     if (rc || !valid) return rc;

@@ -92,7 +92,9 @@ static int factor_effective(ctn_dyn *dy, double h, int *ok)
  * support, onto another branch of a member's law). */
 static void predict(ctn_dyn *dy)
 {
-    memcpy(dy->d1, dy->d0, dy->p->ns * sizeof(double));
+    const ctn_problem *p = dy->p;
+    for (size_t i = 0; i < p->ns; i++)
+        if (p->a->map.eq[i] >= 0) dy->d1[i] = dy->d0[i];   /* fixed DOFs: at t_n+1 already */
 }
 
 /* Newton corrections below this fraction of |d| + L_ref make the next residual a

@@ -89,7 +89,7 @@ int ctn_dynamics_check(ctn_problem *p, const ctn_dynamics_options *o)
 static void dyn_free(ctn_dyn *dy)
 {
     double *v[] = { dy->Mx, dy->Cx, dy->diag, dy->d0, dy->d1, dy->v0, dy->a0, dy->v1, dy->a1, dy->r0, dy->r1,
-                    dy->R, dy->w, dy->w2, dy->ework };
+                    dy->R, dy->w, dy->w2, dy->ework, dy->fe0 };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
 }
 
@@ -102,9 +102,10 @@ static int dyn_alloc(ctn_dyn *dy)
         if (!(*nv[i] = ctn_calloc(p->ctx, n, sizeof(double)))) return CTN_ERR_NOMEM;
     dy->d0 = ctn_calloc(p->ctx, p->ns, sizeof(double));
     dy->d1 = ctn_calloc(p->ctx, p->ns, sizeof(double));
+    dy->fe0 = ctn_calloc(p->ctx, p->ns, sizeof(double));
     dy->Mx = ctn_calloc(p->ctx, nz, sizeof(double));
     dy->ework = ctn_calloc(p->ctx, 3 * (size_t)p->a->maxdof + 16, sizeof(double));
-    if (!dy->d0 || !dy->d1 || !dy->Mx || !dy->ework) return CTN_ERR_NOMEM;
+    if (!dy->d0 || !dy->d1 || !dy->fe0 || !dy->Mx || !dy->ework) return CTN_ERR_NOMEM;
     if ((dy->o->damping_alpha > 0 || dy->o->damping_beta > 0) && !(dy->Cx = ctn_calloc(p->ctx, nz, sizeof(double))))
         return CTN_ERR_NOMEM;
     return CTN_OK;
@@ -151,6 +152,27 @@ static void start_loads(ctn_dyn *dy)
     if (p->dT) memcpy(p->dT0, p->dT1, p->a->ne * sizeof(double));
     if (dy->s->nsteps) ctn_dofmap_from3(&p->a->map, dy->s->steps[dy->s->nsteps - 1].d, dy->d0);
     ctn_problem_set_t(p, 1.0, dy->d0);
+    ctn_dyn_set_time(dy, 0.0, dy->d0);
+    memcpy(dy->fe0, p->fext, p->ns * sizeof(double));
+}
+
+void ctn_dyn_set_time(ctn_dyn *dy, double t, double *d)
+{
+    ctn_problem *p = dy->p;
+    const ctn_model *m = p->m;
+    for (size_t i = 0; i < p->ns; i++)
+        if (p->a->map.eq[i] < 0) d[i] = p->p1[i];
+    if (!m->dloads.n) return;
+    memcpy(p->fext, p->f1, p->ns * sizeof(double));
+    for (size_t j = 0; j < m->dloads.n; j++) {
+        const ctn_dload *dl = &m->dloads.v[j];
+        double f = ctn_model_fn_value(m, dl->fn, t);
+        size_t at = ctn_dofmap_node(&p->a->map, (size_t)dl->node);
+        for (int k = 0; k < 3; k++) {
+            if (!dl->dofs) p->fext[at + (size_t)k] += f * dl->F[k];
+            else if (dl->dofs >> k & 1) d[at + (size_t)k] += f * dl->F[k];
+        }
+    }
 }
 
 /* a0 = M^-1 (f_ext - f_int(d0)) (v0 = 0): M factored by the problem's linear solver, or
@@ -209,9 +231,10 @@ void ctn_dyn_accept(ctn_dyn *dy, double h, const double *r1)
     const int *eq = p->a->map.eq;
     size_t n = p->ndof;
     double work = 0;
-    for (size_t i = 0; i < p->ns; i++)
-        if (eq[i] >= 0) work += p->fext[i] * (dy->d1[i] - dy->d0[i]);   /* loads constant over the step */
+    for (size_t i = 0; i < p->ns; i++)                   /* the trapezoidal rule (exact for */
+        if (eq[i] >= 0) work += 0.5 * (dy->fe0[i] + p->fext[i]) * (dy->d1[i] - dy->d0[i]);   /* loads held) */
     dy->W += ctn_layout_sum(&p->st, work);
+    memcpy(dy->fe0, p->fext, p->ns * sizeof(double));
     if (dy->Cx) {
         ctn_dyn_damp(dy, dy->v0, dy->w2);
         double c0 = ctn_layout_dot(&p->eq, dy->v0, dy->w2);
@@ -229,9 +252,10 @@ void ctn_dyn_accept(ctn_dyn *dy, double h, const double *r1)
     dy->escale = fmax(dy->escale, dy->ek + fabs(dy->U) + fabs(dy->W) + dy->D);
 }
 
-/* One step of h by the method; *ok = 0 when it failed. */
-static int try_step(ctn_dyn *dy, double h, int *ok)
+/* One step of h from t by the method; *ok = 0 when it failed. */
+static int try_step(ctn_dyn *dy, double t, double h, int *ok)
 {
+    ctn_dyn_set_time(dy, t + h, dy->d1);
     return dy->o->method == CTN_DYN_CENTRAL ? ctn_dyn_central_step(dy, h, ok) : ctn_dyn_implicit_step(dy, h, ok);
 }
 
@@ -247,7 +271,7 @@ static int march(ctn_dyn *dy)
         while (t < target - 1e-9 * o->dt) {
             double hs = fmin(h, target - t);
             int ok = 0;
-            if ((rc = try_step(dy, hs, &ok))) return rc;
+            if ((rc = try_step(dy, t, hs, &ok))) return rc;
             if (ok) {
                 ctn_dyn_accept(dy, hs, dy->r1);
                 t += hs;

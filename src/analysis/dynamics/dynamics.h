@@ -21,12 +21,17 @@ typedef struct ctn_dyn {
     double *r0, *r1;              /* ndof: f_ext - f_int at t_n, at the iterate */
     double *R, *w, *w2;           /* ndof: the step's residual, scratch */
     double *ework;                /* element scratch (records of element forces) */
+    double *fe0;                  /* state: f_ext at t_n (the work of the loads) */
     double ek, U, W, D;           /* energies at t_n: kinetic, strain, work, damping */
     double e0;                    /* E_k + U at t = 0 */
     double escale;                /* the largest E_k + U + |W| + D so far */
     double emax;                  /* the largest |E_k + U - W + D - e0| so far */
     double U1;                    /* strain energy at the last residual */
 } ctn_dyn;
+
+/* The loads and the fixed DOFs of d at time t: the held ones (p->f1, p->p1) and the
+ * model's forces and support motions times their functions of time (p->fext, d). */
+void ctn_dyn_set_time(ctn_dyn *dy, double t, double *d);
 
 /* One implicit step of size h from (d0, v0, a0) into (d1, v1, a1); *ok = 0 when it did
  * not converge (maxit, a collapsed element, an indefinite effective tangent). */
