@@ -603,6 +603,66 @@ static void test_sagging_cable_spectrum(void)
     ctn_ctx_destroy(&ctx);
 }
 
+/* The analysis object: from rest (*s NULL) the file's history bit for bit; after a static
+ * solution a step "dynamics" added; options not set refused. Every allocation failure of
+ * the file's run: CTN_ERR_NOMEM, no leak (ASan). */
+static void test_object(void)
+{
+    const char *base = "node 1 0 0 0 fix=xyz\nnode 2 1.001 0 0 mass=1 fix=yz\nspring 1 1 2 k=4 l0=1\n"
+                       "record node=2 dof=ux\nrecord element=1 force\n";
+    char text[1024];
+    snprintf(text, sizeof text, "%sdamping alpha=0.1\nfunction f harmonic amp=1 freq=0.3\nload 2 0.01 0 0 fn=f\n"
+             "dynamics dt=0.01 t_end=1 method=hht alpha=-0.05\n", base);
+    ctn_ctx *ctx = NULL;
+    ctn_ctx_create(&ctx);
+    int rc;
+    ctn_solution *file = solve_text(ctx, text, &rc);
+    ctn_model *m = NULL;
+    ctn_problem *p = NULL;
+    ctn_solution *s = NULL;
+    ctn_analysis *a = NULL;
+    ctn_solve_options opt;
+    CHECK(ctn_read_string(ctx, "dyn.cable", text, strlen(text), &m, &opt) == CTN_OK);
+    ctn_dynamics_options o = opt.dynamics, bad;
+    memset(&bad, 0, sizeof bad);
+    ctn_solve_options_default(&opt);                  /* the problem without the dynamics line */
+    CHECK(ctn_problem_create(ctx, m, &opt, &p) == CTN_OK);
+    CHECK(ctn_analysis_create(p, "dynamics", &bad, &a) == CTN_ERR_INVALID && !a);
+    CHECK(ctn_analysis_create(p, "dynamics", &o, &a) == CTN_OK);
+    CHECK(ctn_analysis_run(a, &s) == CTN_OK && s && ctn_solution_step_count(s) == 1);
+    size_t r1, r2, c1, c2;
+    const double *h1 = ctn_solution_history(file, &r1, &c1), *h2 = ctn_solution_history(s, &r2, &c2);
+    CHECK(h1 && h2 && r1 == r2 && c1 == c2 && c1 == 2 && r1 == 101 && !memcmp(h1, h2, r1 * (c1 + 1) * sizeof(double)));
+    CHECK(!strcmp(ctn_solution_history_name(s, 0), "2.ux") && !strcmp(ctn_solution_history_name(s, 1), "1.force") &&
+          !ctn_solution_history_name(s, 2));
+    ctn_solution_destroy(&s);
+    CHECK(ctn_problem_solve(p, &s) == CTN_OK && ctn_solution_step_count(s) == 1);   /* static first */
+    CHECK(ctn_analysis_run(a, &s) == CTN_OK && ctn_solution_step_count(s) == 2);
+    ctn_step_result st;
+    CHECK(ctn_solution_step(s, 1, &st) == CTN_OK && !strcmp(st.name, "dynamics") && st.reason == CTN_CONVERGED);
+    ctn_analysis_destroy(&a);
+    ctn_solution_destroy(&s);
+    ctn_problem_destroy(&p);
+    ctn_model_destroy(&m);
+    ctn_solution_destroy(&file);
+    int done = 0, failures = 0;
+    for (long k = 1; !done && k < 5000; k++) {
+        ctn_ctx_fail_alloc_at(ctx, k);
+        s = solve_text(ctx, text, &rc);
+        ctn_ctx_fail_alloc_at(ctx, 0);
+        if (rc) {
+            failures++;
+            CHECK_MSG(rc == CTN_ERR_NOMEM, "allocation %ld: status %d (%s)", k, rc, ctn_ctx_message(ctx));
+        } else {
+            done = 1;
+            CHECK(ctn_solution_history(s, NULL, NULL) != NULL);
+        }
+        ctn_solution_destroy(&s);
+    }
+    CHECK(done && failures > 20);
+    ctn_ctx_destroy(&ctx);
+}
+
 int main(void)
 {
     test_pendulum_period(PI / 3);
@@ -623,5 +683,6 @@ int main(void)
     test_errors();
     test_time_functions();
     test_sagging_cable_spectrum();
+    test_object();
     CHECK_DONE();
 }

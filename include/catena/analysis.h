@@ -151,7 +151,7 @@ const char *ctn_dyn_method_name(ctn_dyn_method m);
 typedef struct ctn_analysis ctn_analysis;
 
 /* The registered analyses: their count and the name of the i-th ("static",
- * "stability", "modal", "buckling"); NULL for i out of range. */
+ * "stability", "modal", "buckling", "dynamics"); NULL for i out of range. */
 size_t ctn_analysis_count(void);
 const char *ctn_analysis_type(size_t i);
 
