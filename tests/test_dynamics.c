@@ -26,7 +26,11 @@
  *   zeta^2) sin wd t) with zeta = alpha / (2 w) + beta w / 2, to O(dt^2) (ratio 4 +-
  *   0.4); damping ratio= freq= gives alpha and beta that meet both ratios;
  * - the energy balance with damping: E_k + U - W + D stays at its start to 1e-3;
- * - errors: no mass, dt above the explicit limit, a step after the dynamics line. */
+ * - errors: no mass, dt above the explicit limit, a step after the dynamics line;
+ * - harmonic forces and support motions, ramps and tables against closed forms; the
+ *   modal frequencies of a sagging cable in its free vibration's spectrum; the analysis
+ *   object and every allocation failure. */
+/* ctest-cost: 15 (about the seconds it takes under ASan: ctest -j starts it early) */
 #include "catena.h"
 #include "check.h"
 

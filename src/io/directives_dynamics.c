@@ -4,10 +4,12 @@
 #include "io/parse.h"
 #include "catena/analysis.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 /* A keyword-valued key: index into words[], *out unchanged when absent. */
 static int word(ctn_line *l, const char *key, const char *const *words, int n, int *out)
@@ -190,10 +192,16 @@ static int table_room(ctn_ctx *ctx, double **t, double **v, size_t n, size_t *ca
 
 /* The points of a table file: a time and a value per line (blanks or a comma between
  * them, '#' comments, blank lines skipped); its errors at the table's file:line. */
+#define CTN_TABLE_MAX_BYTES ((off_t)1 << 26)    /* 64 MiB */
+
 static int read_table(ctn_line *l, const char *path, double **t, double **v, size_t *n)
 {
     char *data = NULL;
     size_t len = 0, pos = 0, cap = 0;
+    struct stat st;
+    if (stat(path, &st)) return ctn_parse_error(l, "function %s: cannot read table '%.200s': %s", l->tok[1], path, strerror(errno));
+    if (!S_ISREG(st.st_mode) || st.st_size > CTN_TABLE_MAX_BYTES)
+        return ctn_parse_error(l, "function %s: table '%.200s' is not a regular file of at most 64 MiB", l->tok[1], path);
     int rc = ctn_read_all(l->m->ctx, path, &data, &len);
     if (rc) return rc == CTN_ERR_IO ? ctn_parse_error(l, "function %s: %s", l->tok[1], ctn_ctx_message(l->m->ctx)) : rc;
     for (size_t i = 0; i < len; i++)
