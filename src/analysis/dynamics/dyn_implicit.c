@@ -7,6 +7,7 @@
  * Newton on d1: (K_T + c1 M + c2 C) dd = R / (1 - af), c1 = (1 - am) / ((1 - af) beta
  * h^2), c2 = gamma / (beta h). docs/theory.md "Dynamics". */
 #include "analysis/dynamics/dynamics.h"
+#include "linalg/pcg.h"
 
 #include <math.h>
 #include <string.h>
@@ -25,7 +26,11 @@ int ctn_dyn_residual(ctn_dyn *dy, const double *d, int with_K, double *r, int *v
     return CTN_OK;
 }
 
-void ctn_dyn_mass(const ctn_dyn *dy, const double *x, double *y) { ctn_problem_symv(dy->p, dy->Mx, x, y); }
+void ctn_dyn_mass(const ctn_dyn *dy, const double *x, double *y)
+{
+    ctn_pattern pat = { dy->p->ndof, dy->mcol, dy->mrow };
+    ctn_sym_matvec(&pat, dy->mval, x, y);
+}
 
 void ctn_dyn_damp(const ctn_dyn *dy, const double *x, double *y)
 {
@@ -80,7 +85,9 @@ static int factor_effective(ctn_dyn *dy, double h, int *ok)
 {
     ctn_problem *p = dy->p;
     double c1 = (1 - dy->am) / ((1 - dy->af) * dy->beta * h * h), c2 = dy->gamma / (dy->beta * h);
-    for (size_t k = 0; k < p->a->nnz; k++) p->Kx[k] += c1 * dy->Mx[k] + (dy->Cx ? c2 * dy->Cx[k] : 0.0);
+    size_t mnz = (size_t)dy->mcol[p->ndof];
+    for (size_t k = 0; k < mnz; k++) p->Kx[dy->mslot[k]] += c1 * dy->mval[k];   /* M's nonzeros only */
+    for (size_t k = 0; dy->Cx && k < p->a->nnz; k++) p->Kx[k] += c2 * dy->Cx[k];
     long col = -1;
     int rc = ctn_problem_factor(p, 0.0, ok, &col);
     dy->sum.factorizations++;

@@ -86,8 +86,39 @@ int ctn_dynamics_check(ctn_problem *p, const ctn_dynamics_options *o)
     return rc;
 }
 
+/* M's nonzeros apart from K's pattern (as the modal analysis keeps them): a consistent
+ * mass couples a DOF only to the same direction at an element's other node, a lumped one
+ * nothing. */
+static int mass_pattern(ctn_dyn *dy)
+{
+    const ctn_asm *a = dy->p->a;
+    size_t n = dy->p->ndof, mnz = 0;
+    for (size_t k = 0; k < a->nnz; k++) mnz += dy->Mx[k] != 0;
+    dy->mcol = ctn_malloc(dy->p->ctx, n + 1, sizeof(int));
+    dy->mrow = ctn_malloc(dy->p->ctx, mnz ? mnz : 1, sizeof(int));
+    dy->mval = ctn_malloc(dy->p->ctx, mnz ? mnz : 1, sizeof(double));
+    dy->mslot = ctn_malloc(dy->p->ctx, mnz ? mnz : 1, sizeof(int));
+    if (!dy->mcol || !dy->mrow || !dy->mval || !dy->mslot) return CTN_ERR_NOMEM;
+    int at = 0;
+    for (size_t j = 0; j < n; j++) {
+        dy->mcol[j] = at;
+        for (int k = a->colptr[j]; k < a->colptr[j + 1]; k++)
+            if (dy->Mx[k] != 0) {
+                dy->mrow[at] = a->rowind[k];
+                dy->mslot[at] = k;
+                dy->mval[at++] = dy->Mx[k];
+            }
+    }
+    dy->mcol[n] = at;
+    return CTN_OK;
+}
+
 static void dyn_free(ctn_dyn *dy)
 {
+    ctn_free(dy->mcol);
+    ctn_free(dy->mrow);
+    ctn_free(dy->mval);
+    ctn_free(dy->mslot);
     double *v[] = { dy->Mx, dy->Cx, dy->diag, dy->d0, dy->d1, dy->v0, dy->a0, dy->v1, dy->a1, dy->r0, dy->r1,
                     dy->R, dy->w, dy->w2, dy->ework, dy->fe0 };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
@@ -206,6 +237,7 @@ static int start(ctn_dyn *dy)
         return dyn_error(p, o, msg);
     }
     if (!rc) rc = ctn_asm_mass(p->ctx, p->a, lumped, dy->Mx);
+    if (!rc) rc = mass_pattern(dy);
     if (rc) return rc;
     ctn_asm_mass_diag(p->a, dy->diag, tot, &bad);
     for (size_t k = 0; dy->Cx && k < p->a->nnz; k++) dy->Cx[k] = o->damping_alpha * dy->Mx[k] + o->damping_beta * p->Kx[k];

@@ -14,6 +14,9 @@ typedef struct ctn_dyn {
     ctn_dynamics_summary sum;
     double am, af, gamma, beta;   /* the method's parameters */
     double *Mx;                   /* nnz: mass, the tangent's pattern */
+    int *mcol, *mrow;             /* M's own upper pattern: its nonzeros only (ndof + 1, mnz) */
+    int *mslot;                   /* mnz: where each of them is in the tangent's values */
+    double *mval;                 /* mnz: their values (M x by it: 3 to 5 times fewer entries) */
     double *Cx;                   /* nnz: Rayleigh damping a M + b K_0, NULL without */
     double *diag;                 /* ndof: the lumped mass diagonal */
     double *d0, *d1;              /* state: at t_n, and the step's iterate at t_n+1 */
