@@ -667,6 +667,53 @@ static void test_object(void)
     ctn_ctx_destroy(&ctx);
 }
 
+/* A mass on two springs in parallel (k = 20 each, m = 1) in equilibrium under W = 10
+ * (uy = -W / 2k), one spring removed at t = 0.3 (`remove`): the mass oscillates about
+ * -W / k, y = -W/k + W/(2k) cos(w (t - 0.3)), w = sqrt(k / m); the removed spring's
+ * force is 0 from then on, the other's k (l - l0); the problem, solved again, has both. */
+static void test_removal(void)
+{
+    const char *text = "node 1 0 0 0 fix=xyz\nnode 2 0 -1 0 mass=1 fix=xz\nspring 1 1 2 k=20\nspring 2 1 2 k=20\n"
+                       "step weight\nload 2 0 -10 0\nremove element=2 t=0.3\n"
+                       "dynamics dt=0.001 t_end=2 method=genalpha rho_inf=1\nrecord node=2 dof=uy\n"
+                       "record element=1 force\nrecord element=2 force\n";
+    ctn_ctx *ctx = NULL;
+    ctn_ctx_create(&ctx);
+    ctn_model *m = NULL;
+    ctn_solve_options opt;
+    ctn_problem *p = NULL;
+    ctn_solution *s = NULL;
+    CHECK(ctn_read_string(ctx, "dyn.cable", text, strlen(text), &m, &opt) == CTN_OK);
+    CHECK_MSG(ctn_problem_create(ctx, m, &opt, &p) == CTN_OK && ctn_problem_solve(p, &s) == CTN_OK, "%s", ctn_ctx_message(ctx));
+    size_t rows = 0, cols = 0;
+    const double *h = s ? ctn_solution_history(s, &rows, &cols) : NULL;
+    double worst = 0, w = sqrt(20.0), f2 = 0, f1 = 0;
+    for (size_t r = 0; h && r < rows; r++) {
+        const double *row = h + r * (cols + 1);
+        double t = row[0], y = t < 0.3 ? -0.25 : -0.5 + 0.25 * cos(w * (t - 0.3));
+        worst = fmax(worst, fabs(row[1] - y));
+        if (t > 0.3 + 1e-9) f2 = fmax(f2, fabs(row[3]));
+        f1 = fmax(f1, fabs(row[2] - 20 * (-row[1])));
+    }
+    printf("removal: max |y - closed form| = %.3e (of an amplitude 0.25), removed spring's force %g, the other's "
+           "k (l - l0) to %.1e\n", worst, f2, f1);
+    CHECK(h && rows == 2001 && cols == 3);
+    CHECK(worst < 1e-4 && f2 == 0 && f1 < 1e-9);
+    ctn_solution_destroy(&s);
+    ctn_solve_options_default(&opt);                  /* statics again: both springs back */
+    ctn_step_result st;
+    CHECK(ctn_problem_solve(p, &s) == CTN_OK && s && !ctn_solution_step(s, 0, &st) && fabs(st.d[4] + 0.25) < 1e-12);
+    ctn_solution_destroy(&s);
+    ctn_problem_destroy(&p);
+    ctn_model_destroy(&m);
+    int rc;
+    s = solve_text(ctx, "material m E=1e8\nsection s material=m A=1\nnode 1 0 0 0 fix=xyz\nnode 2 1 0 0 fix=xyz\n"
+                        "catenary 1 1 2 section=s length=1.1\nremove element=1 t=1\n", &rc);
+    CHECK_MSG(!s && rc == CTN_ERR_MODEL && strstr(ctn_ctx_message(ctx), "dyn.cable:6: remove: element 1 is a catenary"),
+              "%s", ctn_ctx_message(ctx));
+    ctn_ctx_destroy(&ctx);
+}
+
 int main(void)
 {
     test_pendulum_period(PI / 3);
@@ -688,5 +735,6 @@ int main(void)
     test_time_functions();
     test_sagging_cable_spectrum();
     test_object();
+    test_removal();
     CHECK_DONE();
 }

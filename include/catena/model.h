@@ -420,6 +420,10 @@ int ctn_model_add_function(ctn_model *m, const char *name, ctn_fn_kind kind, con
  * them out). CTN_ERR_MODEL for an undefined node or function, a motion of a free DOF. */
 int ctn_model_add_load_fn(ctn_model *m, int id, const double F[3], const char *fn);
 int ctn_model_add_motion_fn(ctn_model *m, int id, unsigned dofs, const double u[3], const char *fn);
+/* Element id removed at time t >= 0 of a dynamics analysis (its force and stiffness
+ * zero from then on, its mass kept: a cable that breaks). Cable elements and springs
+ * only; CTN_ERR_MODEL for another family, an undefined element, one removed twice. */
+int ctn_model_add_removal(ctn_model *m, int id, double t);
 
 CTN_API_END
 #ifdef __cplusplus

@@ -160,6 +160,9 @@ const void *ctn_asm_props(const ctn_asm *a, size_t e);
 void ctn_asm_set_temperatures(ctn_asm *a, const double *dT);
 /* Properties of element e afresh from the model (after its l0 changed). */
 void ctn_asm_setup_element(ctn_asm *a, size_t e);
+/* Sever element e (its family's sever op: force and stiffness zero, mass kept) until
+ * ctn_asm_setup_element restores it; CTN_ERR_INVALID for a family without the op. */
+int ctn_asm_sever_element(ctn_asm *a, size_t e);
 
 /* Build steps of ctn_asm_create (blocks.c, pattern.c). */
 int ctn_asm_blocks(ctn_ctx *ctx, ctn_asm *a);

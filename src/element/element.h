@@ -95,6 +95,10 @@ typedef struct ctn_element_ops {
      * (assemble/gather.c); eval stays the generic path. */
     int (*eval_axial)(const void *props, unsigned mode, const double *X, const double *u, double *f,
                       double *kk, ctn_elem_state *st);
+    /* Optional: sever the member (a cable that breaks, in a dynamics analysis): its force,
+     * stiffness and energy zero from now on, its mass kept; setup restores it. NULL: the
+     * family cannot be removed. */
+    void (*sever)(void *props);
 } ctn_element_ops;
 
 /* Entries of the packed upper triangle of an n x n matrix. */

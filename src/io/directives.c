@@ -560,7 +560,7 @@ static const directive directives[] = {
     { "wind", ctn_parse_wind },
     { "buckling", d_buckling },
     { "dynamics", ctn_parse_dynamics }, { "damping", ctn_parse_damping }, { "record", ctn_parse_record },
-    { "function", ctn_parse_function },
+    { "function", ctn_parse_function }, { "remove", ctn_parse_remove },
 };
 
 int ctn_parse_directive(ctn_line *l)

@@ -263,3 +263,17 @@ int ctn_parse_function(ctn_line *l)
     ctn_free(v);
     return rc;
 }
+
+/* remove element=ID t=TIME: the element severed at TIME in the dynamics */
+int ctn_parse_remove(ctn_line *l)
+{
+    int id = 0;
+    double t = 0;
+    int rc = ctn_parse_positional(l, 0, "remove element=ID t=TIME");
+    const char *e = rc ? NULL : ctn_parse_key(l, 1, "element");
+    if (!rc && !e) return ctn_parse_missing(l, 1, NULL, "element", NULL);
+    if (!rc) rc = ctn_parse_int(l, "the element id", e, &id);
+    if (!rc) rc = ctn_parse_key_num(l, 1, "t", 1, &t);
+    if (!rc) rc = ctn_parse_leftovers(l, 1, "remove");
+    return rc ? rc : ctn_model_add_removal(l->m, id, t);
+}

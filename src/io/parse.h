@@ -99,5 +99,6 @@ int ctn_parse_dynamics(ctn_line *l);
 int ctn_parse_damping(ctn_line *l);
 int ctn_parse_record(ctn_line *l);
 int ctn_parse_function(ctn_line *l);
+int ctn_parse_remove(ctn_line *l);
 
 #endif

@@ -1,5 +1,6 @@
 /* Functions of time and the forces and support motions that follow them in a dynamics
  * analysis (catena/model.h). */
+#include "element/element.h"
 #include "model/model.h"
 
 #include <math.h>
@@ -107,6 +108,29 @@ static int add_dload(ctn_model *m, int id, unsigned dofs, const double F[3], con
 }
 
 int ctn_model_add_load_fn(ctn_model *m, int id, const double F[3], const char *fn) { return add_dload(m, id, 0, F, fn); }
+
+int ctn_model_add_removal(ctn_model *m, int id, double t)
+{
+    if (!m) return CTN_ERR_INVALID;
+    int e = ctn_idmap_get(&m->element_ids, id);
+    if (e < 0) return ctn_model_error(m, CTN_ERR_MODEL, "remove: undefined element %d", id);
+    const ctn_element_ops *ops = ctn_element_family(m->elements.v[e].type);
+    if (!ops->sever)
+        return ctn_model_error(m, CTN_ERR_MODEL, "remove: element %d is a %s: only cable elements and springs can be "
+                               "removed in time", id, ops->name);
+    if (!(isfinite(t) && t >= 0)) return ctn_model_error(m, CTN_ERR_MODEL, "remove: t must be >= 0 and finite (found %g)", t);
+    for (size_t i = 0; i < m->removals.n; i++)
+        if (m->removals.v[i].element == e)
+            return ctn_model_error(m, CTN_ERR_MODEL, "remove: element %d is removed twice (first on line %d)", id,
+                                   m->removals.v[i].line);
+    int rc = CTN_ARRAY_RESERVE(m->ctx, m->removals, 1);
+    if (rc) return rc;
+    ctn_removal *r = &m->removals.v[m->removals.n++];
+    r->element = e;
+    r->t = t;
+    r->line = m->line;
+    return CTN_OK;
+}
 
 int ctn_model_add_motion_fn(ctn_model *m, int id, unsigned dofs, const double u[3], const char *fn)
 {

@@ -208,6 +208,13 @@ typedef struct ctn_dload {
     int line;
 } ctn_dload;
 
+/* An element removed at time t of a dynamics analysis (a cable that breaks). */
+typedef struct ctn_removal {
+    int element;     /* element index */
+    double t;        /* [s] */
+    int line;
+} ctn_removal;
+
 /* A growable array: data, count and capacity. */
 #define CTN_ARRAY(T) struct { T *v; size_t n, cap; }
 
@@ -252,6 +259,7 @@ struct ctn_model {
     CTN_ARRAY(ctn_record) records;  /* time histories of a dynamics analysis, in order */
     CTN_ARRAY(ctn_fn) fns;          /* functions of time (dynamics) */
     CTN_ARRAY(ctn_dload) dloads;    /* forces and support motions that follow them */
+    CTN_ARRAY(ctn_removal) removals; /* elements removed in time, in order */
 };
 
 /* Make room for one more item in a CTN_ARRAY; 0 or CTN_ERR_NOMEM. */

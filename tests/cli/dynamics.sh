@@ -10,6 +10,8 @@
 #     force W (`record element=1 force`);
 #   - Rayleigh damping: the SDOF against x0 e^(-zeta w t)(cos wd t + zeta/sqrt(1-zeta^2)
 #     sin wd t) to 1e-4 of x0 with dt = 5 ms;
+#   - a `function NAME table FILE` read beside the model; a table whose times do not
+#     increase: exit 2 at the table's file:line;
 #   - the summary's dynamics lines; no history.csv without a dynamics line.
 # Prints "N passed, N failed"; exit 1 on any failure.
 set -u
@@ -100,6 +102,18 @@ PY
     [ -z "$msg" ] || WHY+=("$msg")
 fi
 finish "Rayleigh damping decay"
+
+printf 'node 1 0 0 0 fix=xyz\nnode 2 1 0 0 mass=1\nspring 1 1 2 k=4\nfunction r table steps.csv\n' >"$T/table.cable"
+printf '# t, value\n0, 0\n1, 1\n0.5, 2\n' >"$T/steps.csv"
+"$BIN" solve "$T/table.cable" -q >/dev/null 2>"$T/err"; rc=$?
+[ $rc -eq 2 ] || WHY+=("a table not increasing: exit $rc, expected 2")
+grep -q "^catena: $T/steps.csv:4: table times must increase: t=0.5 is not after t=1 (function r, line 4 of $T/table.cable)" "$T/err" ||
+    WHY+=("message: $(cat "$T/err")")
+printf '0 0\n1 1\n3 1\n' >"$T/steps.csv"
+printf 'load 2 1 0 0 fn=r\ndynamics dt=0.01 t_end=0.1\nrecord node=2\n' >>"$T/table.cable"
+"$BIN" solve "$T/table.cable" -q -o "$T/tab" 2>"$T/err" || WHY+=("a table beside the model: $(cat "$T/err")")
+[ "$(wc -l <"$T/tab/history.csv" 2>/dev/null)" = 12 ] || WHY+=("a table's run: no 11 rows")
+finish "table functions: beside the model, times not increasing (the table's file:line)"
 
 "$BIN" solve "$M/sdof_damped.cable" >"$T/sum.txt" 2>"$T/err"
 grep -q "^dynamics (genalpha, dt 0.005 s, consistent mass): 1257 steps to t = 6.28319 s" "$T/sum.txt" || WHY+=("no dynamics line: $(grep dynamics "$T/sum.txt")")

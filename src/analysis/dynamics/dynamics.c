@@ -115,6 +115,7 @@ static int mass_pattern(ctn_dyn *dy)
 
 static void dyn_free(ctn_dyn *dy)
 {
+    ctn_free(dy->severed);
     ctn_free(dy->mcol);
     ctn_free(dy->mrow);
     ctn_free(dy->mval);
@@ -137,6 +138,8 @@ static int dyn_alloc(ctn_dyn *dy)
     dy->Mx = ctn_calloc(p->ctx, nz, sizeof(double));
     dy->ework = ctn_calloc(p->ctx, 3 * (size_t)p->a->maxdof + 16, sizeof(double));
     if (!dy->d0 || !dy->d1 || !dy->fe0 || !dy->Mx || !dy->ework) return CTN_ERR_NOMEM;
+    size_t nr = p->m->removals.n;
+    if (nr && !(dy->severed = ctn_calloc(p->ctx, nr, 1))) return CTN_ERR_NOMEM;
     if ((dy->o->damping_alpha > 0 || dy->o->damping_beta > 0) && !(dy->Cx = ctn_calloc(p->ctx, nz, sizeof(double))))
         return CTN_ERR_NOMEM;
     return CTN_OK;
@@ -206,7 +209,7 @@ void ctn_dyn_set_time(ctn_dyn *dy, double t, double *d)
     }
 }
 
-/* a0 = M^-1 (f_ext - f_int(d0)) (v0 = 0): M factored by the problem's linear solver, or
+/* a0 = M^-1 (f_ext - f_int(d0) - C v0): M factored by the problem's linear solver, or
  * over the lumped diagonal where M is singular (DOFs without mass: a0 = 0 there). */
 static int start_acceleration(ctn_dyn *dy, int lumped)
 {
@@ -215,9 +218,49 @@ static int start_acceleration(ctn_dyn *dy, int lumped)
     int rc = lumped ? CTN_OK : ctn_linsolve_factor(p->ls, dy->Mx, 0.0, &info);
     p->spd_factor = p->last_definite = 0;
     p->factored_at = NULL;
-    if (!rc && info.ok) return ctn_linsolve_solve(p->ls, dy->r0, dy->a0);
-    for (size_t q = 0; q < p->ndof; q++) dy->a0[q] = dy->diag[q] > 0 ? dy->r0[q] / dy->diag[q] : 0.0;
+    ctn_dyn_damp(dy, dy->v0, dy->w2);
+    for (size_t q = 0; q < p->ndof; q++) dy->w2[q] = dy->r0[q] - dy->w2[q];
+    if (!rc && info.ok) return ctn_linsolve_solve(p->ls, dy->w2, dy->a0);
+    for (size_t q = 0; q < p->ndof; q++) dy->a0[q] = dy->diag[q] > 0 ? dy->w2[q] / dy->diag[q] : 0.0;
     return rc;
+}
+
+/* The removals due at t (their time at most t): each element severed, then the state at
+ * t balanced again (r0, a0; the strain energy the elements held counts as dissipated). */
+static int apply_removals(ctn_dyn *dy, double t)
+{
+    ctn_problem *p = dy->p;
+    const ctn_model *m = p->m;
+    int changed = 0, valid = 0, rc = CTN_OK;
+    for (size_t i = 0; i < m->removals.n && !rc; i++) {
+        if (dy->severed[i] || m->removals.v[i].t > t + 1e-9 * dy->o->dt) continue;
+        rc = ctn_asm_sever_element(p->a, (size_t)m->removals.v[i].element);
+        dy->severed[i] = changed = 1;
+    }
+    if (rc || !changed) return rc;
+    ctn_dyn_set_time(dy, t, dy->d0);
+    if ((rc = ctn_dyn_residual(dy, dy->d0, 0, dy->r0, &valid))) return rc;
+    dy->D += dy->U - dy->U1;
+    dy->U = dy->U1;
+    return start_acceleration(dy, dy->lumped);
+}
+
+/* The earliest removal after t, or INFINITY. */
+static double next_removal(const ctn_dyn *dy, double t)
+{
+    double next = INFINITY;
+    for (size_t i = 0; i < dy->p->m->removals.n; i++)
+        if (!dy->severed[i] && dy->p->m->removals.v[i].t > t) next = fmin(next, dy->p->m->removals.v[i].t);
+    return next;
+}
+
+/* The severed elements restored (the problem outlives the analysis). */
+static void restore_removals(ctn_dyn *dy)
+{
+    ctn_problem *p = dy->p;
+    for (size_t i = 0; dy->severed && i < p->m->removals.n; i++)
+        if (dy->severed[i]) ctn_asm_setup_element(p->a, (size_t)p->m->removals.v[i].element);
+    if (dy->severed && p->dT) ctn_asm_set_temperatures(p->a, p->dT);
 }
 
 /* The start: r0 and K_0 at d0, M (and C = a M + b K_0), a0, the energies, the stable step
@@ -301,7 +344,9 @@ static int march(ctn_dyn *dy)
     for (size_t k = 1; k <= N; k++) {
         double target = k == N ? o->t_end : (double)k * o->dt;
         while (t < target - 1e-9 * o->dt) {
-            double hs = fmin(h, target - t);
+            if (dy->severed && (rc = apply_removals(dy, t))) return rc;
+            double hs = fmin(h, target - t), tr = dy->severed ? next_removal(dy, t) : INFINITY;
+            if (tr < t + hs - 1e-9 * o->dt) hs = tr - t;            /* a step ends at a removal */
             int ok = 0;
             if ((rc = try_step(dy, t, hs, &ok))) return rc;
             if (ok) {
@@ -369,6 +414,7 @@ int ctn_dynamics_run(ctn_problem *p, ctn_solution *s, const ctn_dynamics_options
     dy.sum.damping_alpha = o->damping_alpha;
     dy.sum.damping_beta = o->damping_beta;
     dy.sum.reason = CTN_DIVERGED_MAXIT;
+    dy.lumped = o->method == CTN_DYN_CENTRAL || o->mass == CTN_MASS_LUMPED;
     p->sum = &s->sum;
     p->mode = 0;
     ctn_problem_settle(p);
@@ -382,6 +428,7 @@ int ctn_dynamics_run(ctn_problem *p, ctn_solution *s, const ctn_dynamics_options
     }
     if (!rc) rc = march(&dy);
     if (!rc) rc = finish(&dy, t0);
+    restore_removals(&dy);
     p->overlap = overlap;
     p->sum = keep;
     dyn_free(&dy);

@@ -30,6 +30,8 @@ typedef struct ctn_dyn {
     double escale;                /* the largest E_k + U + |W| + D so far */
     double emax;                  /* the largest |E_k + U - W + D - e0| so far */
     double U1;                    /* strain energy at the last residual */
+    int lumped;                   /* the mass matrix is the lumped one */
+    unsigned char *severed;       /* per model removal: applied */
 } ctn_dyn;
 
 /* The loads and the fixed DOFs of d at time t: the held ones (p->f1, p->p1) and the
