@@ -3,11 +3,43 @@
  *   a1 = M_L^-1 (f_ext - f_int(d1) - C v(n+1/2)),  v1 = v(n+1/2) + h/2 a1,
  * stable for h <= 2 / omega_max (sqrt(1 + zeta^2) - zeta); omega_max^2 is bounded by
  * Gershgorin's theorem on M_L^-1 K_T at the start: max_q sum_j |K_qj| / M_qq (for a
- * uniform taut string that is exactly the largest eigenvalue: h <= l / c). */
+ * uniform taut string that is exactly the largest eigenvalue: h <= l / c). A member slack
+ * at the start (a chain released from a shorter chord) adds nothing to K_T there but its
+ * elastic stiffness k e e^T once taut: its rows are added to the bound. */
 #include "analysis/dynamics/dynamics.h"
 
 #include <math.h>
 #include <string.h>
+
+/* The rows of |k e e^T| (on the free DOFs, e the chord at the start) of the members
+ * slack at the start, added into row (ndof). */
+typedef struct slack_rows {
+    const ctn_problem *p;
+    const double *d;
+    double *row;
+} slack_rows;
+
+static void slack_visit(void *data, const ctn_asm *a, const ctn_asm_elem *el)
+{
+    slack_rows *sr = data;
+    if (!el->st->slack || el->b->nnodes != 2 || el->b->ops->ndof_node != 3) return;
+    double e[3], len = 0, k = el->b->ops->stiffness(el->props), abs_e[2] = { 0, 0 };
+    int q[2][3];
+    for (int c = 0; c < 3; c++) {
+        size_t i0 = ctn_dofmap_node(&a->map, (size_t)el->nodes[0]), i1 = ctn_dofmap_node(&a->map, (size_t)el->nodes[1]);
+        e[c] = a->m->nodes.v[el->nodes[1]].X[c] + sr->d[i1 + (size_t)c] - a->m->nodes.v[el->nodes[0]].X[c] - sr->d[i0 + (size_t)c];
+        len += e[c] * e[c];
+        q[0][c] = a->map.eq[i0 + (size_t)c];
+        q[1][c] = a->map.eq[i1 + (size_t)c];
+    }
+    len = sqrt(len);
+    if (!(len > 0)) return;
+    for (int n = 0; n < 2; n++)
+        for (int c = 0; c < 3; c++) abs_e[n] += q[n][c] >= 0 ? fabs(e[c]) / len : 0.0;
+    for (int n = 0; n < 2; n++)
+        for (int c = 0; c < 3; c++)
+            if (q[n][c] >= 0) sr->row[q[n][c]] += k * fabs(e[c]) / len * (abs_e[0] + abs_e[1]);
+}
 
 int ctn_dyn_stable_step(ctn_dyn *dy)
 {
@@ -25,6 +57,8 @@ int ctn_dyn_stable_step(ctn_dyn *dy)
             row[j] += fabs(p->Kx[k]);
             if (i != j) row[i] += fabs(p->Kx[k]);
         }
+    slack_rows sr = { p, dy->d0, row };
+    ctn_asm_loop(p->a, dy->d0, 0, 0, slack_visit, &sr, NULL);
     for (size_t q = 0; q < n; q++) wmax2 = fmax(wmax2, row[q] / dy->diag[q]);
     double w = sqrt(wmax2), zeta = w > 0 ? 0.5 * (dy->o->damping_alpha / w + dy->o->damping_beta * w) : 0;
     dy->sum.dt_stable = w > 0 ? 2.0 / w * (sqrt(1 + zeta * zeta) - zeta) : dy->o->t_end;   /* no stiffness: no limit */
