@@ -34,6 +34,22 @@ typedef struct ctn_dyn {
     unsigned char *severed;       /* per model removal: applied */
 } ctn_dyn;
 
+/* A model error at the `dynamics` line (or without a place, from the API) (dyn_check.c). */
+int ctn_dyn_error(const ctn_problem *p, const ctn_dynamics_options *o, const char *msg);
+/* dyn_start.c: the method's am, af, gamma, beta; the held loads and d0; the start (r0,
+ * K_0, M on its own pattern, C, a0, the energies, the explicit stable step, the first
+ * row); a0 = M^-1 (f_ext - f_int(d0) - C v0) (over the lumped diagonal where M is
+ * singular, or lumped). */
+void ctn_dyn_method_params(ctn_dyn *dy);
+void ctn_dyn_start_loads(ctn_dyn *dy);
+int ctn_dyn_start(ctn_dyn *dy);
+int ctn_dyn_acceleration(ctn_dyn *dy);
+/* dyn_removal.c: the removals due at t applied (the state rebalanced), the next one after
+ * t (INFINITY if none), the severed elements restored. */
+int ctn_dyn_apply_removals(ctn_dyn *dy, double t);
+double ctn_dyn_next_removal(const ctn_dyn *dy, double t);
+void ctn_dyn_restore_removals(ctn_dyn *dy);
+
 /* The loads and the fixed DOFs of d at time t: the held ones (p->f1, p->p1) and the
  * model's forces and support motions times their functions of time (p->fext, d). */
 void ctn_dyn_set_time(ctn_dyn *dy, double t, double *d);
