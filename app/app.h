@@ -89,6 +89,10 @@ void ctn_print_modes(FILE *out, const ctn_model *m, const ctn_solution *s);
 /* Its buckling part: the analysis and one line per factor (print_buckling.c; nothing
  * without a buckling analysis). */
 void ctn_print_buckling(FILE *out, const ctn_model *m, const ctn_solution *s);
+/* Its dynamics part (print_dynamics.c; nothing without a dynamics analysis), and on out
+ * the time a failed dynamics stopped at. */
+void ctn_print_dynamics(FILE *out, const ctn_model *m, const ctn_solution *s);
+void ctn_print_dynamics_failure(FILE *out, const char *model, const ctn_solution *s);
 /* The reactions of the supported nodes, at most limit rows (-1: all), then their sum
  * and, when rows were left out, the largest by magnitude (print_reactions.c). */
 #define CTN_APP_REACTIONS 20

@@ -140,6 +140,7 @@ int ctn_cmd_solve(int argc, char **argv)
         ctn_solution_summary(s, &sum);
         code = sum.reason == CTN_CONVERGED ? CTN_EXIT_OK : CTN_EXIT_NOCONV;
         if (code) fprintf(stderr, "catena: %s: not converged: %s\n", a.model, ctn_reason_name(sum.reason));
+        if (code) ctn_print_dynamics_failure(stderr, a.model, s);
         const char *failed = NULL;
         if (!code && !ctn_cases_converged(s, &failed)) {
             code = CTN_EXIT_NOCONV;

@@ -164,6 +164,7 @@ void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s)
     ctn_print_groups(out, m, s);
     ctn_print_modes(out, m, s);
     ctn_print_buckling(out, m, s);
+    ctn_print_dynamics(out, m, s);
 }
 
 void ctn_print_stability(FILE *out, const char *model, const ctn_solution *s)

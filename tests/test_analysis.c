@@ -33,10 +33,10 @@ static ctn_model *read_model(ctn_ctx *ctx, ctn_solve_options *opt)
 
 static void test_registry(void)
 {
-    CHECK(ctn_analysis_count() == 4);
+    CHECK(ctn_analysis_count() == 5);
     CHECK(!strcmp(ctn_analysis_type(0), "static") && !strcmp(ctn_analysis_type(1), "stability") &&
           !strcmp(ctn_analysis_type(2), "modal") && !strcmp(ctn_analysis_type(3), "buckling") &&
-          ctn_analysis_type(4) == NULL);
+          !strcmp(ctn_analysis_type(4), "dynamics") && ctn_analysis_type(5) == NULL);
     ctn_ctx *ctx = NULL;
     ctn_problem *p = NULL;
     ctn_analysis *a = NULL;
@@ -44,7 +44,7 @@ static void test_registry(void)
     ctn_model *m = read_model(ctx, NULL);
     CHECK(ctn_problem_create(ctx, m, NULL, &p) == CTN_OK);
     CHECK(ctn_analysis_create(p, "transient", NULL, &a) == CTN_ERR_INVALID && a == NULL);
-    CHECK_MSG(strstr(ctn_ctx_message(ctx), "unknown analysis 'transient' (known: static, stability, modal, buckling)"), "%s",
+    CHECK_MSG(strstr(ctn_ctx_message(ctx), "unknown analysis 'transient' (known: static, stability, modal, buckling, dynamics)"), "%s",
               ctn_ctx_message(ctx));
     ctn_problem_destroy(&p);
     ctn_model_destroy(&m);

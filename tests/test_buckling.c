@@ -169,7 +169,7 @@ static void test_object(void)
 {
     char text[1024];
     bar_model(text, sizeof text, 1e8, "engineering", 10, 2, 3, 1, 5, "");
-    CHECK(ctn_analysis_count() == 4 && !strcmp(ctn_analysis_type(3), "buckling"));
+    CHECK(ctn_analysis_count() == 5 && !strcmp(ctn_analysis_type(3), "buckling"));
     ctn_ctx *ctx = NULL;
     ctn_model *m = NULL;
     ctn_problem *p = NULL;

@@ -14,6 +14,10 @@
  *                ctn_modal_options; read with ctn_solution_mode
  *   "buckling"   the linear buckling factors about a converged solution: options
  *                ctn_buckling_options; read with ctn_solution_buckling
+ *   "dynamics"   time integration (ctn_dynamics_options): from rest at the start
+ *                geometry when *s is NULL (a new solution), else from the converged last
+ *                step of *s with its loads held (a step "dynamics" added to it); read
+ *                with ctn_solution_history, ctn_solution_dynamics_summary
  *
  * Every options struct starts with its size (set by its _default function), so that a
  * program built against this header keeps working when later versions add keys at the
@@ -98,10 +102,56 @@ int ctn_solution_buckling(const ctn_solution *s, size_t k, ctn_buckling_mode *ou
 /* CTN_ERR_INVALID when no buckling analysis was run on s. */
 int ctn_solution_buckling_summary(const ctn_solution *s, ctn_buckling_summary *out);
 
+/* The defaults of the dynamics analysis (t_end 0: set dt and t_end). */
+void ctn_dynamics_options_default(ctn_dynamics_options *opt);
+/* CTN_OK, or CTN_ERR_INVALID with a message naming the option out of range (dt and t_end
+ * both 0 are in range: no dynamics analysis). */
+int ctn_dynamics_options_check(ctn_ctx *ctx, const ctn_dynamics_options *opt);
+
+/* A dynamics analysis as a whole (docs/theory.md "Dynamics"). */
+typedef struct ctn_dynamics_summary {
+    ctn_dyn_method method;
+    double dt, t_end;         /* as asked [s] */
+    double t_reached;         /* the time of the last converged state [s] (t_end when done) */
+    size_t steps;             /* time steps of dt taken (rows of the history - 1) */
+    double alpha_m, alpha_f, gamma, beta; /* the method's parameters */
+    double rho_inf;           /* as asked (genalpha, hht) */
+    ctn_mass_matrix mass;     /* the mass matrix used */
+    double damping_alpha, damping_beta;   /* Rayleigh's, as used */
+    int iterations;           /* Newton iterations (implicit) over every step */
+    int factorizations;       /* numeric factorizations of the effective tangent */
+    int cuts;                 /* halvings of dt on failed steps */
+    int substeps;             /* steps taken (more than steps when dt was cut) */
+    double dt_stable;         /* CENTRAL: the stable step of the mesh [s]; else 0 */
+    double energy_error;      /* max over the rows of |E_k + U - W + D - (E_k0 + U_0)| /
+                                 max(E_k + U + |W| + D, over the rows) */
+    double t_total;           /* wall seconds of the dynamics analysis */
+    ctn_reason reason;        /* CTN_CONVERGED when t_end was reached; else why the step
+                                 after t_reached failed with dt cut maxcuts times */
+    double t_fail;            /* not converged: the time the failed step started [s] */
+} ctn_dynamics_summary;
+
+/* CTN_ERR_INVALID when no dynamics analysis was run on s. */
+int ctn_solution_dynamics_summary(const ctn_solution *s, ctn_dynamics_summary *out);
+/* The recorded time histories (ctn_model_record_node, ctn_model_record_element): rows
+ * 1 + steps (t = 0 first, then every dt), each 1 + columns numbers: t [s], then one per
+ * column (a node's displacement from the start geometry, an element's axial force);
+ * NULL (0, 0) without a dynamics analysis. Owned by the solution. */
+const double *ctn_solution_history(const ctn_solution *s, size_t *rows, size_t *columns);
+/* The name of column j (0-based, after t): "ID.ux", "ID.uy", "ID.uz" for node ID,
+ * "ID.force" for element ID; NULL when out of range. */
+const char *ctn_solution_history_name(const ctn_solution *s, size_t j);
+/* The energy balance at every row: 4 numbers each, kinetic energy E_k, strain energy U,
+ * work of the external loads since t = 0 W, energy dissipated by damping D [force
+ * length]; NULL without a dynamics analysis. Owned by the solution. */
+const double *ctn_solution_energy(const ctn_solution *s, size_t *rows);
+/* The name of a method: "genalpha", "hht", "newmark", "central" ("?" if none). */
+const char *ctn_dyn_method_name(ctn_dyn_method m);
+
 typedef struct ctn_analysis ctn_analysis;
 
 /* The registered analyses: their count and the name of the i-th ("static",
- * "stability", "modal", "buckling"); NULL for i out of range. */
+ * "stability", "modal", "buckling", "dynamics"); NULL for i out of range. */
 size_t ctn_analysis_count(void);
 const char *ctn_analysis_type(size_t i);
 

@@ -415,6 +415,32 @@ int ctn_model_external_forces(const ctn_model *m, double *f);
  * at least one support, ... */
 int ctn_model_validate(const ctn_model *m);
 
+/* Time histories that a dynamics analysis records (catena/analysis.h), in the order
+ * asked: the displacements of node id in the directions dofs (bits CTN_FIX_X, CTN_FIX_Y,
+ * CTN_FIX_Z; 0: all three), or the axial force of element id. CTN_ERR_MODEL for an
+ * undefined id or one recorded twice. */
+int ctn_model_record_node(ctn_model *m, int id, unsigned dofs);
+int ctn_model_record_element(ctn_model *m, int id);
+size_t ctn_model_record_count(const ctn_model *m);
+
+/* Functions of time for a dynamics analysis (docs/format.md "Dynamics"): par holds
+ * ramp, step: t0, t1 (t1 > t0 for a ramp; step: t1 unused); harmonic: amp, freq [Hz],
+ * phase [rad], offset; table: t (n >= 2 points, strictly increasing) and v, linear
+ * between the points, held beyond the ends. The name must be new. */
+typedef enum ctn_fn_kind { CTN_FN_RAMP = 0, CTN_FN_STEP = 1, CTN_FN_HARMONIC = 2, CTN_FN_TABLE = 3 } ctn_fn_kind;
+int ctn_model_add_function(ctn_model *m, const char *name, ctn_fn_kind kind, const double par[4], const double *t,
+                           const double *v, size_t n);
+/* A force F at node id times function fn(t), or (dofs != 0) a prescribed motion u fn(t)
+ * of the node's fixed directions dofs (CTN_FIX_X | _Y | _Z) added to their static
+ * displacement: both applied by a dynamics analysis only (a static analysis leaves
+ * them out). CTN_ERR_MODEL for an undefined node or function, a motion of a free DOF. */
+int ctn_model_add_load_fn(ctn_model *m, int id, const double F[3], const char *fn);
+int ctn_model_add_motion_fn(ctn_model *m, int id, unsigned dofs, const double u[3], const char *fn);
+/* Element id removed at time t >= 0 of a dynamics analysis (its force and stiffness
+ * zero from then on, its mass kept: a cable that breaks). Cable elements and springs
+ * only; CTN_ERR_MODEL for another family, an undefined element, one removed twice. */
+int ctn_model_add_removal(ctn_model *m, int id, double t);
+
 CTN_API_END
 #ifdef __cplusplus
 }

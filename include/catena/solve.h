@@ -107,6 +107,48 @@ typedef struct ctn_buckling_options {
     int line;             /* the model file's `buckling` line, named by its errors (0: none) */
 } ctn_buckling_options;
 
+/* The time integration of a dynamics analysis (catena/analysis.h, docs/theory.md
+ * "Dynamics"). The implicit methods are one family, the generalized-alpha method of
+ * Chung and Hulbert: M a(n+1-am) + C v(n+1-af) + f_int(n+1-af) = f_ext(n+1-af), the
+ * forces averaged between t_n and t_n+1 (x(n+1-a) = (1 - a) x(n+1) + a x(n)), Newmark's
+ * update with gamma, beta; a Newton solve per step on K_T + c1 M + c2 C. */
+typedef enum ctn_dyn_method {
+    CTN_DYN_GENALPHA = 0,    /* am = (2 rho - 1)/(rho + 1), af = rho/(rho + 1), gamma = 1/2 -
+                                am + af, beta = (1 - am + af)^2 / 4 from rho_inf */
+    CTN_DYN_HHT = 1,         /* Hilber-Hughes-Taylor: am = 0, af = -alpha (alpha in
+                                [-1/3, 0], or from rho_inf in [1/2, 1]), gamma = 1/2 + af,
+                                beta = (1 + af)^2 / 4 */
+    CTN_DYN_NEWMARK = 2,     /* am = af = 0, the options' gamma and beta */
+    CTN_DYN_CENTRAL = 3      /* explicit central differences on the lumped mass; dt at most
+                                the stable step of the mesh */
+} ctn_dyn_method;
+
+/* A dynamics analysis: time integration from t = 0 to t_end in steps dt. */
+typedef struct ctn_dynamics_options {
+    size_t size;          /* sizeof(ctn_dynamics_options): ctn_dynamics_options_default sets
+                             it (catena/analysis.h); keys are only ever added at the end */
+    double dt;            /* time step [s] > 0 (0 with t_end 0: no dynamics; the default) */
+    double t_end;         /* end time [s] > 0 */
+    ctn_dyn_method method;/* default CTN_DYN_GENALPHA */
+    double rho_inf;       /* spectral radius at infinite frequency, [0, 1] (default 0.9;
+                             1: no algorithmic damping) */
+    double alpha;         /* HHT's alpha in [-1/3, 0]; NAN (default): from rho_inf */
+    double gamma, beta;   /* NEWMARK: default 1/2, 1/4 (average acceleration) */
+    ctn_mass_matrix mass; /* implicit methods: default CTN_MASS_CONSISTENT; CENTRAL: lumped */
+    double damping_alpha; /* Rayleigh damping C = damping_alpha M + damping_beta K_0, K_0 the */
+    double damping_beta;  /* tangent at the start of the analysis [1/s], [s] (default 0, 0) */
+    double tol;           /* a step converges when |R| <= tol (|f_ext| + |f_int| + |M a|) ... */
+    double dtol;          /* ... or its Newton correction |dd| <= dtol (|d| + L_ref)
+                             (defaults 1e-8, 1e-12) */
+    int maxit;            /* most Newton iterations of a step (default 20) */
+    int maxcuts;          /* halvings of dt on a failed step before it stops (default 10) */
+    int from_rest;        /* 1: from rest at the start geometry, the loads of every step
+                             applied at t = 0 (no static analysis first); 0: from the
+                             equilibrium of the last static step, its loads held */
+    int line;             /* the model file's `dynamics` line, named by its errors (0: none) */
+    int steps_before;     /* the `step` lines before the `dynamics` line (the reader's) */
+} ctn_dynamics_options;
+
 /* Solver options; ctn_solve_options_default() fills the defaults. */
 typedef struct ctn_solve_options {
     size_t size;          /* sizeof(ctn_solve_options): ctn_solve_options_default sets it;
@@ -152,6 +194,9 @@ typedef struct ctn_solve_options {
     ctn_buckling_options buckling; /* after a converged solve (and its modes), the static
                              analysis runs the buckling analysis with these when
                              buckling.count > 0 (the file's `buckling` line) */
+    ctn_dynamics_options dynamics; /* when dynamics.t_end > 0 (the file's `dynamics` line):
+                             from rest instead of the static analysis (from_rest), or
+                             after its converged last step */
 } ctn_solve_options;
 
 /* Fill the defaults (and size). Options belong to a solve, not to a model: a model file's `solve`

@@ -8,6 +8,7 @@
 
 static const ctn_analysis_ops *const registry[] = {
     &ctn_analysis_static, &ctn_analysis_stability, &ctn_analysis_modal, &ctn_analysis_buckling,
+    &ctn_analysis_dynamics,
 };
 #define NKINDS (sizeof registry / sizeof registry[0])
 

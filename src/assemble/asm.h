@@ -162,6 +162,9 @@ void ctn_asm_set_temperatures(ctn_asm *a, const double *dT);
  * temperature change dT it is at (the one ctn_asm_set_temperatures gave it; 0 for none):
  * a length that changes keeps the element's thermal state. */
 void ctn_asm_setup_element(ctn_asm *a, size_t e, double dT);
+/* Sever element e (its family's sever op: force and stiffness zero, mass kept) until
+ * ctn_asm_setup_element restores it; CTN_ERR_INVALID for a family without the op. */
+int ctn_asm_sever_element(ctn_asm *a, size_t e);
 
 /* Build steps of ctn_asm_create (blocks.c, pattern.c). */
 int ctn_asm_blocks(ctn_ctx *ctx, ctn_asm *a);

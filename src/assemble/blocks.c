@@ -118,3 +118,11 @@ void ctn_asm_setup_element(ctn_asm *a, size_t e, double dT)
     b->ops->setup(a->m, e, props);
     if (b->ops->temperature) b->ops->temperature(props, dT);
 }
+
+int ctn_asm_sever_element(ctn_asm *a, size_t e)
+{
+    const ctn_asm_block *b = ctn_asm_block_of(a, e);
+    if (!b->ops->sever) return CTN_ERR_INVALID;
+    b->ops->sever(a->props + b->props0 + (e - b->e0) * b->ops->props_size);
+    return CTN_OK;
+}

@@ -59,6 +59,8 @@ static double cable_stiffness(const void *props)
     return p->EA / p->l0;
 }
 
+static void cable_sever(void *props) { ((ctn_cable_props *)props)->EA = 0; }
+
 static void cable_mass(const void *props, const double *X, int lumped, double *M)
 {
     (void)X;
@@ -117,5 +119,5 @@ const ctn_element_ops ctn_cable2_ops = {
     .check = cable_check, .setup = cable_setup, .eval = cable_eval, .load = cable_load,
     .stiffness = cable_stiffness, .rest_length = cable_rest_length, .prestress_l0 = cable_prestress_l0,
     .temperature = cable_temperature,
-    .mass = cable_mass, .eval_axial = ctn_cable_axial,
+    .mass = cable_mass, .eval_axial = ctn_cable_axial, .sever = cable_sever,
 };

@@ -100,6 +100,10 @@ typedef struct ctn_element_ops {
     void (*line_load)(const ctn_model *m, size_t e, const double q[3], double *f, double *M);
     int (*eval_axial)(const void *props, unsigned mode, const double *X, const double *u, double *f,
                       double *kk, ctn_elem_state *st);
+    /* Optional: sever the member (a cable that breaks, in a dynamics analysis): its force,
+     * stiffness and energy zero from now on, its mass kept; setup restores it. NULL: the
+     * family cannot be removed. */
+    void (*sever)(void *props);
 } ctn_element_ops;
 
 /* Entries of the packed upper triangle of an n x n matrix. */

@@ -48,6 +48,8 @@ static void spring_setup(const ctn_model *m, size_t e, void *props)
     p->l0 = m->elements.v[e].l0;
 }
 
+static void spring_sever(void *props) { ((ctn_spring_props *)props)->k = 0; }
+
 static double spring_stiffness(const void *props) { return ((const ctn_spring_props *)props)->k; }
 
 static int spring_prestress_l0(const ctn_model *m, const ctn_element *e, int kind, double v, double l, double *l0)
@@ -64,4 +66,5 @@ const ctn_element_ops ctn_spring2_ops = {
     .name = "spring", .nnodes = 2, .ndof_node = 3, .props_size = sizeof(ctn_spring_props), .flags = 0,
     .check = spring_check, .params = spring_params, .setup = spring_setup, .eval = spring_eval,
     .stiffness = spring_stiffness, .prestress_l0 = spring_prestress_l0, .eval_axial = spring_axial,
+    .sever = spring_sever,
 };

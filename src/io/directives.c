@@ -347,12 +347,14 @@ static int nodal(ctn_line *l, int moment)
     int id = 0;
     double F[3], M[3];
     int npos = !moment && load_has_moments(l) ? 7 : 4;
-    int rc = ctn_parse_positional(l, npos, moment ? "moment NODE MX MY MZ" : "load NODE FX FY FZ [MX MY MZ]");
+    int rc = ctn_parse_positional(l, npos, moment ? "moment NODE MX MY MZ" : "load NODE FX FY FZ [MX MY MZ] [fn=FUNCTION]");
     if (!rc) rc = ctn_parse_int(l, "the node id", l->tok[1], &id);
     for (int k = 0; k < 3 && !rc; k++) rc = ctn_parse_num(l, moment ? "a moment component" : "a force component", l->tok[2 + k], &F[k]);
     for (int k = 0; k < 3 && !rc && npos == 7; k++) rc = ctn_parse_num(l, "a moment component", l->tok[5 + k], &M[k]);
+    const char *fn = moment || npos == 7 ? NULL : ctn_parse_key(l, npos + 1, "fn");   /* dynamics: F fn(t) */
     if (!rc) rc = ctn_parse_leftovers(l, npos + 1, moment ? "moment" : "load");
     if (rc) return rc;
+    if (fn) return ctn_model_add_load_fn(l->m, id, F, fn);
     if (moment) return ctn_model_add_moment(l->m, id, F);
     rc = ctn_model_add_load(l->m, id, F);
     if (rc || npos == 4 || (M[0] == 0 && M[1] == 0 && M[2] == 0)) return rc;   /* no moment: any node */
@@ -501,7 +503,8 @@ static int d_displace(ctn_line *l)
     int id = 0;
     unsigned dofs = 0;
     double u[6] = { 0, 0, 0, 0, 0, 0 };
-    int rc = ctn_parse_positional(l, 1, "displace NODE [x=DX] [y=DY] [z=DZ] [rx=RX] [ry=RY] [rz=RZ]");
+    int rc = ctn_parse_positional(l, 1, "displace NODE [x=DX] [y=DY] [z=DZ] [rx=RX] [ry=RY] [rz=RZ] [fn=FUNCTION]");
+    const char *fn = rc ? NULL : ctn_parse_key(l, 2, "fn");                /* dynamics: u fn(t) */
     if (!rc) rc = ctn_parse_int(l, "the node id", l->tok[1], &id);
     for (int k = 0; k < 6 && !rc; k++) {
         if (!ctn_parse_key(l, 2, axes[k])) continue;
@@ -510,6 +513,8 @@ static int d_displace(ctn_line *l)
     }
     if (!rc) rc = ctn_parse_leftovers(l, 2, "displace");
     if (!rc && !dofs) return ctn_parse_error(l, "displace: give at least one of x=, y=, z=, rx=, ry=, rz=");
+    if (!rc && fn && (dofs & CTN_FIX_ROT)) return ctn_parse_error(l, "displace: fn= moves translations only (x=, y=, z=)");
+    if (!rc && fn) return ctn_model_add_motion_fn(l->m, id, dofs, u, fn);
     if (!rc && (dofs & CTN_FIX_ALL)) rc = ctn_model_add_displacement(l->m, id, dofs & CTN_FIX_ALL, u);
     if (!rc && (dofs & CTN_FIX_ROT)) rc = ctn_model_add_rotation(l->m, id, dofs & CTN_FIX_ROT, u + 3);
     return rc;
@@ -559,6 +564,8 @@ static const directive directives[] = {
     { "combination", ctn_parse_combination }, { "ice", ctn_parse_ice },
     { "wind", ctn_parse_wind },
     { "buckling", d_buckling },
+    { "dynamics", ctn_parse_dynamics }, { "damping", ctn_parse_damping }, { "record", ctn_parse_record },
+    { "function", ctn_parse_function }, { "remove", ctn_parse_remove },
 };
 
 int ctn_parse_directive(ctn_line *l)

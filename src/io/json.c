@@ -3,6 +3,7 @@
  * tree. Numbers round-trip as cJSON prints them (17 digits when 15 do not); a result
  * holding a NaN or Inf is refused (CTN_ERR_INVALID) before anything is written. */
 #include "io/json_buckling.h"
+#include "io/json_dynamics.h"
 #include "io/json_modes.h"
 #include "io/jsonw.h"
 #include "io/writer.h"
@@ -455,6 +456,7 @@ static int json_step(void *p, const ctn_solution *s, size_t k)
         if (ctn_model_group_count(jw->w.m)) put_groups(jw, s, jw->nsteps - 1);
         ctn_json_put_modes(&jw->j, jw->w.m, s);
         ctn_json_put_buckling(&jw->j, jw->w.m, s);
+        ctn_json_put_dynamics(&jw->j, s);
         if (jw->nsteps > 1) ctn_jw_array(&jw->j, "steps");
     }
     if (jw->nsteps > 1) {

@@ -98,5 +98,11 @@ int ctn_parse_case(ctn_line *l);
 int ctn_parse_combination(ctn_line *l);
 int ctn_parse_ice(ctn_line *l);
 int ctn_parse_wind(ctn_line *l);
+/* Dynamics (directives_dynamics.c). */
+int ctn_parse_dynamics(ctn_line *l);
+int ctn_parse_damping(ctn_line *l);
+int ctn_parse_record(ctn_line *l);
+int ctn_parse_function(ctn_line *l);
+int ctn_parse_remove(ctn_line *l);
 
 #endif

@@ -1,6 +1,6 @@
 /* Result files in a directory: result.json, nodes.csv, elements.csv, result.vtu (the
  * last step), modes.csv when the solution has modes, buckling.csv when it has buckling
- * factors, and for a run of several steps
+ * factors, history.csv when it has a dynamics analysis, and for a run of several steps
  * result_K.vtu for every step and
  * result.pvd listing them. Each is streamed by its writer (io/writer.h) into a staged
  * temporary (io/atomic.h), synced; only when all are staged is any renamed onto its
@@ -36,13 +36,15 @@ static job *plan(ctn_ctx *ctx, const ctn_solution *s, size_t *count)
         &ctn_writer_json, &ctn_writer_nodes_csv, &ctn_writer_elements_csv, &ctn_writer_vtu
     };
     size_t n = ctn_solution_step_count(s), nm = ctn_solution_mode_count(s) > 0;
-    size_t nf = NFIXED + nm + (ctn_solution_buckling_count(s) > 0);
+    size_t nb = ctn_solution_buckling_count(s) > 0, nh = ctn_solution_history(s, NULL, NULL) != NULL;
+    size_t nf = NFIXED + nm + nb + nh;
     *count = nf + (n > 1 ? n + 1 : 0);
     job *j = ctn_calloc(ctx, *count, sizeof *j);
     if (!j) return NULL;
     for (size_t i = 0; i < *count; i++) {
         const ctn_writer_ops *ops = i < NFIXED ? fixed[i] : i < NFIXED + nm ? &ctn_writer_modes_csv
-                                    : i < nf ? &ctn_writer_buckling_csv
+                                    : i < NFIXED + nm + nb ? &ctn_writer_buckling_csv
+                                    : i < nf ? &ctn_writer_history_csv
                                     : i + 1 < *count ? &ctn_writer_vtu : &ctn_writer_pvd;
         j[i].ops = ops;
         j[i].step = i < nf || i + 1 == *count ? n - 1 : i - nf;

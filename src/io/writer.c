@@ -1,5 +1,6 @@
 /* The writer driver, and the check that no NaN or Inf would reach a file. */
 #include "io/json_buckling.h"
+#include "io/json_dynamics.h"
 #include "io/json_modes.h"
 #include "io/writer.h"
 #include "catena/io.h"
@@ -113,7 +114,8 @@ static int model_finite(const ctn_model *m, const ctn_solution *s)
 
 int ctn_result_check(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s)
 {
-    int ok = summary_finite(s) && model_finite(m, s) && ctn_modes_finite(m, s) && ctn_buckling_finite(m, s);
+    int ok = summary_finite(s) && model_finite(m, s) && ctn_modes_finite(m, s) && ctn_buckling_finite(m, s) &&
+             ctn_dynamics_finite(s);
     for (size_t k = 0; ok && k < ctn_solution_step_count(s); k++) ok = step_finite(m, s, k);
     return ok ? CTN_OK : ctn_error(ctx, CTN_ERR_INVALID, "the result holds a NaN or Inf; not written");
 }

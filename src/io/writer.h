@@ -42,6 +42,7 @@ extern const ctn_writer_ops ctn_writer_nodes_csv;     /* nodes.csv: the last ste
 extern const ctn_writer_ops ctn_writer_elements_csv;  /* elements.csv: the last step */
 extern const ctn_writer_ops ctn_writer_modes_csv;     /* modes.csv: the modal analysis */
 extern const ctn_writer_ops ctn_writer_buckling_csv;  /* buckling.csv: the buckling analysis */
+extern const ctn_writer_ops ctn_writer_history_csv;   /* history.csv: the dynamics analysis */
 extern const ctn_writer_ops ctn_writer_vtu;           /* result.vtu: one step (vtu.c) */
 extern const ctn_writer_ops ctn_writer_pvd;           /* result.pvd: the steps' .vtu files */
 

@@ -49,6 +49,14 @@ void ctn_model_destroy(ctn_model **m)
     ctn_free(p->terms.v);
     ctn_free(p->etargets.v);
     ctn_free(p->densities.v);
+    ctn_free(p->records.v);
+    for (size_t i = 0; i < p->fns.n; i++) {
+        ctn_free(p->fns.v[i].t);
+        ctn_free(p->fns.v[i].v);
+    }
+    ctn_free(p->fns.v);
+    ctn_free(p->dloads.v);
+    ctn_free(p->removals.v);
     ctn_idmap_free(&p->node_ids);
     ctn_idmap_free(&p->element_ids);
     ctn_free(p);

@@ -179,6 +179,44 @@ typedef struct ctn_cable {
     int target_iterations;   /* outer iterations that found the length */
 } ctn_cable;
 
+/* A time history a dynamics analysis records (records.c). */
+typedef struct ctn_record {
+    int node;        /* node index, or -1 */
+    unsigned dofs;   /* the node's directions (CTN_FIX_X | _Y | _Z) */
+    int element;     /* element index (its axial force), or -1 */
+    int line;
+} ctn_record;
+
+/* A function of time f(t) scaling loads and support motions in a dynamics analysis
+ * (functions.c): ramp (0 before t0, linear to 1 at t1, 1 after), step (0 before t0, 1
+ * from it), harmonic (offset + amp sin(2 pi freq t + phase)), table (linear between its
+ * points, held beyond its ends). */
+typedef struct ctn_fn {
+    char name[CTN_NAME_MAX];
+    int kind;        /* ctn_fn_kind */
+    double par[4];   /* ramp, step: t0, t1; harmonic: amp, freq [Hz], phase [rad], offset */
+    double *t, *v;   /* table: n points, t increasing (owned) */
+    size_t n;
+    int line;
+} ctn_fn;
+
+/* A force at a node, or a prescribed motion of its fixed DOFs, times a function of time:
+ * applied by a dynamics analysis only (functions.c). */
+typedef struct ctn_dload {
+    int node;        /* node index */
+    unsigned dofs;   /* motion: the fixed directions it moves (CTN_FIX_X | _Y | _Z); 0: a force */
+    double F[3];     /* the force, or the motion's amplitudes */
+    int fn;          /* function index */
+    int line;
+} ctn_dload;
+
+/* An element removed at time t of a dynamics analysis (a cable that breaks). */
+typedef struct ctn_removal {
+    int element;     /* element index */
+    double t;        /* [s] */
+    int line;
+} ctn_removal;
+
 /* A growable array: data, count and capacity. */
 #define CTN_ARRAY(T) struct { T *v; size_t n, cap; }
 
@@ -220,6 +258,10 @@ struct ctn_model {
     CTN_ARRAY(ctn_cable) etargets;  /* catenary elements set by a target, each as the
                                        record of a one-element cable (first = the element
                                        index, count = 1), by increasing element index */
+    CTN_ARRAY(ctn_record) records;  /* time histories of a dynamics analysis, in order */
+    CTN_ARRAY(ctn_fn) fns;          /* functions of time (dynamics) */
+    CTN_ARRAY(ctn_dload) dloads;    /* forces and support motions that follow them */
+    CTN_ARRAY(ctn_removal) removals; /* elements removed in time, in order */
 };
 
 /* Make room for one more item in a CTN_ARRAY; 0 or CTN_ERR_NOMEM. */
@@ -328,6 +370,8 @@ double ctn_model_sel_element_temperature(const ctn_model *m, const ctn_loadsel *
  * weight but no mass= (mass.c). */
 double ctn_model_section_mass(const ctn_model *m, int i);
 int ctn_model_find_material(const ctn_model *m, const char *name);
+/* The value of function i at time t (functions.c). */
+double ctn_model_fn_value(const ctn_model *m, int i, double t);
 /* The form-finding record of element e, NULL if it has none (density.c). */
 const ctn_density *ctn_model_density_of(const ctn_model *m, size_t e);
 /* Set it (inserted in order; CTN_ERR_NOMEM unless there is room: reserve first). */

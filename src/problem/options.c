@@ -1,6 +1,7 @@
 /* Solver options, defaults and reason names. */
 #include "problem/problem.h"
 #include "problem/buckling_options.h"
+#include "problem/dynamics_options.h"
 
 #include "core/versioned.h"
 
@@ -47,6 +48,7 @@ void ctn_solve_options_default(ctn_solve_options *opt)
     opt->threads = 0;
     opt->reuse = 1;
     ctn_buckling_options_default(&opt->buckling);
+    ctn_dynamics_options_default(&opt->dynamics);
 }
 
 int ctn_modal_options_fault(const ctn_modal_options *o, char *msg, size_t size)
@@ -98,6 +100,7 @@ int ctn_solve_options_fault(const ctn_solve_options *opt, char *msg, size_t size
     if (opt->linear_solver && !ctn_linsolve_find(opt->linear_solver))
         return snprintf(msg, size, "solve: unknown linear solver '%.40s' (expected cholmod or cholmod-ldl)", opt->linear_solver), 1;
     if (ctn_buckling_options_fault(&opt->buckling, msg, size)) return 1;
+    if (ctn_dynamics_options_fault(&opt->dynamics, msg, size)) return 1;
     return ctn_modal_options_fault(&opt->modal, msg, size);
 }
 
@@ -118,6 +121,7 @@ int ctn_solve_options_take(ctn_ctx *ctx, ctn_solve_options *dst, const ctn_solve
     int rc = ctn_versioned_take(ctx, dst, sizeof *dst, src, "solve options");
     dst->modal.size = sizeof dst->modal;   /* the same layout as the caller's, or defaults */
     dst->buckling.size = sizeof dst->buckling;
+    dst->dynamics.size = sizeof dst->dynamics;
     return rc;
 }
 

@@ -2,6 +2,7 @@
  * factorization with an optional shift, solves. */
 #include "analysis/buckling/buckling.h"
 #include "analysis/modal/modal.h"
+#include "problem/dynamics_options.h"
 #include "problem/la_options.h"
 
 #include <math.h>
@@ -103,6 +104,19 @@ static int modal_precheck(ctn_problem *p)
     return rc;
 }
 
+/* A dynamics analysis asked for in the options is checked before any solve (errors at
+ * the `dynamics` line): from rest, no static analysis runs, so none of its own either. */
+static int dynamics_precheck(ctn_problem *p)
+{
+    const ctn_dynamics_options *o = &p->opt.dynamics;
+    if (!ctn_dynamics_asked(o)) return CTN_OK;
+    if (o->from_rest && (p->opt.modal.count > 0 || p->opt.buckling.count > 0))
+        return ctn_error_at(p->ctx, CTN_ERR_MODEL, p->m->file, o->line, "dynamics: from rest (no `step` line before "
+                            "it) no static analysis runs, so `%s` has no state to run about: put a `step` line before "
+                            "`dynamics`", p->opt.modal.count > 0 ? "modes" : "buckling");
+    return ctn_dynamics_check(p, o);
+}
+
 int ctn_problem_create(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options *opt,
                        ctn_problem **out)
 {
@@ -139,7 +153,8 @@ int ctn_problem_create_any(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_opt
     if (p->opt.steps < 1) p->opt.steps = 1;
     if (p->opt.maxcuts < 0) p->opt.maxcuts = p->strategy->maxcuts;
     if ((rc = setup(p)) || (rc = modal_precheck(p)) ||
-        (p->opt.buckling.count > 0 && (rc = ctn_buckling_check(p, &p->opt.buckling)))) {
+        (p->opt.buckling.count > 0 && (rc = ctn_buckling_check(p, &p->opt.buckling))) ||
+        (rc = dynamics_precheck(p))) {
         ctn_problem_destroy(&p);
         return rc;
     }

@@ -165,6 +165,11 @@ int ctn_preshape(ctn_problem *p, double *d, int *count);
  * marked in seen; *placed = 1 if it did. */
 int ctn_junction_place(ctn_problem *p, const double *loads, double *d, unsigned char *seen, int *placed);
 
+/* The model fits a dynamics analysis with options o (analysis/dynamics/dynamics.c): no
+ * rotations, no follower loads, the `dynamics` line after the last step, mass (every
+ * free DOF's for the explicit method); CTN_ERR_MODEL at the `dynamics` line. */
+int ctn_dynamics_check(ctn_problem *p, const ctn_dynamics_options *o);
+
 /* dst = the defaults overwritten by the keys of the caller's src (by its size; NULL:
  * the defaults); CTN_ERR_INVALID, recorded, for a size not set or too large. */
 int ctn_solve_options_take(ctn_ctx *ctx, ctn_solve_options *dst, const ctn_solve_options *src);

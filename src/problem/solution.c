@@ -69,6 +69,7 @@ void ctn_solution_destroy(ctn_solution **s)
     for (size_t k = 0; k < (*s)->ncases; k++) ctn_solution_destroy(&(*s)->cases[k]);
     ctn_free((*s)->cases);
     ctn_buckles_destroy(&(*s)->buckling);
+    ctn_dyn_result_destroy(&(*s)->dyn);
     ctn_free((*s)->steps);
     ctn_free((*s)->rhist);
     ctn_free((*s)->dhist);

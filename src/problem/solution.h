@@ -32,6 +32,18 @@ typedef struct ctn_buckles {
     double *shapes;            /* 3 nn per mode; mode[k].shape points into it */
 } ctn_buckles;
 
+/* The histories of a dynamics analysis (analysis/dynamics/dyn_record.c). */
+#define CTN_DYN_NAME_MAX 24
+typedef struct ctn_dyn_result {
+    ctn_dynamics_summary sum;
+    size_t ncol;               /* columns after t */
+    char (*names)[CTN_DYN_NAME_MAX]; /* ncol: "ID.ux", "ID.force" */
+    size_t nrow, cap;          /* rows stored, room */
+    double *rows;              /* nrow x (1 + ncol): t, then the columns */
+    double *energy;            /* nrow x 4: kinetic, strain, work, damping */
+} ctn_dyn_result;
+void ctn_dyn_result_destroy(ctn_dyn_result **r);
+
 struct ctn_solution {
     ctn_ctx *ctx;
     ctn_solve_summary sum;
@@ -43,6 +55,7 @@ struct ctn_solution {
     size_t nr, nd, capr, capd;
     ctn_modes *modes;          /* the last modal analysis, NULL if none */
     ctn_buckles *buckling;     /* the last buckling analysis, NULL if none */
+    ctn_dyn_result *dyn;       /* the last dynamics analysis, NULL if none */
     int rot;                   /* some node has rotations: the steps keep rot and moment */
     struct ctn_solution **cases; /* the load cases then combinations of the model, one
                                   solution of one step each (cases.c); NULL if none */

@@ -44,6 +44,9 @@ static void solve_all(ctn_ctx *ctx, const ctn_model *m, const ctn_solve_options 
         if (opt.steps > 8) opt.steps = 8;
         if (opt.arcsteps > 25) opt.arcsteps = 25;
         if (opt.maxcuts > 4 || opt.maxcuts < 0) opt.maxcuts = 4;
+        if (opt.dynamics.t_end > 200 * opt.dynamics.dt) opt.dynamics.t_end = 200 * opt.dynamics.dt;   /* a run of */
+        if (opt.dynamics.maxit > 25) opt.dynamics.maxit = 25;                /* 200 steps at most */
+        if (opt.dynamics.maxcuts > 4) opt.dynamics.maxcuts = 4;
         if (ctn_solve(ctx, m, &opt, &s) == CTN_OK) {
             char *json = NULL;
             if (ctn_result_json(ctx, m, s, 0, &json) == CTN_OK) {

@@ -4,6 +4,7 @@
  * its own driver (arclength.c). */
 #include "analysis/analysis.h"
 #include "analysis/buckling/buckling.h"
+#include "problem/dynamics_options.h"
 #include "problem/la_options.h"
 
 #include <math.h>
@@ -190,8 +191,11 @@ static int static_solve(ctn_problem *p, ctn_solution **out)
     p->mode = 0;
     p->mech_node = p->mech_dir = -1;
     if (!(d = ctn_calloc(p->ctx, p->ns, sizeof(double)))) rc = CTN_ERR_NOMEM;
+    int rest = ctn_dynamics_asked(&p->opt.dynamics) && p->opt.dynamics.from_rest && !p->max_steps;
+    if (!rc && rest) rc = ctn_dynamics_run(p, s, &p->opt.dynamics);   /* no static analysis */
     if (!rc) {
         start_state(p, d);
+        if (rest) goto summary;
         if (p->strategy->preshape) rc = ctn_preshape(p, d, &s->sum.preshaped);
         if (!rc) rc = check_start(p, d);
         if (!rc) rc = p->strategy->run(p, s, d);
@@ -207,6 +211,9 @@ static int static_solve(ctn_problem *p, ctn_solution **out)
         if (!rc && s->sum.reason == CTN_CONVERGED && p->opt.buckling.count > 0)
             rc = ctn_problem_buckling(p, s, &p->opt.buckling);
         if (!rc && s->sum.reason == CTN_CONVERGED && !p->max_steps && ctn_model_case_count(p->m)) rc = ctn_problem_cases(p, s);
+        if (!rc && s->sum.reason == CTN_CONVERGED && !p->max_steps && ctn_dynamics_asked(&p->opt.dynamics))
+            rc = ctn_dynamics_run(p, s, &p->opt.dynamics);
+    summary:
         if (!s->sum.fext_norm) s->sum.fext_norm = ctn_problem_fref(p);
         s->sum.ordering = p->ls ? ctn_ordering_of_la(ctn_linsolve_ordering(p->ls)) : CTN_ORDER_NATURAL;
         s->sum.ndof = p->ndof;

@@ -1,0 +1,80 @@
+/* Internal: the dynamics analysis's working state, shared by dynamics.c (the driver),
+ * dyn_implicit.c (a step of the generalized-alpha family), dyn_central.c (explicit
+ * central differences) and dyn_record.c (the histories and the energy balance).
+ * Vectors: "state" ones (ns) hold every DOF, d; "ndof" ones the free DOFs, v and a. */
+#ifndef CTN_ANALYSIS_DYNAMICS_H
+#define CTN_ANALYSIS_DYNAMICS_H
+
+#include "problem/problem.h"
+
+typedef struct ctn_dyn {
+    ctn_problem *p;
+    ctn_solution *s;
+    const ctn_dynamics_options *o;
+    ctn_dynamics_summary sum;
+    double am, af, gamma, beta;   /* the method's parameters */
+    double *Mx;                   /* nnz: mass, the tangent's pattern */
+    int *mcol, *mrow;             /* M's own upper pattern: its nonzeros only (ndof + 1, mnz) */
+    int *mslot;                   /* mnz: where each of them is in the tangent's values */
+    double *mval;                 /* mnz: their values (M x by it: 3 to 5 times fewer entries) */
+    double *Cx;                   /* nnz: Rayleigh damping a M + b K_0, NULL without */
+    double *diag;                 /* ndof: the lumped mass diagonal */
+    double *d0, *d1;              /* state: at t_n, and the step's iterate at t_n+1 */
+    double *v0, *a0, *v1, *a1;    /* ndof: velocities and accelerations */
+    double *r0, *r1;              /* ndof: f_ext - f_int at t_n, at the iterate */
+    double *R, *w, *w2;           /* ndof: the step's residual, scratch */
+    double *ework;                /* element scratch (records of element forces) */
+    double *fe0;                  /* state: f_ext at t_n (the work of the loads) */
+    double ek, U, W, D;           /* energies at t_n: kinetic, strain, work, damping */
+    double e0;                    /* E_k + U at t = 0 */
+    double escale;                /* the largest E_k + U + |W| + D so far */
+    double emax;                  /* the largest |E_k + U - W + D - e0| so far */
+    double U1;                    /* strain energy at the last residual */
+    int lumped;                   /* the mass matrix is the lumped one */
+    unsigned char *severed;       /* per model removal: applied */
+} ctn_dyn;
+
+/* A model error at the `dynamics` line (or without a place, from the API) (dyn_check.c). */
+int ctn_dyn_error(const ctn_problem *p, const ctn_dynamics_options *o, const char *msg);
+/* dyn_start.c: the method's am, af, gamma, beta; the held loads and d0; the start (r0,
+ * K_0, M on its own pattern, C, a0, the energies, the explicit stable step, the first
+ * row); a0 = M^-1 (f_ext - f_int(d0) - C v0) (over the lumped diagonal where M is
+ * singular, or lumped). */
+void ctn_dyn_method_params(ctn_dyn *dy);
+void ctn_dyn_start_loads(ctn_dyn *dy);
+int ctn_dyn_start(ctn_dyn *dy);
+int ctn_dyn_acceleration(ctn_dyn *dy);
+/* dyn_removal.c: the removals due at t applied (the state rebalanced), the next one after
+ * t (INFINITY if none), the severed elements restored. */
+int ctn_dyn_apply_removals(ctn_dyn *dy, double t);
+double ctn_dyn_next_removal(const ctn_dyn *dy, double t);
+void ctn_dyn_restore_removals(ctn_dyn *dy);
+
+/* The loads and the fixed DOFs of d at time t: the held ones (p->f1, p->p1) and the
+ * model's forces and support motions times their functions of time (p->fext, d). */
+void ctn_dyn_set_time(ctn_dyn *dy, double t, double *d);
+
+/* One implicit step of size h from (d0, v0, a0) into (d1, v1, a1); *ok = 0 when it did
+ * not converge (maxit, a collapsed element, an indefinite effective tangent). */
+int ctn_dyn_implicit_step(ctn_dyn *dy, double h, int *ok);
+/* The central differences: the stable step of the mesh at d0 (K_T there, Gershgorin's
+ * bound on the largest eigenvalue of M^-1 K over the lumped mass) into sum.dt_stable. */
+int ctn_dyn_stable_step(ctn_dyn *dy);
+/* One explicit step of size h; *ok = 0 when an element collapsed. */
+int ctn_dyn_central_step(ctn_dyn *dy, double h, int *ok);
+
+/* f_ext - f_int at d (state) into r (ndof), the strain energy into dy->U1, K_T into p->Kx
+ * if with_K; *valid as ctn_problem_residual's. */
+int ctn_dyn_residual(ctn_dyn *dy, const double *d, int with_K, double *r, int *valid);
+/* y = M x, y = C x (ndof; C: y = 0 without damping). */
+void ctn_dyn_mass(const ctn_dyn *dy, const double *x, double *y);
+void ctn_dyn_damp(const ctn_dyn *dy, const double *x, double *y);
+/* Accept the step into t_n: the energies advanced over it (work, dissipation), the
+ * state moved (d1, v1, a1, r -> d0, v0, a0, r0). */
+void ctn_dyn_accept(ctn_dyn *dy, double h, const double *r1);
+
+/* The result's columns (the model's records) and its first row (t = 0); a row at t. */
+int ctn_dyn_record_begin(ctn_dyn *dy);
+int ctn_dyn_record_row(ctn_dyn *dy, double t);
+
+#endif
