@@ -55,6 +55,15 @@ void ctn_app_signals_install(void);
 int ctn_app_ctx_create(ctn_ctx **ctx);
 int ctn_app_interrupt_code(void);
 
+/* The MPI job (mpi.c): PETSc and MPI initialised when under mpirun or given options
+ * after --petsc (taken out of argv); rank 0 alone prints; the job's communicator set on
+ * a context (ctn_app_ctx_create does it); finalize returns the largest code of the job
+ * (every rank exits with it). Without PETSc: no-ops (--petsc is a usage error). */
+int ctn_app_mpi_init(int *argc, char ***argv);
+int ctn_app_mpi_rank(void);
+int ctn_app_mpi_attach(ctn_ctx *ctx);
+int ctn_app_mpi_finalize(int code);
+
 /* Exit code for a failed library call, after printing its message to stderr. */
 int ctn_app_fail(ctn_ctx *ctx, int status);
 /* The same for a failure about the model read from path: the message is printed with

@@ -44,6 +44,7 @@ int ctn_app_ctx_create(ctn_ctx **ctx)
 {
     int rc = ctn_ctx_create(ctx);
     if (!rc) ctn_ctx_set_interrupt(*ctx, poll_caught, NULL);
+    if (!rc) rc = ctn_app_mpi_attach(*ctx);
     return rc ? rc : ctn_ctx_set_threads(*ctx, 0);
 }
 

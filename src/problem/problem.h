@@ -46,6 +46,7 @@ struct ctn_problem {
     const ctn_strategy_ops *strategy;
     ctn_asm *a;
     ctn_linsolve *ls;
+    const char *ls_name;       /* the linear solver's name (none created without DOFs) */
     double *Kx;                /* nnz: the tangent's values, pattern order */
     size_t ns, ndof;           /* state length, equations */
     ctn_layout eq, st;         /* the layouts of the equations (free DOFs) and of the state
