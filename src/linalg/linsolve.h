@@ -98,8 +98,9 @@ typedef struct ctn_linsolve ctn_linsolve;
 /* The registered solver of that name, NULL if none. */
 const ctn_linsolve_ops *ctn_linsolve_find(const char *name);
 /* The solver an analysis of ctx uses for the one it names ("cholmod" or "cholmod-ldl",
- * a strategy's default or the file's): on an MPI communicator (dist/comm_mpi.h) the
- * PETSc one of the same kind ("petsc", "petsc-ldl"), else the name itself. */
+ * a strategy's default or the file's; "cholmod-inertia": the stability check's count,
+ * "cholmod-ldl" in one process): on an MPI communicator (dist/comm_mpi.h) the PETSc one
+ * of the same kind ("petsc", "petsc-ldl", "petsc-inertia"), else the name itself. */
 const char *ctn_linsolve_default(const ctn_ctx *ctx, const char *name);
 /* The solver's label (ops->label, else its name). */
 const char *ctn_linsolve_label(const ctn_linsolve *s);
@@ -165,7 +166,8 @@ void ctn_blas_name(char *buf, size_t size);
 extern const ctn_linsolve_ops ctn_cholmod_ll_ops;
 extern const ctn_linsolve_ops ctn_cholmod_ldl_ops;
 #ifdef CTN_HAVE_PETSC
-extern const ctn_linsolve_ops ctn_petsc_mumps_ops, ctn_petsc_ldl_ops, ctn_petsc_cg_ops;   /* backends/petsc/ */
+extern const ctn_linsolve_ops ctn_petsc_mumps_ops, ctn_petsc_ldl_ops, ctn_petsc_cg_ops,   /* backends/petsc/ */
+    ctn_petsc_inertia_ops;
 #endif
 
 #endif

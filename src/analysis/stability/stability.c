@@ -79,7 +79,7 @@ static int inertia(ctn_problem *p, ctn_stability *out)
     ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
     ctn_factor_info info;
     long zero = 0, first = -1;
-    int rc = ctn_linsolve_create_threads(p->ctx, ctn_linsolve_default(p->ctx, "cholmod-ldl"), &pat, CTN_LA_ORDER_AUTO, p->opt.threads, &ldl);
+    int rc = ctn_linsolve_create_threads(p->ctx, ctn_linsolve_default(p->ctx, "cholmod-inertia"), &pat, CTN_LA_ORDER_AUTO, p->opt.threads, &ldl);
     if (!rc) rc = ctn_linsolve_factor(ldl, p->Kx, 0.0, &info);
     if (!rc && info.ok) {
         rc = ctn_linsolve_inertia(ldl, 1e-12 * ctn_problem_max_diag(p), &out->negative, &zero, &first);

@@ -15,8 +15,10 @@
 typedef enum ctn_petsc_kind {
     CTN_PETSC_MUMPS = 0,       /* "petsc": LL' semantics: a factor with a non-positive
                                   pivot (MUMPS's inertia) is a failed one, as CHOLMOD's */
-    CTN_PETSC_MUMPS_LDL = 1,   /* "petsc-ldl": indefinite, its inertia (INFOG(12), (28)) */
-    CTN_PETSC_CG = 2           /* "petsc-cg": CG + GAMG (any KSP/PC by the options) */
+    CTN_PETSC_MUMPS_LDL = 1,   /* "petsc-ldl": indefinite, its negative pivots (INFOG(12)) */
+    CTN_PETSC_CG = 2,          /* "petsc-cg": CG + GAMG (any KSP/PC by the options) */
+    CTN_PETSC_INERTIA = 3      /* "petsc-inertia": petsc-ldl that also counts null pivots
+                                  (ICNTL(24), INFOG(28)): the stability check's count */
 } ctn_petsc_kind;
 
 /* The owned rows of the pattern as compressed rows (petsc_rows.c): rows [lo, hi) of the
@@ -35,6 +37,6 @@ void ctn_petsc_rows_free(ctn_petsc_rows *r);
 /* r->val <- Kx at the slots, + shift on the diagonal. */
 void ctn_petsc_rows_fill(ctn_petsc_rows *r, const double *Kx, double shift);
 
-extern const ctn_linsolve_ops ctn_petsc_mumps_ops, ctn_petsc_ldl_ops, ctn_petsc_cg_ops;
+extern const ctn_linsolve_ops ctn_petsc_mumps_ops, ctn_petsc_ldl_ops, ctn_petsc_cg_ops, ctn_petsc_inertia_ops;
 
 #endif

@@ -28,7 +28,10 @@ typedef struct ctn_petsc {
 static int fail(ctn_petsc *c, const char *what, PetscErrorCode e)
 {
     const char *text = NULL;
+    PetscInt g1 = 0, g2 = 0;
     PetscErrorMessage(e, &text, NULL);
+    if (c->F && e == PETSC_ERR_LIB && !MatMumpsGetInfog(c->F, 1, &g1) && !MatMumpsGetInfog(c->F, 2, &g2))
+        return ctn_error(c->ctx, CTN_ERR_IO, "PETSc: %s failed (MUMPS INFOG(1) = %d, INFOG(2) = %d)", what, (int)g1, (int)g2);
     return ctn_error(c->ctx, CTN_ERR_IO, "PETSc: %s failed (%s)", what, text ? text : "error");
 }
 
@@ -150,6 +153,12 @@ static int create_ldl(ctn_ctx *ctx, const ctn_pattern *p, const ctn_la_options *
     return create_kind(ctx, p, CTN_PETSC_MUMPS_LDL, impl);
 }
 
+static int create_inertia(ctn_ctx *ctx, const ctn_pattern *p, const ctn_la_options *o, void **impl)
+{
+    (void)o;
+    return create_kind(ctx, p, CTN_PETSC_INERTIA, impl);
+}
+
 static int create_cg(ctn_ctx *ctx, const ctn_pattern *p, const ctn_la_options *o, void **impl)
 {
     (void)o;
@@ -166,7 +175,7 @@ static double max_diag(const ctn_petsc *c, const double *Kx, double shift)
 }
 
 /* MUMPS's settings on its factor: the inertia over every process (ICNTL(13) = 1: no
- * ScaLAPACK root); for "petsc-ldl", null pivots detected (ICNTL(24)) below 1e-12 of the
+ * ScaLAPACK root); for "petsc-inertia", null pivots detected (ICNTL(24)) below 1e-12 of the
  * largest diagonal entry (CNTL(3) < 0: absolute), the zero eigenvalues of the stability
  * check; "petsc" fails as CHOLMOD's LL' does, on a negative or a zero pivot. */
 static int mumps_settings(ctn_petsc *c, double tol)
@@ -183,7 +192,7 @@ static int mumps_settings(ctn_petsc *c, double tol)
     if (!is_mumps) goto done;
     PCALL(PCFactorGetMatrix(pc, &c->F));
     PCALL(MatMumpsSetIcntl(c->F, 13, 1));
-    if (c->kind == CTN_PETSC_MUMPS_LDL) {
+    if (c->kind == CTN_PETSC_INERTIA) {        /* a null pivot fixed alters the solves */
         PCALL(MatMumpsSetIcntl(c->F, 24, 1));
         PCALL(MatMumpsSetCntl(c->F, 3, -tol));
     }
@@ -198,16 +207,19 @@ static void set_label(ctn_petsc *c)
     PC pc;
     if (KSPGetType(c->ksp, &kt) || KSPGetPC(c->ksp, &pc) || PCGetType(pc, &pt)) return;
     if (c->F && kt && !strcmp(kt, KSPPREONLY))
-        snprintf(c->label, sizeof c->label, "petsc-mumps%s", c->kind == CTN_PETSC_MUMPS_LDL ? "-ldl" : "");
+        snprintf(c->label, sizeof c->label, "petsc-mumps%s", c->kind == CTN_PETSC_MUMPS ? "" : "-ldl");
     else snprintf(c->label, sizeof c->label, "petsc-%s-%s", kt ? kt : "?", pt ? pt : "?");
 }
 
+/* MUMPS's negative pivots (INFOG(12)) and, with null pivot detection ("petsc-inertia"),
+ * its null pivots (INFOG(28)) */
 static int inertia_of(ctn_petsc *c, PetscInt *neg, PetscInt *zero)
 {
     int rc = CTN_OK;
-    PetscInt pos;
     *neg = *zero = 0;
-    if (c->F) PCALL(MatGetInertia(c->F, neg, zero, &pos));
+    if (!c->F) return CTN_OK;
+    PCALL(MatMumpsGetInfog(c->F, 12, neg));
+    if (c->kind == CTN_PETSC_INERTIA) PCALL(MatMumpsGetInfog(c->F, 28, zero));
 done:
     return rc;
 }
@@ -234,10 +246,17 @@ static int factor(void *impl, const double *Kx, double shift, ctn_factor_info *i
     if (c->F) {
         MatFactorError err = MAT_FACTOR_NOERROR;
         PCALL(MatFactorGetError(c->F, &err));
+        PetscInt g1 = 0;
+        if (err != MAT_FACTOR_NOERROR) MatMumpsGetInfog(c->F, 1, &g1);
+        if (err != MAT_FACTOR_NOERROR) {       /* PETSc skips every later numeric
+                                                  factorization of a MUMPS factor whose
+                                                  INFOG(1) < 0: a fresh one */
+            PCALL(KSPDestroy(&c->ksp));
+            c->F = NULL;
+            if ((rc = make_ksp(c))) goto done;
+        }
         if (err == MAT_FACTOR_NUMERIC_ZEROPIVOT) info->ok = 0;
         else if (err != MAT_FACTOR_NOERROR) {
-            PetscInt g1 = 0;
-            MatMumpsGetInfog(c->F, 1, &g1);
             rc = ctn_error(c->ctx, CTN_ERR_IO, "MUMPS: factorization failed (INFOG(1) = %d)", (int)g1);
             goto done;
         }
@@ -333,4 +352,9 @@ const ctn_linsolve_ops ctn_petsc_ldl_ops = {
 const ctn_linsolve_ops ctn_petsc_cg_ops = {
     .name = "petsc-cg", .indefinite = 0, .create = create_cg, .destroy = destroy, .factor = factor, .solve = solve,
     .inertia = NULL, .ordering = ordering, .factor_nnz = factor_nnz, .flops = flops, .label = label,
+};
+
+const ctn_linsolve_ops ctn_petsc_inertia_ops = {
+    .name = "petsc-inertia", .indefinite = 1, .create = create_inertia, .destroy = destroy, .factor = factor,
+    .solve = solve, .inertia = inertia, .ordering = ordering, .factor_nnz = factor_nnz, .flops = flops, .label = label,
 };
