@@ -22,6 +22,7 @@ typedef struct ctn_petsc {
     VecScatter toall;
     KSP ksp;
     Mat F;                     /* MUMPS's factor (NULL for a Krylov solve) */
+    int relax;                 /* MUMPS's ICNTL(14): workspace above its estimate, % */
     char label[64];
 } ctn_petsc;
 
@@ -123,6 +124,7 @@ static int create_kind(ctn_ctx *ctx, const ctn_pattern *p, ctn_petsc_kind kind, 
     c->comm = ctn_comm_mpi_handle(ctn_ctx_comm(ctx));
     c->n = (PetscInt)p->n;
     c->colptr = p->colptr;
+    c->relax = 30;
     int rank = 0, size = 1, rc;
     MPI_Comm_rank(c->comm, &rank);
     MPI_Comm_size(c->comm, &size);
@@ -192,7 +194,9 @@ static int mumps_settings(ctn_petsc *c, double tol)
     if (!is_mumps) goto done;
     PCALL(PCFactorGetMatrix(pc, &c->F));
     PCALL(MatMumpsSetIcntl(c->F, 13, 1));
+    PCALL(MatMumpsSetIcntl(c->F, 14, c->relax));
     if (c->kind == CTN_PETSC_INERTIA) {        /* a null pivot fixed alters the solves */
+        PCALL(MatMumpsSetIcntl(c->F, 8, 0));   /* pivots of K itself, not of a scaled K */
         PCALL(MatMumpsSetIcntl(c->F, 24, 1));
         PCALL(MatMumpsSetCntl(c->F, 3, -tol));
     }
@@ -224,49 +228,71 @@ done:
     return rc;
 }
 
-static int factor(void *impl, const double *Kx, double shift, ctn_factor_info *info)
+/* K + shift I's owned rows into the matrix */
+static int set_values(ctn_petsc *c, const double *Kx, double shift)
 {
-    ctn_petsc *c = impl;
     int rc = CTN_OK;
-    info->ok = 1;
-    info->fail_col = -1;
     ctn_petsc_rows *r = &c->rows;
     ctn_petsc_rows_fill(r, Kx, shift);
-    PetscPushErrorHandler(PetscReturnErrorHandler, NULL);
     for (PetscInt i = r->lo; i < r->hi; i++) {
         PetscInt k0 = r->ptr[i - r->lo], len = r->ptr[i - r->lo + 1] - k0;
         PCALL(MatSetValues(c->A, 1, &i, len, r->col + k0, r->val + k0, INSERT_VALUES));
     }
     PCALL(MatAssemblyBegin(c->A, MAT_FINAL_ASSEMBLY));
     PCALL(MatAssemblyEnd(c->A, MAT_FINAL_ASSEMBLY));
+done:
+    return rc;
+}
+
+/* One factorization of the matrix; *err and MUMPS's INFOG(1) in *g1 when it failed,
+ * after which the factor is a fresh one (PETSc skips every later numeric factorization
+ * of a MUMPS factor whose INFOG(1) < 0). */
+static int factor_once(ctn_petsc *c, double tol, MatFactorError *err, PetscInt *g1)
+{
+    int rc = CTN_OK;
+    *err = MAT_FACTOR_NOERROR;
+    *g1 = 0;
     PCALL(KSPSetOperators(c->ksp, c->A, c->A));
-    if (c->kind != CTN_PETSC_CG && (rc = mumps_settings(c, 1e-12 * max_diag(c, Kx, shift)))) goto done;
+    if (c->kind != CTN_PETSC_CG && (rc = mumps_settings(c, tol))) goto done;
     PCALL(KSPSetUp(c->ksp));
     set_label(c);
-    if (c->F) {
-        MatFactorError err = MAT_FACTOR_NOERROR;
-        PCALL(MatFactorGetError(c->F, &err));
-        PetscInt g1 = 0;
-        if (err != MAT_FACTOR_NOERROR) MatMumpsGetInfog(c->F, 1, &g1);
-        if (err != MAT_FACTOR_NOERROR) {       /* PETSc skips every later numeric
-                                                  factorization of a MUMPS factor whose
-                                                  INFOG(1) < 0: a fresh one */
-            PCALL(KSPDestroy(&c->ksp));
-            c->F = NULL;
-            if ((rc = make_ksp(c))) goto done;
-        }
-        if (err == MAT_FACTOR_NUMERIC_ZEROPIVOT) info->ok = 0;
-        else if (err != MAT_FACTOR_NOERROR) {
-            rc = ctn_error(c->ctx, CTN_ERR_IO, "MUMPS: factorization failed (INFOG(1) = %d)", (int)g1);
-            goto done;
-        }
-        if (info->ok && c->kind == CTN_PETSC_MUMPS) {   /* LL' semantics: definite or failed */
-            PetscInt neg, zero;
-            if ((rc = inertia_of(c, &neg, &zero))) goto done;
-            info->ok = neg == 0 && zero == 0;
-        }
-    }
+    if (!c->F) goto done;
+    PCALL(MatFactorGetError(c->F, err));
+    if (*err == MAT_FACTOR_NOERROR) goto done;
+    MatMumpsGetInfog(c->F, 1, g1);
+    PCALL(KSPDestroy(&c->ksp));
+    c->F = NULL;
+    rc = make_ksp(c);
 done:
+    return rc;
+}
+
+/* MUMPS's errors of too little workspace (INFOG(1) = -8, -9, -14, -15, -17, -20):
+ * factored again with ICNTL(14) doubled, at most four times. */
+static int short_of_space(PetscInt g1) { return g1 == -8 || g1 == -9 || g1 == -14 || g1 == -15 || g1 == -17 || g1 == -20; }
+
+static int factor(void *impl, const double *Kx, double shift, ctn_factor_info *info)
+{
+    ctn_petsc *c = impl;
+    MatFactorError err = MAT_FACTOR_NOERROR;
+    PetscInt g1 = 0;
+    info->ok = 1;
+    info->fail_col = -1;
+    PetscPushErrorHandler(PetscReturnErrorHandler, NULL);
+    int rc = set_values(c, Kx, shift);
+    for (int t = 0; !rc; t++) {
+        rc = factor_once(c, 1e-12 * max_diag(c, Kx, shift), &err, &g1);
+        if (rc || !short_of_space(g1) || t == 4) break;
+        c->relax *= 2;
+    }
+    if (!rc && err == MAT_FACTOR_NUMERIC_ZEROPIVOT) info->ok = 0;
+    else if (!rc && err != MAT_FACTOR_NOERROR)
+        rc = ctn_error(c->ctx, CTN_ERR_IO, "MUMPS: factorization failed (INFOG(1) = %d)", (int)g1);
+    if (!rc && info->ok && c->F && c->kind == CTN_PETSC_MUMPS) {   /* LL' semantics: definite or failed */
+        PetscInt neg, zero;
+        rc = inertia_of(c, &neg, &zero);
+        info->ok = neg == 0 && zero == 0;
+    }
     PetscPopErrorHandler();
     return rc;
 }
