@@ -62,6 +62,8 @@ int ctn_app_mpi_init(int *argc, char ***argv)
 
 int ctn_app_mpi_rank(void) { return job.par ? ctn_parallel_rank(job.par) : 0; }
 
+int ctn_app_mpi_size(void) { return job.par ? ctn_parallel_size(job.par) : 1; }
+
 int ctn_app_mpi_attach(ctn_ctx *ctx) { return job.par ? ctn_parallel_attach(job.par, ctx) : CTN_OK; }
 
 int ctn_app_mpi_finalize(int code)
@@ -85,6 +87,8 @@ int ctn_app_mpi_init(int *argc, char ***argv)
 }
 
 int ctn_app_mpi_rank(void) { return 0; }
+
+int ctn_app_mpi_size(void) { return 1; }
 
 int ctn_app_mpi_attach(ctn_ctx *ctx)
 {

@@ -12,7 +12,9 @@
 #   bad_input       a malformed model on 2 ranks: one message, naming file:line, and
 #                   every rank exits 2 (mpirun's exit code is the largest);
 #   output_dir      -o DIR on 2 ranks: the result set written once, equal to the serial;
-#   petsc_options   --petsc -ksp_type cg -pc_type gamg ... and linear_solver=petsc-cg.
+#   petsc_options   --petsc -ksp_type cg -pc_type jacobi ... and linear_solver=petsc-cg;
+#   batch           `catena batch` of three models on 2 ranks: each result.json the
+#                   serial solve's bytes.
 # Two models are compared by their verdicts only (converged, reason, stable), their
 # answers being round-off: tests/models/trust/paper_E2e14.cable (E = 2e14: the forces
 # are resolved to 1e-6 by any solver, the round-off floor) and the mode shapes of
@@ -114,5 +116,20 @@ grep -q "linear_solver=petsc-cg" "$T/cg.cable" || echo "solve linear_solver=pets
 grep -q '"linear_solver":	"petsc-cg-gamg"' "$T/par.json" || WHY+=("petsc-cg: $(grep linear_solver "$T/par.json")")
 out=$(python3 tests/cli/lib/mpi_compare.py "$T/serial.json" "$T/par.json" 2 2>&1) || WHY+=("petsc-cg: $out")
 finish petsc_options
+
+# catena batch on 2 ranks: every model's result set, the serial solve's bytes
+printf '%s\n' "# three models" examples/paper/s250.8777.cable examples/catenary/net.cable "" \
+    examples/springs/elastic_support.cable >"$T/list"
+"${MPIRUN[@]}" -n 2 "$BIN" batch "$T/list" -o "$T/batch" >"$T/out" 2>&1 || WHY+=("batch: exit $?: $(head -c 300 "$T/out")")
+i=0
+for m in s250.8777 net elastic_support; do
+    d=$(printf '%s/%05d_%s' "$T/batch" "$i" "$m")
+    src=$(sed -n "$((i + 2 + (i == 2)))p" "$T/list")
+    "$BIN" solve "$src" -q -o "$T/one_$i" >/dev/null 2>&1
+    cmp -s "$d/result.json" "$T/one_$i/result.json" || WHY+=("batch: $d/result.json is not the serial one")
+    i=$((i + 1))
+done
+grep -q "^batch: 3 models over 2 ranks" "$T/out" || WHY+=("batch: $(head -c 200 "$T/out")")
+finish batch
 
 cli_summary
