@@ -21,6 +21,7 @@ int ctn_app_blas_capped(void);
 
 int ctn_cmd_solve(int argc, char **argv);
 int ctn_cmd_formfind(int argc, char **argv);
+int ctn_cmd_batch(int argc, char **argv);
 
 /* The commands (help.c): one table of name, entry point and help text. */
 typedef struct ctn_app_command {
@@ -57,7 +58,19 @@ int ctn_app_model_args(const char *cmd, int argc, char **argv, ctn_model_args *a
  * 128 + the signal (130, 143). */
 void ctn_app_signals_install(void);
 int ctn_app_ctx_create(ctn_ctx **ctx);
+/* The same without the MPI job's communicator: a serial solve on one rank (batch). */
+int ctn_app_ctx_create_local(ctn_ctx **ctx);
 int ctn_app_interrupt_code(void);
+
+/* The MPI job (mpi.c): PETSc and MPI initialised when under mpirun or given options
+ * after --petsc (taken out of argv); rank 0 alone prints; the job's communicator set on
+ * a context (ctn_app_ctx_create does it); finalize returns the largest code of the job
+ * (every rank exits with it). Without PETSc: no-ops (--petsc is a usage error). */
+int ctn_app_mpi_init(int *argc, char ***argv);
+int ctn_app_mpi_rank(void);
+int ctn_app_mpi_size(void);
+int ctn_app_mpi_attach(ctn_ctx *ctx);
+int ctn_app_mpi_finalize(int code);
 
 /* Exit code for a failed library call, after printing its message to stderr. */
 int ctn_app_fail(ctn_ctx *ctx, int status);

@@ -59,7 +59,7 @@ static int emit(ctn_ctx *ctx, const ctn_model_args *a, const ctn_model *m, const
         return CTN_EXIT_NOCONV;
     }
     ctn_app_progress_phase(progress, "writing");
-    int rc = a->outdir ? ctn_write_results(ctx, a->outdir, m, s) : CTN_OK;
+    int rc = a->outdir && ctn_app_mpi_rank() == 0 ? ctn_write_results(ctx, a->outdir, m, s) : CTN_OK;
     ctn_app_progress_done(progress);
     ctn_ctx_set_progress(ctx, NULL, NULL);          /* stdout may share the terminal */
     if (!rc && a->json) {

@@ -36,6 +36,21 @@ static const ctn_app_command commands[] = {
       "            3 not converged (the last converged state is still written) or the\n"
       "            eigen-solver did not converge, 4 I/O or other error,\n"
       "            130/143 interrupted by SIGINT/SIGTERM (no output replaced)\n" },
+    { "batch", ctn_cmd_batch, "LIST -o DIR [-q]", "LIST -o DIR", "solve many models over the ranks of an MPI job",
+      "Solve the models listed in LIST (one path a line; blank lines and # comments skipped),\n"
+      "each serially with its own solve options (CHOLMOD), and write each one's result set\n"
+      "(result.json, nodes.csv, elements.csv, result.vtu) into DIR/NNNNN_NAME/ (NNNNN its\n"
+      "place in the list). Under mpirun (docs/parallel.md) rank r of N solves the models\n"
+      "r, r + N, r + 2N, ...: a parametric study over the ranks of a job.\n"
+      "\n"
+      "options (in any order):\n"
+      "  LIST           the file of model paths\n"
+      "  -o DIR         the results' directory (created if missing)\n"
+      "  -q, --quiet    print nothing on stdout\n"
+      "  -h, --help     print this help and exit\n"
+      "\n"
+      "exit codes: 0 every model converged, 1 usage, 2 a bad model, 3 a model did not\n"
+      "            converge, 4 I/O or other error (the largest over the models and ranks)\n" },
     { "compare", ctn_cmd_compare, "MODEL [--json] [-o DIR] [-q]", "MODEL [--json] [-o DIR] [-q]", "FEA of a single span against the closed forms",
       "Solve a single-span model (a `cable` directive or a chain of elements between two\n"
       "fully fixed nodes) with its own solver options and compare the FEA with the closed\n"

@@ -166,16 +166,17 @@ int main(int argc, char **argv)
     keep_heap();
     huge_pages();
     huge_heap();
-    int code = dispatch(argc, argv);
+    int code = ctn_app_mpi_init(&argc, &argv);
+    if (!code) code = dispatch(argc, argv);
     if (code == CTN_EXIT_IO) {
         fclose(stdout);
-        return code;
+        return ctn_app_mpi_finalize(code);
     }
-    if (ctn_app_flush(stdout, "stdout")) return CTN_EXIT_IO;
+    if (ctn_app_flush(stdout, "stdout")) return ctn_app_mpi_finalize(CTN_EXIT_IO);
     errno = 0;
     if (fclose(stdout)) {
         fprintf(stderr, "catena: stdout: close failed: %s\n", errno ? strerror(errno) : "I/O error");
-        return CTN_EXIT_IO;
+        code = CTN_EXIT_IO;
     }
-    return code;
+    return ctn_app_mpi_finalize(code);
 }

@@ -40,10 +40,18 @@ void ctn_app_signals_install(void)
     catch(SIGTERM);
 }
 
+int ctn_app_ctx_create_local(ctn_ctx **ctx)
+{
+    int rc = ctn_ctx_create(ctx);
+    if (!rc) ctn_ctx_set_interrupt(*ctx, poll_caught, NULL);
+    return rc ? rc : ctn_ctx_set_threads(*ctx, 0);
+}
+
 int ctn_app_ctx_create(ctn_ctx **ctx)
 {
     int rc = ctn_ctx_create(ctx);
     if (!rc) ctn_ctx_set_interrupt(*ctx, poll_caught, NULL);
+    if (!rc) rc = ctn_app_mpi_attach(*ctx);
     return rc ? rc : ctn_ctx_set_threads(*ctx, ctn_app_blas_capped() ? 1 : 0);
 }
 

@@ -27,6 +27,8 @@
  *   catena/plot.h      figures as gnuplot scripts and data files
  *   catena/formfind.h  form finding by force density: the shape that carries the
  *                      members' force densities or target forces, written as a model
+ *   catena/parallel.h  an MPI communicator on a context: the analyses on the PETSc
+ *                      linear solvers over the processes of an MPI job
  *
  * How to use it:
  *
@@ -92,5 +94,6 @@
 #include "catena/compare.h"
 #include "catena/plot.h"
 #include "catena/formfind.h"
+#include "catena/parallel.h"
 
 #endif

@@ -8,6 +8,10 @@ set -eu
 # built offline from the tree and its tests (ctest cli_python).
 pkgs="gcc binutils make cmake pkg-config libsuitesparse-dev libopenblas0-openmp libarpack2-dev liblapack-dev libcjson-dev gnuplot-nox clang libclang-rt-14-dev python3
       python3-dev python3-pip python3-setuptools python3-numpy python3-pytest"
+# petsc-dev, slepc-dev, libopenmpi-dev, openmpi-bin: the MPI build (docs/parallel.md):
+# PETSc 3.18 with MUMPS, OpenMPI 4.1, found by CMake (optional there: without them
+# catena builds as the serial program; CTN_DEPS_MPI=0 leaves them out).
+[ "${CTN_DEPS_MPI:-1}" = 1 ] && pkgs="$pkgs petsc-dev slepc-dev libopenmpi-dev openmpi-bin"
 # CTN_DEPS_VTK=1: also VTK's Python reader (76 packages), which tests/cli/vtu.sh then
 # uses besides its plain XML reader to read result.vtu back.
 [ "${CTN_DEPS_VTK:-0}" = 1 ] && pkgs="$pkgs python3-vtk9"

@@ -417,7 +417,7 @@ static int d_solve(ctn_line *l)
     static const char *const orderings[] = { "auto", "natural", "amd", "metis" };
     static const char *const methods[] = { "auto", "newton", "arclength" };
     static const char *const onoff[] = { "off", "on" };
-    static const char *const solvers[] = { "cholmod", "cholmod-ldl" };
+    static const char *const solvers[] = { "cholmod", "cholmod-ldl", "petsc", "petsc-ldl", "petsc-cg" };
     ctn_solve_options opt = *l->opt;
     int ord = (int)opt.ordering, method = (int)opt.method, ls = opt.linesearch, lin = -1, reuse = opt.reuse;
     int rc = ctn_parse_positional(l, 0, "solve [tol=T] [dtol=T] [maxit=N] [method=auto|newton|arclength] ...");
@@ -427,7 +427,7 @@ static int d_solve(ctn_line *l)
     if (!rc) rc = key_word(l, "ordering", orderings, 4, &ord);
     if (!rc) rc = key_word(l, "method", methods, 3, &method);
     if (!rc) rc = key_word(l, "linesearch", onoff, 2, &ls);
-    if (!rc) rc = key_word(l, "linear_solver", solvers, 2, &lin);
+    if (!rc) rc = key_word(l, "linear_solver", solvers, 5, &lin);
     if (!rc) rc = key_word(l, "reuse", onoff, 2, &reuse);
     if (!rc) rc = key_int(l, "threads", 0, 1024, &opt.threads);
     if (!rc) rc = key_int(l, "steps", 1, 100000, &opt.steps);

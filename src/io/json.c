@@ -8,6 +8,7 @@
 #include "io/jsonw.h"
 #include "io/writer.h"
 #include "catena/io.h"
+#include "catena/parallel.h"
 
 #include <math.h>
 #include <string.h>
@@ -71,6 +72,11 @@ static void put_summary(json_writer *jw, const ctn_solution *s)
     ctn_jw_string(j, "blas", sum.blas);
     ctn_jw_number(j, "threads", sum.threads);
     ctn_jw_number(j, "solve_threads", sum.solve_threads);
+    const char *ls = ctn_solution_linear_solver(s);
+    if (ctn_solution_ranks(s) > 1 || !strncmp(ls, "petsc", 5)) {   /* an MPI or PETSc run */
+        ctn_jw_number(j, "ranks", ctn_solution_ranks(s));
+        ctn_jw_string(j, "linear_solver", ls);
+    }
     ctn_jw_object(j, "units");
     ctn_jw_string(j, "force", ctn_model_force_unit(jw->w.m));
     ctn_jw_string(j, "length", ctn_model_length_unit(jw->w.m));

@@ -1,6 +1,7 @@
 /* Linear solver objects: the registry and the calls that dispatch to a backend. */
 #include "linalg/linsolve.h"
 #include "core/threads.h"
+#include "dist/comm.h"
 
 #include <string.h>
 #include <time.h>
@@ -31,7 +32,30 @@ static double cpu_clock(clockid_t id)
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
 }
 
-static const ctn_linsolve_ops *const solvers[] = { &ctn_cholmod_ll_ops, &ctn_cholmod_ldl_ops };
+static const ctn_linsolve_ops *const solvers[] = {
+    &ctn_cholmod_ll_ops, &ctn_cholmod_ldl_ops,
+#ifdef CTN_HAVE_PETSC
+    &ctn_petsc_mumps_ops, &ctn_petsc_ldl_ops, &ctn_petsc_cg_ops, &ctn_petsc_inertia_ops,
+#endif
+};
+
+const char *ctn_linsolve_default(const ctn_ctx *ctx, const char *name)
+{
+    const ctn_comm *c = ctn_ctx_comm(ctx);
+    int mpi = !strcmp(c->ops->name, "mpi") && ctn_linsolve_find("petsc");
+    if (name && !mpi && !strcmp(name, "cholmod-inertia")) return "cholmod-ldl";
+    if (!name || !mpi) return name;
+    return !strcmp(name, "cholmod")          ? "petsc"
+           : !strcmp(name, "cholmod-ldl")    ? "petsc-ldl"
+           : !strcmp(name, "cholmod-inertia") ? "petsc-inertia"
+                                              : name;
+}
+
+const char *ctn_linsolve_label(const ctn_linsolve *s)
+{
+    const char *l = s->ops->label ? s->ops->label(s->impl) : NULL;
+    return l && *l ? l : s->ops->name;
+}
 
 const ctn_linsolve_ops *ctn_linsolve_find(const char *name)
 {

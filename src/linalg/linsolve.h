@@ -88,12 +88,22 @@ typedef struct ctn_linsolve_ops {
     int (*factor_feed)(void *impl, const double *Kx, double shift, ctn_feed *feed, ctn_factor_info *info);
     /* Optional (NULL: one): the threads of the last solve. */
     int (*solve_threads)(const void *impl);
+    /* Optional (NULL: the name): what the results call the solver used ("petsc-mumps",
+     * "petsc-cg-gamg": the PETSc types the options chose). */
+    const char *(*label)(const void *impl);
 } ctn_linsolve_ops;
 
 typedef struct ctn_linsolve ctn_linsolve;
 
 /* The registered solver of that name, NULL if none. */
 const ctn_linsolve_ops *ctn_linsolve_find(const char *name);
+/* The solver an analysis of ctx uses for the one it names ("cholmod" or "cholmod-ldl",
+ * a strategy's default or the file's; "cholmod-inertia": the stability check's count,
+ * "cholmod-ldl" in one process): on an MPI communicator (dist/comm_mpi.h) the PETSc one
+ * of the same kind ("petsc", "petsc-ldl", "petsc-inertia"), else the name itself. */
+const char *ctn_linsolve_default(const ctn_ctx *ctx, const char *name);
+/* The solver's label (ops->label, else its name). */
+const char *ctn_linsolve_label(const ctn_linsolve *s);
 /* Set up solver `name` on pattern p (symbolic work, done once) for a solve that asked
  * for `threads` (its threads= option: 0 auto, 1, n; ctn_linsolve_create: 0). */
 int ctn_linsolve_create(ctn_ctx *ctx, const char *name, const ctn_pattern *p, ctn_la_ordering ord,
@@ -155,5 +165,9 @@ void ctn_blas_name(char *buf, size_t size);
 /* The backends (one file each). */
 extern const ctn_linsolve_ops ctn_cholmod_ll_ops;
 extern const ctn_linsolve_ops ctn_cholmod_ldl_ops;
+#ifdef CTN_HAVE_PETSC
+extern const ctn_linsolve_ops ctn_petsc_mumps_ops, ctn_petsc_ldl_ops, ctn_petsc_cg_ops,   /* backends/petsc/ */
+    ctn_petsc_inertia_ops;
+#endif
 
 #endif

@@ -74,14 +74,18 @@ static int setup(ctn_problem *p)
     if (rc) return rc;
     p->ns = p->a->map.nstate;
     p->ndof = p->a->ndof;
-    ctn_layout_serial(&p->eq, p->ndof, ctn_ctx_comm(p->ctx));   /* one process: all owned */
-    ctn_layout_serial(&p->st, p->ns, ctn_ctx_comm(p->ctx));
+    /* every process holds every entry (one process, or the replicated model of an MPI
+       job, docs/parallel.md): all owned, reductions local, the serial communicator's */
+    ctn_layout_serial(&p->eq, p->ndof, NULL);
+    ctn_layout_serial(&p->st, p->ns, NULL);
     if ((rc = alloc_vectors(p))) return rc;
     p->lref = model_size(p->m);
     p->kscale = p->a->kscale;
     if ((rc = ctn_follow_create(p))) return rc;
+    const char *name = ctn_linsolve_default(p->ctx, p->opt.linear_solver ? p->opt.linear_solver
+                                                                        : p->strategy->linear_solver);
+    p->ls_name = name;
     if (p->ndof == 0) return CTN_OK;        /* statically determinate: nothing to factor */
-    const char *name = p->opt.linear_solver ? p->opt.linear_solver : p->strategy->linear_solver;
     ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
     if ((rc = ctn_linsolve_create_threads(p->ctx, name, &pat, ctn_la_ordering_of(p->opt.ordering), p->opt.threads, &p->ls))) return rc;
     int reuse = p->strategy->globalized && p->opt.reuse && !p->fl && !ctn_linsolve_type(p->ls)->indefinite;

@@ -46,6 +46,7 @@ struct ctn_problem {
     const ctn_strategy_ops *strategy;
     ctn_asm *a;
     ctn_linsolve *ls;
+    const char *ls_name;       /* the linear solver's name (none created without DOFs) */
     double *Kx;                /* nnz: the tangent's values, pattern order */
     size_t ns, ndof;           /* state length, equations */
     ctn_layout eq, st;         /* the layouts of the equations (free DOFs) and of the state
@@ -116,6 +117,9 @@ int ctn_problem_reuse_step(ctn_problem *p, double target, double rmax, int *ok);
  * equation in *fail_col. Without a shift, the factorization the last residual started
  * beside its assembly (p->overlap) is the one waited for. */
 int ctn_problem_factor(ctn_problem *p, double shift, int *posdef, long *fail_col);
+/* The column where CHOLMOD's LL' of K + shift I fails (-1 if it does not, or on an
+ * error, which is not recorded): for a solver that names none (locate.c). */
+long ctn_problem_fail_col(ctn_problem *p, double shift);
 /* Drop the factorization the last residual started, if it runs (no factorization
  * wanted: a converged state, a shifted one): the factor held is then of no matrix. Every
  * use of p->Kx or p->ls but ctn_problem_factor settles first. */

@@ -64,6 +64,8 @@ struct ctn_solution {
                                   temperatures are the case's), else 0 */
     int threads;               /* the threads= option of the solve that made it (0 auto,
                                   1, n): the writers ask the thread policy with it */
+    int ranks;                 /* the processes it was solved on (catena/parallel.h) */
+    char linsolver[48];        /* the linear solver's label (ctn_linsolve_label), "" none */
 };
 
 int ctn_solution_create(ctn_ctx *ctx, size_t nn, size_t ne, ctn_solution **out);

@@ -120,7 +120,7 @@ static int factor_shifted(ctn_modal *md, const ctn_solution *s)
     md->ls = p->ls;
     if (!rc && !info.ok) {
         ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
-        rc = ctn_linsolve_create_threads(p->ctx, "cholmod-ldl", &pat, ctn_la_ordering_of(p->opt.ordering), p->opt.threads, &md->ldl);
+        rc = ctn_linsolve_create_threads(p->ctx, ctn_linsolve_default(p->ctx, "cholmod-ldl"), &pat, ctn_la_ordering_of(p->opt.ordering), p->opt.threads, &md->ldl);
         if (!rc) rc = ctn_linsolve_factor(md->ldl, md->Ax, 0.0, &info);
         md->sum.factorizations++;
         md->ls = md->ldl;

@@ -55,6 +55,23 @@ static int weakest_mode(ctn_problem *p, ctn_linsolve *ldl, ctn_stability *out)
     return CTN_OK;
 }
 
+/* A solver that names no pivot (MUMPS, which pivots) found a zero one: CHOLMOD's LDL'
+ * without pivoting names its column, as in one process (every process holds the whole
+ * tangent: docs/parallel.md). */
+static int locate_zero(ctn_problem *p, ctn_stability *out)
+{
+    ctn_linsolve *ldl = NULL;
+    ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
+    ctn_factor_info info;
+    long neg = 0, zero = 0, first = -1;
+    int rc = ctn_linsolve_create_threads(p->ctx, "cholmod-ldl", &pat, CTN_LA_ORDER_AUTO, p->opt.threads, &ldl);
+    if (!rc) rc = ctn_linsolve_factor(ldl, p->Kx, 0.0, &info);
+    if (!rc && info.ok) rc = ctn_linsolve_inertia(ldl, 1e-12 * ctn_problem_max_diag(p), &neg, &zero, &first);
+    locate(p, !rc && info.ok ? first : info.fail_col, out);
+    ctn_linsolve_destroy(&ldl);
+    return rc;
+}
+
 /* Not definite: count the inertia with LDL'. */
 static int inertia(ctn_problem *p, ctn_stability *out)
 {
@@ -62,12 +79,13 @@ static int inertia(ctn_problem *p, ctn_stability *out)
     ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
     ctn_factor_info info;
     long zero = 0, first = -1;
-    int rc = ctn_linsolve_create_threads(p->ctx, "cholmod-ldl", &pat, CTN_LA_ORDER_AUTO, p->opt.threads, &ldl);
+    int rc = ctn_linsolve_create_threads(p->ctx, ctn_linsolve_default(p->ctx, "cholmod-inertia"), &pat, CTN_LA_ORDER_AUTO, p->opt.threads, &ldl);
     if (!rc) rc = ctn_linsolve_factor(ldl, p->Kx, 0.0, &info);
     if (!rc && info.ok) {
         rc = ctn_linsolve_inertia(ldl, 1e-12 * ctn_problem_max_diag(p), &out->negative, &zero, &first);
         out->semidefinite = !rc && out->negative == 0 && zero > 0;
         locate(p, first, out);
+        if (!rc && out->semidefinite && first < 0) rc = locate_zero(p, out);
         if (!rc && out->negative > 0) rc = weakest_mode(p, ldl, out);
     } else if (!rc) {
         out->semidefinite = 1;                      /* an exactly zero pivot */

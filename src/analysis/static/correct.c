@@ -67,6 +67,8 @@ static int factor(corrector *c, int *ok)
         int rc = ctn_problem_factor(c->e, c->mu, ok, &col);
         if (rc || *ok) return rc;
         if (!c->globalized || c->mu > 1e12 * c->e->kscale) {
+            if (col < 0) col = ctn_problem_fail_col(c->e, c->mu);   /* a solver that pivots */
+            if (col < 0) return CTN_OK;
             c->s->sum.fail_node = c->e->m->nodes.v[c->e->a->map.dof_node[col]].id;
             c->s->sum.fail_dir = c->e->a->map.dof_dir[col];
             return CTN_OK;

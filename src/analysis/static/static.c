@@ -8,6 +8,7 @@
 #include "problem/la_options.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 int ctn_problem_run_step(ctn_problem *p, ctn_solution *s, size_t k, int sub, double *d, double *dstep)
@@ -221,6 +222,8 @@ static int static_solve(ctn_problem *p, ctn_solution **out)
         s->sum.flops_factor = p->ls ? ctn_linsolve_flops(p->ls) : 0;
         s->sum.solve_threads = p->ls ? ctn_linsolve_solve_threads(p->ls) : 1;
         ctn_blas_name(s->sum.blas, sizeof s->sum.blas);
+        s->ranks = ctn_comm_size(ctn_ctx_comm(p->ctx));
+        snprintf(s->linsolver, sizeof s->linsolver, "%s", p->ls ? ctn_linsolve_label(p->ls) : p->ls_name ? p->ls_name : "");
     }
     ctn_free(d);
     p->sum = NULL;

@@ -1,0 +1,134 @@
+/* The MPI communicator (comm_mpi.h) and the public handle that sets it on a context
+ * (catena/parallel.h). Reductions gather every process's values and combine them in rank
+ * order on every process: the same bits everywhere, whatever MPI's own reduction tree
+ * would have done, so that a decision taken on a reduced value (a converged residual) is
+ * the same decision on every rank. */
+#include "dist/comm_mpi.h"
+
+#include "catena/parallel.h"
+#include "core/ctx.h"
+
+#include <math.h>
+
+typedef struct mpi_comm {
+    MPI_Comm comm;             /* a duplicate of the caller's: our messages are ours */
+    int rank, size;
+    double *buf;               /* size * CTN_MPI_REDUCE_MAX gathered values */
+} mpi_comm;
+
+#define CTN_MPI_REDUCE_MAX 16  /* values per reduction in one exchange */
+
+struct ctn_parallel {
+    ctn_ctx *ctx;
+    ctn_comm comm;
+    mpi_comm impl;
+    const ctn_comm *before;    /* the context's communicator before (restored) */
+};
+
+static int mpi_rank(const void *impl) { return ((const mpi_comm *)impl)->rank; }
+
+static int mpi_size(const void *impl) { return ((const mpi_comm *)impl)->size; }
+
+static double combine(double a, double b, ctn_reduce_op op)
+{
+    if (op == CTN_REDUCE_SUM || isnan(a) || isnan(b)) return a + b;   /* NaN stays NaN */
+    if (op == CTN_REDUCE_MAX) return a > b ? a : b;
+    return a < b ? a : b;
+}
+
+/* v <- op over the ranks, in rank order (a NaN anywhere stays NaN) */
+static int mpi_allreduce(void *impl, double *v, size_t n, ctn_reduce_op op)
+{
+    mpi_comm *c = impl;
+    for (size_t k0 = 0; k0 < n; k0 += CTN_MPI_REDUCE_MAX) {
+        int m = (int)(n - k0 < CTN_MPI_REDUCE_MAX ? n - k0 : CTN_MPI_REDUCE_MAX);
+        if (MPI_Allgather(v + k0, m, MPI_DOUBLE, c->buf, m, MPI_DOUBLE, c->comm) != MPI_SUCCESS) return CTN_ERR_IO;
+        for (int i = 0; i < m; i++) {
+            double x = c->buf[i];
+            for (int r = 1; r < c->size; r++) x = combine(x, c->buf[(size_t)r * (size_t)m + (size_t)i], op);
+            v[k0 + (size_t)i] = x;
+        }
+    }
+    return CTN_OK;
+}
+
+/* The replicated engine keeps no ghosts (every rank holds every entry): an exchange
+ * asked for is a layout this engine does not make. */
+static int mpi_ghosts(void *impl, const ctn_layout *lay, double *v)
+{
+    (void)impl;
+    (void)lay;
+    (void)v;
+    return CTN_ERR_INVALID;
+}
+
+const ctn_comm_ops ctn_comm_mpi_ops = { "mpi", mpi_rank, mpi_size, mpi_allreduce, mpi_ghosts };
+
+MPI_Comm ctn_comm_mpi_handle(const ctn_comm *c)
+{
+    return c && c->ops == &ctn_comm_mpi_ops ? ((const mpi_comm *)c->impl)->comm : MPI_COMM_SELF;
+}
+
+int ctn_parallel_create(ctn_ctx *ctx, const void *mpi_comm_ptr, ctn_parallel **out)
+{
+    int init = 0;
+    if (!ctx || !out) return CTN_ERR_INVALID;
+    *out = NULL;
+    if (MPI_Initialized(&init) != MPI_SUCCESS || !init)
+        return ctn_error(ctx, CTN_ERR_INVALID, "ctn_parallel_create: MPI is not initialised (the caller initialises it)");
+    ctn_parallel *p = ctn_calloc(ctx, 1, sizeof *p);
+    if (!p) return CTN_ERR_NOMEM;
+    MPI_Comm given = mpi_comm_ptr ? *(const MPI_Comm *)mpi_comm_ptr : MPI_COMM_WORLD;
+    if (MPI_Comm_dup(given, &p->impl.comm) != MPI_SUCCESS) {
+        ctn_free(p);
+        return ctn_error(ctx, CTN_ERR_IO, "ctn_parallel_create: MPI_Comm_dup failed");
+    }
+    MPI_Comm_rank(p->impl.comm, &p->impl.rank);
+    MPI_Comm_size(p->impl.comm, &p->impl.size);
+    p->impl.buf = ctn_calloc(ctx, (size_t)p->impl.size * CTN_MPI_REDUCE_MAX, sizeof(double));
+    if (!p->impl.buf) {
+        MPI_Comm_free(&p->impl.comm);
+        ctn_free(p);
+        return CTN_ERR_NOMEM;
+    }
+    p->ctx = ctx;
+    p->comm = (ctn_comm){ &ctn_comm_mpi_ops, &p->impl };
+    p->before = ctx->comm;
+    ctn_ctx_set_comm(ctx, &p->comm);
+    *out = p;
+    return CTN_OK;
+}
+
+int ctn_parallel_attach(ctn_parallel *p, ctn_ctx *ctx)
+{
+    if (!p || !ctx) return CTN_ERR_INVALID;
+    ctn_ctx_set_comm(ctx, &p->comm);
+    return CTN_OK;
+}
+
+void ctn_parallel_destroy(ctn_parallel **pp)
+{
+    if (!pp || !*pp) return;
+    ctn_parallel *p = *pp;
+    if (p->ctx->comm == &p->comm) ctn_ctx_set_comm(p->ctx, p->before);
+    int fin = 0;
+    MPI_Finalized(&fin);
+    if (!fin) MPI_Comm_free(&p->impl.comm);
+    ctn_free(p->impl.buf);
+    ctn_free(p);
+    *pp = NULL;
+}
+
+int ctn_parallel_rank(const ctn_parallel *p) { return p ? p->impl.rank : 0; }
+
+int ctn_parallel_size(const ctn_parallel *p) { return p ? p->impl.size : 1; }
+
+int ctn_parallel_max(ctn_parallel *p, int *v)
+{
+    if (!p) return CTN_OK;
+    int in = *v;
+    if (MPI_Allreduce(&in, v, 1, MPI_INT, MPI_MAX, p->impl.comm) != MPI_SUCCESS) return CTN_ERR_IO;
+    return CTN_OK;
+}
+
+int ctn_parallel_available(void) { return 1; }

@@ -1,0 +1,135 @@
+#!/usr/bin/env bash
+# tests/cli/mpi.sh CATENA: the MPI build (registered only when PETSc and MPI are found,
+# CMakeLists.txt; docs/parallel.md). `mpirun -n N catena solve MODEL --json` against the
+# serial CHOLMOD run of the same model (tests/cli/lib/mpi_compare.py: every number of
+# the results to 1e-10 relative, the verdicts equal, modes to 1e-8, the keys the same
+# plus "ranks" = N and a PETSc "linear_solver", the same exit code):
+#   models_2        a representative subset on 2 ranks (a single cable, nets, pulleys,
+#                   beams with LDL', slack members, groups, modes, a semi-definite
+#                   state, a run that does not converge, buckling); every example and
+#                   test model with CTN_MPI_ALL=1 (all pass, 2026-12-03);
+#   models_1_3      a beam model and arc-length from a singular start on 1 and 3 ranks;
+#   bad_input       a malformed model on 2 ranks: one message, naming file:line, and
+#                   every rank exits 2 (mpirun's exit code is the largest);
+#   output_dir      -o DIR on 2 ranks: the result set written once, equal to the serial;
+#   petsc_options   --petsc -ksp_type cg -pc_type jacobi ... and linear_solver=petsc-cg;
+#   batch           `catena batch` of three models on 2 ranks: each result.json the
+#                   serial solve's bytes.
+# Two models are compared by their verdicts only (converged, reason, stable), their
+# answers being round-off: tests/models/trust/paper_E2e14.cable (E = 2e14: the forces
+# are resolved to 1e-6 by any solver, the round-off floor) and the mode shapes of
+# tests/models/modes/slack_node.cable (a node held by slack members: zero modes whose
+# subspace the other shapes are not unique against).
+# ctest-cost: 90
+set -u
+
+. "$(dirname "$0")/lib/common.sh"
+cli_init mpi "${1:-}"
+
+if [ "$have_python" = 0 ] || ! command -v mpirun >/dev/null 2>&1; then
+    echo "mpi.sh: no python3 or mpirun: skipped"
+    cli_summary
+    exit $?
+fi
+MPIRUN=(mpirun --allow-run-as-root --oversubscribe)
+export OMPI_MCA_btl_vader_single_copy_mechanism=none   # containers without CMA
+
+# one model on n ranks against the serial run (its JSON in $T/serial.json, exit $2)
+check_ranks() {
+    local model=$1 want=$2 n=$3 extra=${4:-}
+    "${MPIRUN[@]}" -n "$n" "$BIN" solve "$model" --json >"$T/par.json" 2>"$T/par.err"
+    local got=$?
+    [ "$got" = "$want" ] || WHY+=("$model on $n ranks: exit $got, serial $want: $(head -c 300 "$T/par.err")")
+    local out
+    out=$(python3 tests/cli/lib/mpi_compare.py "$T/serial.json" "$T/par.json" "$n" $extra 2>&1) ||
+        WHY+=("$model on $n ranks: $out")
+}
+
+serial() {
+    "$BIN" solve "$1" --json >"$T/serial.json" 2>/dev/null
+}
+
+verdict_flag() {
+    case $1 in *paper_E2e14.cable|*slack_node.cable) echo --verdict ;; esac
+}
+
+# every model on 2 ranks with CTN_MPI_ALL=1 (about 6 minutes on a busy 2-core machine:
+# each mpirun costs seconds), else a representative subset
+if [ "${CTN_MPI_ALL:-0}" = 1 ]; then
+    models_2=(examples/*/*.cable tests/models/*/*.cable)
+else
+    models_2=(examples/paper/s250.8777.cable examples/catenary/net.cable examples/catenary/pulleys.cable
+        examples/beam/rollup.cable examples/robust/net_slack.cable examples/design/hypar_snow.cable
+        tests/models/modes/net4.cable tests/models/trust/slack_held_node.cable
+        tests/models/trust/paper_E2e22.cable tests/models/buckling/bar_springs.cable)
+fi
+for f in "${models_2[@]}"; do
+    serial "$f"
+    want=$?
+    check_ranks "$f" "$want" 2 "$(verdict_flag "$f")"
+done
+finish models_2
+
+for f in examples/beam/guyed_mast.cable tests/models/trust/arclength_singular_start.cable; do
+    serial "$f"
+    want=$?
+    for n in 1 3; do check_ranks "$f" "$want" "$n" "$(verdict_flag "$f")"; done
+done
+finish models_1_3
+
+# bad input: reported once with file:line, the same exit code (2) on every rank
+bad=tests/errors/area_negative.cable
+"$BIN" solve "$bad" --json >/dev/null 2>"$T/ser.err"
+want=$?
+"${MPIRUN[@]}" -n 2 "$BIN" solve "$bad" --json >"$T/out" 2>"$T/err"
+got=$?
+[ "$want" = 2 ] && [ "$got" = 2 ] || WHY+=("bad input: exit $got on 2 ranks, $want serial (2 expected)")
+n=$(grep -c "^catena: $bad:[0-9]*:" "$T/err")
+[ "$n" = 1 ] || WHY+=("bad input: $n messages naming $bad:LINE on 2 ranks (1 expected): $(head -c 300 "$T/err")")
+grep -qF "$(head -1 "$T/ser.err")" "$T/err" || WHY+=("bad input: not the serial message")
+[ -s "$T/out" ] && WHY+=("bad input: something on stdout")
+finish bad_input
+
+# -o DIR: written once (rank 0), the same files as the serial run's
+m=examples/catenary/net.cable
+"$BIN" solve "$m" -q -o "$T/ser" >/dev/null 2>&1
+"${MPIRUN[@]}" -n 2 "$BIN" solve "$m" -q -o "$T/par" >/dev/null 2>&1 || WHY+=("output_dir: exit $?")
+for f in nodes.csv elements.csv; do
+    [ -s "$T/par/$f" ] || WHY+=("output_dir: no $f")
+done
+python3 tests/cli/lib/mpi_compare.py "$T/ser/result.json" "$T/par/result.json" 2 >"$T/cmp" 2>&1 ||
+    WHY+=("output_dir: result.json: $(head -c 300 "$T/cmp")")
+[ "$(ls "$T/par" | wc -l)" = "$(ls "$T/ser" | wc -l)" ] || WHY+=("output_dir: $(ls "$T/par") against $(ls "$T/ser")")
+finish output_dir
+
+# PETSc options passed through, and the iterative solver by name
+m=examples/paper/s250.8777.cable
+serial "$m"
+"${MPIRUN[@]}" -n 2 "$BIN" solve "$m" --json --petsc -ksp_type cg -pc_type jacobi -ksp_rtol 1e-14 >"$T/par.json" 2>"$T/par.err" ||
+    WHY+=("petsc_options: exit $?: $(head -c 300 "$T/par.err")")
+grep -q '"linear_solver":	"petsc-cg-jacobi"' "$T/par.json" || WHY+=("petsc_options: $(grep linear_solver "$T/par.json")")
+out=$(python3 tests/cli/lib/mpi_compare.py "$T/serial.json" "$T/par.json" 2 2>&1) || WHY+=("petsc_options: $out")
+sed 's/^solve /solve linear_solver=petsc-cg /' "$m" >"$T/cg.cable"
+grep -q "linear_solver=petsc-cg" "$T/cg.cable" || echo "solve linear_solver=petsc-cg" >>"$T/cg.cable"
+"${MPIRUN[@]}" -n 2 "$BIN" solve "$T/cg.cable" --json >"$T/par.json" 2>"$T/par.err" ||
+    WHY+=("petsc-cg: exit $?: $(head -c 300 "$T/par.err")")
+grep -q '"linear_solver":	"petsc-cg-gamg"' "$T/par.json" || WHY+=("petsc-cg: $(grep linear_solver "$T/par.json")")
+out=$(python3 tests/cli/lib/mpi_compare.py "$T/serial.json" "$T/par.json" 2 2>&1) || WHY+=("petsc-cg: $out")
+finish petsc_options
+
+# catena batch on 2 ranks: every model's result set, the serial solve's bytes
+printf '%s\n' "# three models" examples/paper/s250.8777.cable examples/catenary/net.cable "" \
+    examples/springs/elastic_support.cable >"$T/list"
+"${MPIRUN[@]}" -n 2 "$BIN" batch "$T/list" -o "$T/batch" >"$T/out" 2>&1 || WHY+=("batch: exit $?: $(head -c 300 "$T/out")")
+i=0
+for m in s250.8777 net elastic_support; do
+    d=$(printf '%s/%05d_%s' "$T/batch" "$i" "$m")
+    src=$(sed -n "$((i + 2 + (i == 2)))p" "$T/list")
+    "$BIN" solve "$src" -q -o "$T/one_$i" >/dev/null 2>&1
+    cmp -s "$d/result.json" "$T/one_$i/result.json" || WHY+=("batch: $d/result.json is not the serial one")
+    i=$((i + 1))
+done
+grep -q "^batch: 3 models over 2 ranks" "$T/out" || WHY+=("batch: $(head -c 200 "$T/out")")
+finish batch
+
+cli_summary
