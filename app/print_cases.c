@@ -40,6 +40,15 @@ void ctn_print_cases(FILE *out, const ctn_model *m, const ctn_solution *s)
         if (lo < gmin) gmin = lo, nmin = name;
     }
     if (isfinite(gmax)) fprintf(out, "envelope: max force %.10g (%s), min force %.10g (%s)\n", gmax, nmax, gmin, nmin);
+    for (size_t i = 0; i < n; i++) {
+        ctn_step_result st;
+        int comb = 0;
+        if (ctn_model_case_info(m, i, NULL, NULL, &comb) || ctn_solution_step(ctn_solution_case(s, i), 0, &st) ||
+            st.reason == CTN_CONVERGED)
+            continue;
+        fprintf(out, "not converged: %s '%s': %s at load factor %.6g (its last converged state is written)\n",
+                comb ? "combination" : "case", st.name, ctn_reason_name(st.reason), st.load_factor);
+    }
 }
 
 int ctn_cases_converged(const ctn_solution *s, const char **failed)

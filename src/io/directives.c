@@ -99,8 +99,9 @@ static int d_section(ctn_line *l)
     if (!rc) rc = ctn_parse_section_shape(l, &spec, &shaped);
     if (!rc) rc = ctn_parse_key_num(l, 2, "A", !shaped, &spec.A);
     if (!rc) rc = ctn_parse_key_num(l, 2, "w", 0, &spec.w);
-    if (!rc && ctn_parse_key(l, 2, "mass")) {
-        rc = ctn_parse_key_num(l, 2, "mass", 1, &spec.mass);
+    const char *mv = rc ? NULL : ctn_parse_key(l, 2, "mass");
+    if (mv) {
+        rc = ctn_parse_num(l, "'mass' per length", mv, &spec.mass);
         if (!rc && !(spec.mass >= 0)) return ctn_parse_error(l, "section: mass must be >= 0 (found %g)", spec.mass);
     }
     if (!rc) rc = ctn_parse_key_num(l, 2, "mbl", 0, &spec.mbl);

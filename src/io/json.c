@@ -45,13 +45,27 @@ static void put_stability(ctn_jw *j, const ctn_solution *s)
     ctn_jw_end(j);
 }
 
+/* The name of the first case or combination of s that did not converge; NULL if none. */
+static const char *failed_case(const ctn_solution *s)
+{
+    for (size_t i = 0; i < ctn_solution_case_count(s); i++) {
+        ctn_step_result st;
+        if (!ctn_solution_step(ctn_solution_case(s, i), 0, &st) && st.reason != CTN_CONVERGED) return st.name;
+    }
+    return NULL;
+}
+
+/* "converged": the steps and every case and combination ("failed_case" names the first
+ * that did not); "reason": the steps'. */
 static void put_summary(json_writer *jw, const ctn_solution *s)
 {
     ctn_jw *j = &jw->j;
     ctn_solve_summary sum;
     size_t n;
+    const char *failed = failed_case(s);
     ctn_solution_summary(s, &sum);
-    ctn_jw_bool(j, "converged", sum.reason == CTN_CONVERGED);
+    ctn_jw_bool(j, "converged", sum.reason == CTN_CONVERGED && !failed);
+    if (failed) ctn_jw_string(j, "failed_case", failed);
     ctn_jw_string(j, "reason", ctn_reason_name(sum.reason));
     ctn_jw_number(j, "iterations", sum.iterations);
     const double *h = ctn_solution_residual_history(s, &n);

@@ -34,8 +34,9 @@ int ctn_parse_int(const ctn_line *l, const char *what, const char *tok, int *out
 /* A real number; one the value may carry a unit converted to the model's units
  * (`200GPa`), when `what` names a quantity with a dimension (unit_keys.c). */
 int ctn_parse_num(const ctn_line *l, const char *what, const char *tok, double *out);
-/* The dimension force^f length^l of the value named `what`; 0 if it takes no unit. */
-int ctn_parse_unit_dim(const char *what, int *f, int *l);
+/* The dimension force^f length^l second^t of the value named `what` (t = 2: a mass);
+ * 0 if it takes no unit. */
+int ctn_parse_unit_dim(const char *what, int *f, int *l, int *t);
 /* key=value lookup among tokens from index `from`; NULL if absent (marks it used). */
 const char *ctn_parse_key(ctn_line *l, int from, const char *key);
 /* A flag token (no '='), e.g. "tension-only"; 1 if present (marks it used). */

@@ -94,6 +94,10 @@ typedef struct ctn_lload {
     int line;
     int drag;        /* 1: wind drag, q_w per unit length of the chord projected on the
                         plane normal to the wind, following the geometry (follow.c) */
+    double dir[3];   /* drag: the wind's unit direction */
+    double cdp, d;   /* drag: cd p [force/length^2] and the bare diameter d [length]:
+                        q_w = cdp d, or cdp (d + 2 t) on iced elements */
+    double t;        /* ice: the sleeve's thickness [length] (0: another lineload) */
 } ctn_lload;
 
 /* A load case (cases.c): the load records tagged CTN_CASE_TAG0 + its index, solved from
@@ -241,9 +245,9 @@ static inline int ctn_model_load_tag(const ctn_model *m)
 }
 
 /* Convert v, carrying `unit`, to the model's units for a quantity of force^f length^l
- * (units.c); 1 with a message when the unit is unknown, of another dimension, or the
- * model has no units. */
-int ctn_model_convert(ctn_model *m, const char *unit, int f, int l, double *v, char *msg, size_t size);
+ * second^t (t = 2 for masses: kg = N s^2/m) (units.c); 1 with a message when the unit is
+ * unknown, of another dimension, or the model has no units. */
+int ctn_model_convert(ctn_model *m, const char *unit, int f, int l, int t, double *v, char *msg, size_t size);
 
 /* Report an error located at the model's current origin (file:line if known). */
 int ctn_model_error(const ctn_model *m, int code, const char *fmt, ...)
@@ -265,8 +269,18 @@ void ctn_model_sel_temperatures(const ctn_model *m, const ctn_loadsel *sel, doub
 /* Add the lineloads of a selection to f (3 per node): q l0 / 2 at each end; with
  * !dead_only the winds too, on the reference geometry (lineload.c). */
 void ctn_model_add_lineloads(const ctn_model *m, const ctn_loadsel *sel, int dead_only, double *f);
-/* wind TARGET: drag q_w [force/length] along the unit direction dir (lineload.c). */
-int ctn_model_add_wind(ctn_model *m, const char *target, const double dir[3], double q);
+/* wind TARGET: drag cdp d [force/length] along the unit direction dir, cdp = cd p and d
+ * the bare diameter (lineload.c). */
+int ctn_model_add_wind(ctn_model *m, const char *target, const double dir[3], double cdp, double d);
+/* ice TARGET: the sleeve's weight q (a lineload) and its thickness t, which widens the
+ * wind's diameter to d + 2 t on the elements it covers in the same solve. */
+int ctn_model_add_ice(ctn_model *m, const char *target, const double q[3], double t);
+/* The drag per unit projected length [force/length] of wind l on element e in a
+ * selection (unweighted): cdp d, or cdp (d + 2 T) where ice of thickness T (the
+ * thickest of the selection's ice on e with a positive weight) covers it. */
+double ctn_model_drag_q(const ctn_model *m, const ctn_lload *l, const ctn_loadsel *sel, size_t e);
+/* The unit direction of wind l. */
+void ctn_lload_dir(const ctn_lload *l, double u[3]);
 /* Whether lineload l acts on element e (cable elements of its target). */
 int ctn_lload_on(const ctn_model *m, const ctn_lload *l, size_t e);
 /* Checks made when the model is solved: every lineload reaches an element, and none a
