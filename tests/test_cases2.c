@@ -10,10 +10,19 @@
  *   (b) with weight, ice weight and wind, the reactions along the wind sum to
  *       cd p (d + 2T) times the deformed chords' projections and those along gravity to
  *       (w + w_ice) L0 (1e-10: the residual's sum at the free DOFs); the wind case alone uses d, the combination
- *       ice + wind and a step after an ice step use d + 2T. */
+ *       ice + wind and a step after an ice step use d + 2T;
+ * - each step's and case's JSON `cables` (sag, max/min tension, stretched length) of a
+ *   level 200 m span of L0 = 204 m, EA = 62800 kN, w = 0.1 kN/m at three temperatures
+ *   (two steps, a case) against Irvine's elastic catenary of L0 (1 + alpha dT) and
+ *   w L0 / (L0 (1 + alpha dT)) (ctn_ecatenary_solve): the catenary element to 1e-9; the
+ *   400-element cable's sag to 1e-5 and its element forces against the closed form's
+ *   tension at the first and the middle element's mid-point to 1e-5 (the O(h^2) of the
+ *   mesh, h = 0.51 m: measured 3e-6), its stretched length to 1e-6. */
 #include "catena.h"
 #include "check.h"
 #include "model/model.h"
+
+#include <cjson/cJSON.h>
 
 #include <math.h>
 #include <stdio.h>
@@ -154,10 +163,85 @@ static void test_iced_balance(void)
     ctn_ctx_destroy(&ctx);
 }
 
+/* A level span as a 400-element cable (nodes 1-2) and a catenary element (3-4), two steps
+ * and a case at three temperatures. */
+static const char *const STATES =
+    "units kN m\ngravity 0 -1 0\nmaterial steel E=2.0e8 strain=engineering alpha=1.2e-5\n"
+    "section strand material=steel A=3.14e-4 w=0.1\nnode 1 0 0 0 fix=xyz\nnode 2 200 0 0 fix=xyz\n"
+    "node 3 0 0 50 fix=xyz\nnode 4 200 0 50 fix=xyz\ncable 1 2 section=strand n=400 length=204\n"
+    "catenary 9001 3 4 section=strand length=204\nstep install\nstep hot\ntemperature all dT=40\n"
+    "case cold from=install\ntemperature all dT=-30\nsolve tol=1e-12\n";
+
+static double num(const cJSON *o, const char *key)
+{
+    const cJSON *v = cJSON_GetObjectItemCaseSensitive(o, key);
+    CHECK_MSG(cJSON_IsNumber(v), "no number '%s'", key);
+    return cJSON_IsNumber(v) ? v->valuedouble : NAN;
+}
+
+/* The entry's two cables against the elastic catenary at temperature change dT. */
+static void check_state(ctn_ctx *ctx, const cJSON *entry, double dT)
+{
+    const double L0 = 204 * (1 + 1.2e-5 * dT), w = 0.1 * 204 / L0, h = L0 / 400;
+    ctn_ecatenary_in in = { 200, 0, w, 2.0e8 * 3.14e-4, L0 };
+    ctn_ecatenary cat;
+    double T_end = 0, T_mid = 0;
+    CHECK(ctn_ecatenary_solve(ctx, &in, &cat) == CTN_OK);
+    CHECK(ctn_ecatenary_tension_s(&cat, h / 2, &T_end) == CTN_OK);
+    CHECK(ctn_ecatenary_tension_s(&cat, L0 / 2 - h / 2, &T_mid) == CTN_OK);
+    const cJSON *cables = cJSON_GetObjectItemCaseSensitive(entry, "cables");
+    const cJSON *fe = cJSON_GetArrayItem(cables, 0), *ce = cJSON_GetArrayItem(cables, 1);
+    CHECK(cJSON_GetArraySize(cables) == 2 && fe && ce);
+    if (!fe || !ce) return;
+    printf("dT %+3.0f: sag %.10g (cable %+.1e, catenary %+.1e); T max %.10g (%+.1e, %+.1e); T min %.10g (%+.1e, "
+           "%+.1e); length %.10g (%+.1e, %+.1e)\n", dT, cat.sum.sag_mid, num(fe, "sag") / cat.sum.sag_mid - 1,
+           num(ce, "sag") / cat.sum.sag_mid - 1, cat.sum.T_max, num(fe, "max_tension") / T_end - 1,
+           num(ce, "max_tension") / cat.sum.T_max - 1, cat.sum.T_min, num(fe, "min_tension") / T_mid - 1,
+           num(ce, "min_tension") / cat.sum.T_min - 1, cat.sum.length, num(fe, "stretched_length") / cat.sum.length - 1,
+           num(ce, "stretched_length") / cat.sum.length - 1);
+    CHECK_CLOSE(num(ce, "sag"), cat.sum.sag_mid, 1e-9, 0);
+    CHECK_CLOSE(num(ce, "max_tension"), cat.sum.T_max, 1e-9, 0);
+    CHECK_CLOSE(num(ce, "min_tension"), cat.sum.T_min, 1e-9, 0);
+    CHECK_CLOSE(num(ce, "stretched_length"), cat.sum.length, 1e-9, 0);
+    CHECK_CLOSE(num(fe, "sag"), cat.sum.sag_mid, 1e-5, 0);
+    CHECK_CLOSE(num(fe, "max_tension"), T_end, 1e-5, 0);
+    CHECK_CLOSE(num(fe, "min_tension"), T_mid, 1e-5, 0);
+    CHECK_CLOSE(num(fe, "stretched_length"), cat.sum.length, 1e-6, 0);
+    CHECK_CLOSE(num(fe, "unstressed_length"), 204, 1e-12, 0);
+}
+
+static void test_cable_states(void)
+{
+    ctn_ctx *ctx = NULL;
+    ctn_solve_options opt;
+    ctn_solution *s = NULL;
+    char *json = NULL;
+    ctn_ctx_create(&ctx);
+    ctn_model *m = read(ctx, STATES, &opt);
+    int rc = m ? ctn_solve(ctx, m, &opt, &s) : CTN_ERR_MODEL;
+    if (!rc) rc = ctn_result_json(ctx, m, s, 0, &json);
+    CHECK_MSG(rc == CTN_OK, "%s", ctn_ctx_message(ctx));
+    cJSON *d = rc ? NULL : cJSON_Parse(json);
+    const cJSON *steps = cJSON_GetObjectItemCaseSensitive(d, "steps");
+    const cJSON *cases = cJSON_GetObjectItemCaseSensitive(d, "cases");
+    CHECK(cJSON_GetArraySize(steps) == 2 && cJSON_GetArraySize(cases) == 1);
+    if (cJSON_GetArraySize(steps) == 2 && cJSON_GetArraySize(cases) == 1) {
+        check_state(ctx, cJSON_GetArrayItem(steps, 0), 0);
+        check_state(ctx, cJSON_GetArrayItem(steps, 1), 40);
+        check_state(ctx, cJSON_GetArrayItem(cases, 0), -30);
+    }
+    cJSON_Delete(d);
+    ctn_json_free(json);
+    ctn_solution_destroy(&s);
+    ctn_model_destroy(&m);
+    ctn_ctx_destroy(&ctx);
+}
+
 int main(void)
 {
     test_mass_units();
     test_iced_parabola();
     test_iced_balance();
+    test_cable_states();
     CHECK_DONE();
 }

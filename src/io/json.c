@@ -281,6 +281,83 @@ static void put_cables(json_writer *jw, const ctn_solution *s)
     ctn_jw_end(j);
 }
 
+/* One meshed cable i at the end of step k: its sag, the largest and smallest element
+ * force and the stretched and unstressed lengths (sums over its elements). */
+static void put_state_cable(json_writer *jw, const ctn_solution *s, size_t k, size_t i)
+{
+    ctn_jw *j = &jw->j;
+    const ctn_model *m = jw->w.m;
+    ctn_cable_info c;
+    ctn_element_info first, last, ei;
+    ctn_element_state es;
+    double sag = 0, hi = -INFINITY, lo = INFINITY, len = 0, l0 = 0;
+    if (ctn_model_cable(m, i, &c) || ctn_model_element(m, c.first, &first) ||
+        ctn_model_element(m, c.first + c.count - 1, &last)) {
+        ctn_writer_mismatch(&jw->w);
+        return;
+    }
+    for (size_t e = c.first; e < c.first + c.count; e++) {
+        if (ctn_model_element(m, e, &ei) || ctn_solution_step_element(s, k, e, &es)) {
+            ctn_writer_mismatch(&jw->w);
+            return;
+        }
+        hi = fmax(hi, es.force);
+        lo = fmin(lo, es.force);
+        len += es.length;
+        l0 += ei.l0;
+    }
+    ctn_jw_object(j, NULL);
+    ctn_jw_number(j, "node1", node_id(m, c.node[0]));
+    ctn_jw_number(j, "node2", node_id(m, c.node[1]));
+    ctn_jw_number(j, "first_element", first.id);
+    ctn_jw_number(j, "last_element", last.id);
+    if (!ctn_solution_step_cable_sag(m, s, k, i, &sag)) ctn_jw_number(j, "sag", sag);
+    ctn_jw_number(j, "max_tension", hi);
+    ctn_jw_number(j, "min_tension", lo);
+    ctn_jw_number(j, "stretched_length", len);
+    ctn_jw_number(j, "unstressed_length", l0);
+    ctn_jw_end(j);
+}
+
+/* A catenary element i at the end of step k: its exact sag, end tensions (the smallest
+ * tension is H when the curve's vertex lies inside the span: both supports lift it) and
+ * lengths. */
+static void put_state_catenary(json_writer *jw, const ctn_solution *s, size_t k, size_t i,
+                               const ctn_element_info *e)
+{
+    ctn_jw *j = &jw->j;
+    ctn_catenary_result c = { .size = sizeof c };
+    if (ctn_solution_catenary(jw->w.m, s, k, i, &c)) return;
+    double hi = fmax(c.tension[0], c.tension[1]), lo = fmin(c.tension[0], c.tension[1]);
+    if (c.V[0] > 0 && c.V[1] > 0) lo = c.H;
+    ctn_jw_object(j, NULL);
+    ctn_jw_number(j, "element", e->id);
+    ctn_jw_number(j, "node1", node_id(jw->w.m, e->node[0]));
+    ctn_jw_number(j, "node2", node_id(jw->w.m, e->node[1]));
+    ctn_jw_number(j, "sag", c.sag);
+    ctn_jw_number(j, "max_tension", hi);
+    ctn_jw_number(j, "min_tension", lo);
+    ctn_jw_number(j, "stretched_length", c.length);
+    ctn_jw_number(j, "unstressed_length", e->l0);
+    ctn_jw_end(j);
+}
+
+/* "cables" of a step or case entry: each generated cable, then each catenary element;
+ * the key is left out when the model has neither. */
+static void put_state_cables(json_writer *jw, const ctn_solution *s, size_t k)
+{
+    const ctn_model *m = jw->w.m;
+    size_t nc = ctn_model_cable_count(m), ne = ctn_model_element_count(m), ncat = 0;
+    ctn_element_info e;
+    for (size_t i = 0; i < ne; i++) ncat += !ctn_model_element(m, i, &e) && !strcmp(e.type, "catenary");
+    if (!nc && !ncat) return;
+    ctn_jw_array(&jw->j, "cables");
+    for (size_t i = 0; i < nc && !jw->w.out.err; i++) put_state_cable(jw, s, k, i);
+    for (size_t i = 0; i < ne && ncat && !jw->w.out.err; i++)
+        if (!ctn_model_element(m, i, &e) && !strcmp(e.type, "catenary")) put_state_catenary(jw, s, k, i, &e);
+    ctn_jw_end(&jw->j);
+}
+
 /* "groups": totals and extremes of each group at the end of step k. */
 static void put_groups(json_writer *jw, const ctn_solution *s, size_t k)
 {
@@ -322,6 +399,7 @@ static void put_step_body(json_writer *jw, const ctn_solution *s, size_t k, cons
     put_nodes(jw, s, k);
     put_elements(jw, s, k);
     if (ctn_model_group_count(jw->w.m)) put_groups(jw, s, k);
+    put_state_cables(jw, s, k);
 }
 
 static void put_step(json_writer *jw, const ctn_solution *s, size_t k, const ctn_step_result *st)
