@@ -110,8 +110,18 @@ static void put3(ctn_jw *j, const char *const *k, const double *v)
 /* "nodes" (coordinates, displacements and, in a model with rotations, the rotations rx,
  * ry, rz) and "reactions" (of the supported nodes; with rotations, the moments mx, my,
  * mz too) of step k. */
+static void put_nodes_from(json_writer *jw, const ctn_solution *s, size_t k, const double *base);
+
 static void put_nodes(json_writer *jw, const ctn_solution *s, size_t k)
 {
+    put_nodes_from(jw, s, k, NULL);
+}
+
+/* The same; with base (the installed state's displacements, 3 per node), each node's
+ * displacement from it too: ux_from, uy_from, uz_from. */
+static void put_nodes_from(json_writer *jw, const ctn_solution *s, size_t k, const double *base)
+{
+    static const char *const fromk[3] = { "ux_from", "uy_from", "uz_from" };
     static const char *const uk[3] = { "ux", "uy", "uz" }, *const fk[3] = { "fx", "fy", "fz" };
     static const char *const rk[3] = { "rx", "ry", "rz" }, *const mk[3] = { "mx", "my", "mz" };
     ctn_jw *j = &jw->j;
@@ -130,6 +140,11 @@ static void put_nodes(json_writer *jw, const ctn_solution *s, size_t k)
             ctn_jw_number(j, "id", p.id);
             put3(j, xyz, p.X);
             put3(j, uk, ctn_piece_d(&pc, i));
+            if (base) {
+                const double *u = ctn_piece_d(&pc, i);
+                double du[3] = { u[0] - base[3 * i], u[1] - base[3 * i + 1], u[2] - base[3 * i + 2] };
+                put3(j, fromk, du);
+            }
             if (pc.rot) put3(j, rk, ctn_piece_rot(&pc, i));
             ctn_jw_end(j);
         }
@@ -387,8 +402,10 @@ static void put_groups(json_writer *jw, const ctn_solution *s, size_t k)
     ctn_jw_end(j);
 }
 
-/* The body of one entry of "steps" (or of "cases"): step k's outcome and state. */
-static void put_step_body(json_writer *jw, const ctn_solution *s, size_t k, const ctn_step_result *st)
+/* The body of one entry of "steps" (or of "cases", base: its installed state's
+ * displacements): step k's outcome and state. */
+static void put_step_body(json_writer *jw, const ctn_solution *s, size_t k, const ctn_step_result *st,
+                          const double *base)
 {
     ctn_jw *j = &jw->j;
     ctn_jw_string(j, "name", st->name);
@@ -396,7 +413,7 @@ static void put_step_body(json_writer *jw, const ctn_solution *s, size_t k, cons
     ctn_jw_string(j, "reason", ctn_reason_name(st->reason));
     ctn_jw_number(j, "load_factor", st->load_factor);
     ctn_jw_number(j, "iterations", st->iterations);
-    put_nodes(jw, s, k);
+    put_nodes_from(jw, s, k, base);
     put_elements(jw, s, k);
     if (ctn_model_group_count(jw->w.m)) put_groups(jw, s, k);
     put_state_cables(jw, s, k);
@@ -405,7 +422,7 @@ static void put_step_body(json_writer *jw, const ctn_solution *s, size_t k, cons
 static void put_step(json_writer *jw, const ctn_solution *s, size_t k, const ctn_step_result *st)
 {
     ctn_jw_object(&jw->j, NULL);
-    put_step_body(jw, s, k, st);
+    put_step_body(jw, s, k, st, NULL);
     ctn_jw_end(&jw->j);
 }
 
@@ -426,8 +443,13 @@ static void put_cases(json_writer *jw, int comb)
             break;
         }
         if (kind != comb) continue;
+        ctn_step_result base;
+        if (ctn_solution_step(jw->s, (size_t)from, &base)) {
+            ctn_writer_mismatch(&jw->w);
+            break;
+        }
         ctn_jw_object(j, NULL);
-        put_step_body(jw, cs, 0, &st);
+        put_step_body(jw, cs, 0, &st, base.d);
         ctn_jw_string(j, "from", ctn_model_step_name(m, (size_t)from));
         if (comb) {
             ctn_jw_array(j, "terms");

@@ -3,6 +3,9 @@
 #   - a case that does not converge: exit 3, top-level JSON "converged" false with
 #     "failed_case" naming it, the case's own "converged" false, the summary's
 #     "not converged: case 'push'" line; the other case converged;
+#   - reference states: a case's ux_from, uy_from, uz_from are its displacements less its
+#     installed state's; the summary's largest displacement per step and case agrees
+#     with the JSON (value and node);
 # Prints "N passed, N failed"; exit 1 on any failure.
 set -u
 
@@ -26,5 +29,38 @@ ok = d["converged"] is False and d["failed_case"] == "push" and d["reason"] == "
 sys.exit(0 if ok and c == {"push": False, "pull": True} else 1)
 PY
 finish "a failed case: exit 3, converged false, failed_case"
+
+# Reference states: each case node's ux_from = ux - the installed state's ux; the
+# summary's largest displacement per step and case is the JSON's largest |u| (steps) and
+# |u_from| (cases), at the same node.
+"$BIN" solve $M/states.cable >"$T/out" 2>"$T/err"; rc=$?
+[ $rc -eq 0 ] || WHY+=("states: exit $rc")
+"$BIN" solve $M/states.cable --json >"$T/json" 2>/dev/null
+"$PY" - "$T/json" "$T/out" <<'PY' || WHY+=("ux_from or the summary's largest displacement wrong")
+import json, math, sys
+d = json.load(open(sys.argv[1]))
+steps = {s["name"]: s for s in d["steps"]}
+ok = True
+rows = {}
+for line in open(sys.argv[2]):
+    w = line.split()
+    if len(w) >= 5 and w[0] in ("step", "case", "combination") and w[4] == "the":
+        rows[w[1]] = (float(w[2]), int(w[3]))
+def big(nodes, keys):
+    u = max(nodes, key=lambda n: math.sqrt(sum(n[k] ** 2 for k in keys)))
+    return math.sqrt(sum(u[k] ** 2 for k in keys)), u["id"]
+for name, s in steps.items():
+    u, node = big(s["nodes"], ("ux", "uy", "uz"))
+    ok = ok and name in rows and abs(rows[name][0] - u) <= 1e-9 * u and rows[name][1] == node
+for c in d["cases"]:
+    base = {n["id"]: n for n in steps[c["from"]]["nodes"]}
+    for n in c["nodes"]:
+        for a in "xyz":
+            ok = ok and abs(n["u" + a + "_from"] - (n["u" + a] - base[n["id"]]["u" + a])) <= 1e-15 * (1 + abs(n["u" + a]))
+    u, node = big(c["nodes"], ("ux_from", "uy_from", "uz_from"))
+    ok = ok and c["name"] in rows and abs(rows[c["name"]][0] - u) <= 1e-9 * u and rows[c["name"]][1] == node
+sys.exit(0 if ok and len(rows) == 3 else 1)
+PY
+finish "reference states: ux_from and the largest displacements"
 
 cli_summary
