@@ -6,6 +6,8 @@
 #   - reference states: a case's ux_from, uy_from, uz_from are its displacements less its
 #     installed state's; the summary's largest displacement per step and case agrees
 #     with the JSON (value and node);
+#   - -o DIR writes cases/NAME/nodes.csv, elements.csv, result.vtu for each case, equal
+#     to the JSON's case entry;
 # Prints "N passed, N failed"; exit 1 on any failure.
 set -u
 
@@ -62,5 +64,27 @@ for c in d["cases"]:
 sys.exit(0 if ok and len(rows) == 3 else 1)
 PY
 finish "reference states: ux_from and the largest displacements"
+
+# -o DIR: cases/NAME/nodes.csv, elements.csv, result.vtu per case, each the case's state
+# (the JSON's case entry); the run's files as before.
+"$BIN" solve $M/states.cable -q -o "$T/o" >/dev/null 2>&1; rc=$?
+[ $rc -eq 0 ] || WHY+=("-o: exit $rc")
+for f in result.json nodes.csv elements.csv result.vtu result.pvd cases/cold/nodes.csv cases/cold/elements.csv \
+    cases/cold/result.vtu; do
+    [ -s "$T/o/$f" ] || WHY+=("no $f")
+done
+"$PY" - "$T/o" <<'PY' || WHY+=("cases/cold/*.csv disagree with the JSON's case")
+import csv, json, sys
+d = json.load(open(sys.argv[1] + "/result.json"))
+c = d["cases"][0]
+nodes = {int(r["id"]): r for r in csv.DictReader(open(sys.argv[1] + "/cases/cold/nodes.csv"))}
+els = {int(r["id"]): r for r in csv.DictReader(open(sys.argv[1] + "/cases/cold/elements.csv"))}
+ok = len(nodes) == len(c["nodes"]) and len(els) == len(c["elements"])
+ok = ok and all(float(nodes[n["id"]][k]) == n[k] for n in c["nodes"] for k in ("ux", "uy", "uz"))
+ok = ok and all(float(els[e["id"]]["force"]) == e["force"] for e in c["elements"])
+sys.exit(0 if ok else 1)
+PY
+grep -q 'DataArray' "$T/o/cases/cold/result.vtu" || WHY+=("cases/cold/result.vtu has no data")
+finish "-o: the files of each case"
 
 cli_summary
