@@ -355,7 +355,11 @@ static int nodal(ctn_line *l, int moment)
     return ctn_model_add_moment(l->m, id, M);
 }
 
-static int d_load(ctn_line *l) { return nodal(l, 0); }
+static int d_load(ctn_line *l)
+{
+    int named = l->ntok > 1 && (!strncmp(l->tok[1], "set=", 4) || !strncmp(l->tok[1], "cable=", 6));
+    return named ? ctn_parse_load_sel(l) : nodal(l, 0);
+}
 static int d_moment(ctn_line *l) { return nodal(l, 1); }
 
 /* "A-B" or "A" or "all" into an inclusive id range. */
@@ -555,6 +559,7 @@ static const directive directives[] = {
     { "combination", ctn_parse_combination }, { "ice", ctn_parse_ice },
     { "wind", ctn_parse_wind },
     { "buckling", d_buckling },
+    { "set", ctn_parse_set }, { "include", ctn_parse_include },
 };
 
 int ctn_parse_directive(ctn_line *l)

@@ -8,8 +8,17 @@
 
 #define CTN_MAX_TOKENS 64
 
+/* The files being read, innermost first (`include`, include.c). */
+typedef struct ctn_incl {
+    const char *path;             /* as opened */
+    char *real;                   /* its canonical path (realpath), owned */
+    int line;                     /* the line of the include that opened the next one in */
+    const struct ctn_incl *up;
+} ctn_incl;
+
 typedef struct ctn_line {
     ctn_model *m;
+    const ctn_incl *incl;         /* the include chain; NULL in the top file */
     ctn_solve_options *opt;       /* where the `solve` line goes */
     const char *file;
     int line;
@@ -95,5 +104,9 @@ int ctn_parse_case(ctn_line *l);
 int ctn_parse_combination(ctn_line *l);
 int ctn_parse_ice(ctn_line *l);
 int ctn_parse_wind(ctn_line *l);
+/* Selection and generation (directives_sets.c, include.c). */
+int ctn_parse_set(ctn_line *l);
+int ctn_parse_load_sel(ctn_line *l);     /* load set=NAME ... | load cable=A-B at=T ... */
+int ctn_parse_include(ctn_line *l);
 
 #endif

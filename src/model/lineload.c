@@ -18,11 +18,7 @@ int ctn_lload_on(const ctn_model *m, const ctn_lload *l, size_t e)
 {
     const ctn_element *el = &m->elements.v[e];
     if (el->section < 0) return 0;                   /* springs: sets pass over them */
-    switch (l->kind) {
-    case CTN_TARGET_ELEMENT: return (int)e == l->target;
-    case CTN_TARGET_GROUP: return el->group == l->target;
-    default: return 1;
-    }
+    return ctn_model_target_has(m, l->kind, l->target, e);
 }
 
 /* TARGET: all, an element id (a cable element) or a defined group. */

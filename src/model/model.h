@@ -66,7 +66,18 @@ typedef struct ctn_group {
 } ctn_group;
 
 /* A temperature change dT of the elements it targets, from its step on. */
-enum { CTN_TARGET_ALL = 0, CTN_TARGET_ELEMENT = 1, CTN_TARGET_GROUP = 2 };
+enum { CTN_TARGET_ALL = 0, CTN_TARGET_ELEMENT = 1, CTN_TARGET_GROUP = 2, CTN_TARGET_SET = 3 };
+
+/* A named set of nodes or elements (`set`, sets.c): member[i] is 1 for the node or
+ * element index i in it. */
+typedef struct ctn_set {
+    char name[CTN_NAME_MAX];
+    int nodes;       /* 1: a node set; 0: an element set */
+    unsigned char *member;   /* nodes.n or elements.n bytes (at the set's definition) */
+    size_t size;     /* the member array's length */
+    size_t count;    /* members */
+    int line;
+} ctn_set;
 typedef struct ctn_tload {
     int kind;        /* CTN_TARGET_* */
     int target;      /* element index or group index */
@@ -210,6 +221,7 @@ struct ctn_model {
     CTN_ARRAY(ctn_case) cases;      /* load cases, in order */
     CTN_ARRAY(ctn_combo) combos;    /* combinations of cases */
     CTN_ARRAY(ctn_combo_term) terms;
+    CTN_ARRAY(ctn_set) sets;        /* named node and element sets (sets.c) */
     int in_case;                    /* load records now go to the last case */
     double fconv, lconv;            /* the model's force and length units in N and m, 0
                                        when unit-less (values with units: units.c) */
@@ -314,6 +326,19 @@ int ctn_model_find_section(const ctn_model *m, const char *name);
  * an undefined id or name is one too. */
 int ctn_model_load_target(ctn_model *m, const char *what, const char *target,
                           int (*accepts)(const ctn_model *, size_t), const char *refusal, int *kind, int *index);
+/* Sets (sets.c). The index of set `name`, -1 if none. */
+int ctn_model_find_set(const ctn_model *m, const char *name);
+/* Whether element e is in the target (kind, index) of a load: all, an element, a group
+ * or an element set (springs are in none but their own id: the caller tests families). */
+int ctn_model_target_has(const ctn_model *m, int kind, int index, size_t e);
+/* A new set `name` of nodes (nodes = 1) or elements with the given membership (n bytes,
+ * copied); an error if the name is taken or the set is empty. */
+int ctn_model_add_set(ctn_model *m, const char *name, int nodes, const unsigned char *member, size_t n);
+/* Free the sets (model.c). */
+void ctn_model_free_sets(ctn_model *m);
+/* The generated cable with end node ids a and b (in that order or reversed: *reversed),
+ * -1 with a model error when there is none or more than one. */
+int ctn_model_find_cable(ctn_model *m, const char *what, int a, int b, int *reversed);
 /* Group index of a name, -1 if none (groups.c). */
 int ctn_model_find_group(const ctn_model *m, const char *name);
 /* Group index of name, created (named at the current line) if new; a model error if the

@@ -8,6 +8,7 @@
 #     with the JSON (value and node);
 #   - -o DIR writes cases/NAME/nodes.csv, elements.csv, result.vtu for each case, equal
 #     to the JSON's case entry;
+#   - set, load set=, load cable= at=, include: the same state as the loads by ids;
 # Prints "N passed, N failed"; exit 1 on any failure.
 set -u
 
@@ -86,5 +87,20 @@ sys.exit(0 if ok else 1)
 PY
 grep -q 'DataArray' "$T/o/cases/cold/result.vtu" || WHY+=("cases/cold/result.vtu has no data")
 finish "-o: the files of each case"
+
+# Selection: sets.cable (include, node and element sets by box and cable, load set=,
+# load cable= at=, lineload and temperature on sets) gives, bit for bit, the state of
+# sets_explicit.cable, which names the same nodes and elements by id.
+"$BIN" solve $M/sets.cable --json >"$T/sa.json" 2>"$T/err"; rc=$?
+[ $rc -eq 0 ] || WHY+=("sets: exit $rc: $(head -c 200 "$T/err")")
+"$BIN" solve $M/sets_explicit.cable --json >"$T/sb.json" 2>/dev/null
+"$PY" - "$T/sa.json" "$T/sb.json" <<'PY' || WHY+=("sets.cable and sets_explicit.cable differ")
+import json, sys
+a, b = (json.load(open(f)) for f in sys.argv[1:3])
+ok = a["nodes"] == b["nodes"] and a["reactions"] == b["reactions"]
+ok = ok and [e["force"] for e in a["elements"]] == [e["force"] for e in b["elements"]]
+sys.exit(0 if ok else 1)
+PY
+finish "sets, load at= and include against explicit ids"
 
 cli_summary
