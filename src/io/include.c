@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #define CTN_INCLUDE_DEPTH 32
 
@@ -78,7 +79,10 @@ int ctn_parse_include(ctn_line *l)
     if (rc) return rc;
     char path[PATH_MAX], real[PATH_MAX], topreal[PATH_MAX], names[1024];
     if (!resolve(l->file, l->tok[1], path, sizeof path)) return ctn_parse_error(l, "include: path too long");
-    if (!realpath(path, real)) return ctn_parse_error(l, "include: cannot open '%.200s': %s", path, strerror(errno));
+    struct stat st;
+    if (!realpath(path, real) || stat(real, &st))
+        return ctn_parse_error(l, "include: cannot open '%.200s': %s", path, strerror(errno));
+    if (!S_ISREG(st.st_mode)) return ctn_parse_error(l, "include: '%.200s' is not a regular file", path);
     ctn_incl top = { l->file, topreal, 0, NULL };           /* the top file, when this is it */
     const ctn_incl *up = l->incl;
     if (!up) {
