@@ -83,7 +83,7 @@ void ctn_print_displacements(FILE *out, const ctn_model *m, const ctn_solution *
 {
     size_t ns = ctn_solution_step_count(s), nc = ctn_solution_case_count(s);
     if (!ctn_model_node_count(m)) return;
-    fprintf(out, "largest displacement   name          |u|               node  measured from\n");
+    fprintf(out, "displacement           name          largest |u|       node  measured from\n");
     for (size_t k = 0; k < ns; k++) {
         ctn_step_result st;
         int id = 0;

@@ -56,20 +56,22 @@ static int ids_key(ctn_line *l, const char *v, int nodes, unsigned char *member)
 {
     char buf[4096];
     snprintf(buf, sizeof buf, "%s", v);
-    for (char *p = strtok(buf, ","); p; p = strtok(NULL, ",")) {
+    for (char *p = buf, *next; p; p = next) {
         int first = 0, last = 0, rc;
-        char *dash = strchr(p + 1, '-');
+        next = strchr(p, ',');
+        if (next) *next++ = '\0';
+        char *dash = *p ? strchr(p + 1, '-') : NULL;
         if (dash) *dash = '\0';
         rc = ctn_parse_int(l, nodes ? "a node id" : "an element id", p, &first);
         if (!rc) rc = ctn_parse_int(l, nodes ? "a node id" : "an element id", dash ? dash + 1 : p, &last);
         if (rc) return rc;
         if (last < first) return ctn_parse_error(l, "set: the range %d-%d is empty", first, last);
+        if (last - first > 100000000) return ctn_parse_error(l, "set: the range %d-%d is too long", first, last);
         for (long long id = first; id <= last; id++) {
             int i = ctn_idmap_get(nodes ? &l->m->node_ids : &l->m->element_ids, (int)id);
             if (i < 0 && first == last)
                 return ctn_parse_error(l, "set: undefined %s %lld", nodes ? "node" : "element", id);
             if (i >= 0) member[i] = 1;
-            if (last - first > 100000000) return ctn_parse_error(l, "set: the range %d-%d is too long", first, last);
         }
     }
     return CTN_OK;
