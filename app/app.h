@@ -91,6 +91,9 @@ void ctn_print_warnings(FILE *out, const char *model, const ctn_model *m, const 
 void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s);
 /* A line per load case and combination, and the envelope (print_cases.c). */
 void ctn_print_cases(FILE *out, const ctn_model *m, const ctn_solution *s);
+/* The largest displacement of each step (from the reference geometry) and of each case
+ * and combination (from its installed state), with its node (print_cases.c). */
+void ctn_print_displacements(FILE *out, const ctn_model *m, const ctn_solution *s);
 /* 1 when every case and combination converged; else 0 and the first that did not. */
 int ctn_cases_converged(const ctn_solution *s, const char **failed);
 /* A line per group, and the most utilised element (print_groups.c). */

@@ -155,6 +155,7 @@ void ctn_print_summary(FILE *out, const ctn_model *m, const ctn_solution *s)
     print_notes(out, m, &sum);
     print_steps(out, m, s);
     ctn_print_cases(out, m, s);
+    ctn_print_displacements(out, m, s);
     size_t imax, imin;
     force_range(m, s, &imax, &imin);
     print_element_line(out, "max", m, s, imax);

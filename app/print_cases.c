@@ -40,6 +40,15 @@ void ctn_print_cases(FILE *out, const ctn_model *m, const ctn_solution *s)
         if (lo < gmin) gmin = lo, nmin = name;
     }
     if (isfinite(gmax)) fprintf(out, "envelope: max force %.10g (%s), min force %.10g (%s)\n", gmax, nmax, gmin, nmin);
+    for (size_t i = 0; i < n; i++) {
+        ctn_step_result st;
+        int comb = 0;
+        if (ctn_model_case_info(m, i, NULL, NULL, &comb) || ctn_solution_step(ctn_solution_case(s, i), 0, &st) ||
+            st.reason == CTN_CONVERGED)
+            continue;
+        fprintf(out, "not converged: %s '%s': %s at load factor %.6g (its last converged state is written)\n",
+                comb ? "combination" : "case", st.name, ctn_reason_name(st.reason), st.load_factor);
+    }
 }
 
 int ctn_cases_converged(const ctn_solution *s, const char **failed)
@@ -51,4 +60,48 @@ int ctn_cases_converged(const ctn_solution *s, const char **failed)
         return 0;
     }
     return 1;
+}
+
+/* The largest |d - base| over the nodes (base NULL: from the reference geometry) and
+ * its node's id. */
+static double largest(const ctn_model *m, const double *d, const double *base, int *id)
+{
+    double big = 0;
+    size_t at = 0;
+    for (size_t i = 0; i < ctn_model_node_count(m); i++) {
+        double u[3];
+        for (int k = 0; k < 3; k++) u[k] = d[3 * i + (size_t)k] - (base ? base[3 * i + (size_t)k] : 0);
+        double n = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+        if (n > big) big = n, at = i;
+    }
+    ctn_node_info p;
+    *id = ctn_model_node(m, at, &p) ? 0 : p.id;
+    return big;
+}
+
+void ctn_print_displacements(FILE *out, const ctn_model *m, const ctn_solution *s)
+{
+    size_t ns = ctn_solution_step_count(s), nc = ctn_solution_case_count(s);
+    if (!ctn_model_node_count(m)) return;
+    fprintf(out, "displacement           name          largest |u|       node  measured from\n");
+    for (size_t k = 0; k < ns; k++) {
+        ctn_step_result st;
+        int id = 0;
+        if (ctn_solution_step(s, k, &st)) continue;
+        double u = largest(m, st.d, NULL, &id);
+        fprintf(out, "%-22s %-13.13s %-17.10g %5d  the reference geometry\n", "step", *st.name ? st.name : "(the step)",
+                u, id);
+    }
+    for (size_t i = 0; i < nc; i++) {
+        ctn_step_result st, base;
+        const char *name = "";
+        int from = 0, comb = 0, id = 0;
+        if (ctn_model_case_info(m, i, &name, &from, &comb) || ctn_solution_step(ctn_solution_case(s, i), 0, &st) ||
+            ctn_solution_step(s, (size_t)from, &base))
+            continue;
+        double u = largest(m, st.d, base.d, &id);
+        const char *fn = ctn_model_step_name(m, (size_t)from);
+        fprintf(out, "%-22s %-13.13s %-17.10g %5d  the installed state, step %s\n", comb ? "combination" : "case", name, u,
+                id, *fn ? fn : "(the step)");
+    }
 }

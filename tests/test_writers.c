@@ -223,6 +223,64 @@ static void ref_cables(cJSON *root, const ctn_model *m, const ctn_solution *s, i
     }
 }
 
+/* A step entry's "cables" (docs/format.md): each generated cable's state at step k, then
+ * each catenary element's; absent when the model has neither. */
+static void ref_state_cables(cJSON *root, const ctn_model *m, const ctn_solution *s, size_t k, int *finite)
+{
+    size_t ncat = 0;
+    for (size_t i = 0; i < ctn_model_element_count(m); i++) {
+        ctn_element_info e;
+        ctn_model_element(m, i, &e);
+        ncat += !strcmp(e.type, "catenary");
+    }
+    if (!ctn_model_cable_count(m) && !ncat) return;
+    cJSON *a = cJSON_AddArrayToObject(root, "cables");
+    for (size_t i = 0; i < ctn_model_cable_count(m); i++) {
+        ctn_cable_info c;
+        ctn_element_info e0, e1, e;
+        ctn_element_state es;
+        double sag, hi = -INFINITY, lo = INFINITY, len = 0, l0 = 0;
+        ctn_model_cable(m, i, &c);
+        ctn_model_element(m, c.first, &e0);
+        ctn_model_element(m, c.first + c.count - 1, &e1);
+        for (size_t j = c.first; j < c.first + c.count; j++) {
+            ctn_model_element(m, j, &e);
+            ctn_solution_step_element(s, k, j, &es);
+            hi = es.force > hi ? es.force : hi;
+            lo = es.force < lo ? es.force : lo;
+            len += es.length;
+            l0 += e.l0;
+        }
+        cJSON *o = ref_item(a);
+        ref_num(o, "node1", ref_id(m, c.node[0]), finite);
+        ref_num(o, "node2", ref_id(m, c.node[1]), finite);
+        ref_num(o, "first_element", e0.id, finite);
+        ref_num(o, "last_element", e1.id, finite);
+        if (!ctn_solution_step_cable_sag(m, s, k, i, &sag)) ref_num(o, "sag", sag, finite);
+        ref_num(o, "max_tension", hi, finite);
+        ref_num(o, "min_tension", lo, finite);
+        ref_num(o, "stretched_length", len, finite);
+        ref_num(o, "unstressed_length", l0, finite);
+    }
+    for (size_t i = 0; i < ctn_model_element_count(m) && ncat; i++) {
+        ctn_element_info e;
+        ctn_catenary_result c = { .size = sizeof c };
+        ctn_model_element(m, i, &e);
+        if (strcmp(e.type, "catenary") || ctn_solution_catenary(m, s, k, i, &c)) continue;
+        double hi = c.tension[0] > c.tension[1] ? c.tension[0] : c.tension[1];
+        double lo = c.V[0] > 0 && c.V[1] > 0 ? c.H : c.tension[0] < c.tension[1] ? c.tension[0] : c.tension[1];
+        cJSON *o = ref_item(a);
+        ref_num(o, "element", e.id, finite);
+        ref_num(o, "node1", ref_id(m, e.node[0]), finite);
+        ref_num(o, "node2", ref_id(m, e.node[1]), finite);
+        ref_num(o, "sag", c.sag, finite);
+        ref_num(o, "max_tension", hi, finite);
+        ref_num(o, "min_tension", lo, finite);
+        ref_num(o, "stretched_length", c.length, finite);
+        ref_num(o, "unstressed_length", e.l0, finite);
+    }
+}
+
 static void ref_summary(cJSON *root, const ctn_model *m, const ctn_solution *s, int *finite)
 {
     ctn_solve_summary sum;
@@ -326,6 +384,7 @@ static cJSON *reference_cjson(const ctn_model *m, const ctn_solution *s, int *fi
         ref_num(o, "iterations", st.iterations, finite);
         ref_nodes(o, m, &st, finite);
         ref_elements(o, m, s, k, finite);
+        ref_state_cables(o, m, s, k, finite);
     }
     return root;
 }

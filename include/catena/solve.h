@@ -573,6 +573,8 @@ int ctn_solution_element_shape(const ctn_model *m, const ctn_solution *s, size_t
  *     the chord, ctn_solution_cable_max_sag_from_chord.
  * CTN_ERR_DOMAIN if the deformed cable does not cross mid-span (folded back). */
 int ctn_solution_cable_sag(const ctn_model *m, const ctn_solution *s, size_t i, double *sag);
+/* The same at the end of step k (ctn_solution_step). */
+int ctn_solution_step_cable_sag(const ctn_model *m, const ctn_solution *s, size_t k, size_t i, double *sag);
 /* The largest distance of the deformed cable i from its chord (the line through its
  * current end positions), >= 0: the largest over its nodes, which is that of the
  * polyline of its straight elements. */

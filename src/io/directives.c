@@ -102,8 +102,9 @@ static int d_section(ctn_line *l)
     if (!rc) rc = ctn_parse_section_shape(l, &spec, &shaped);
     if (!rc) rc = ctn_parse_key_num(l, 2, "A", !shaped, &spec.A);
     if (!rc) rc = ctn_parse_key_num(l, 2, "w", 0, &spec.w);
-    if (!rc && ctn_parse_key(l, 2, "mass")) {
-        rc = ctn_parse_key_num(l, 2, "mass", 1, &spec.mass);
+    const char *mv = rc ? NULL : ctn_parse_key(l, 2, "mass");
+    if (mv) {
+        rc = ctn_parse_num(l, "'mass' per length", mv, &spec.mass);
         if (!rc && !(spec.mass >= 0)) return ctn_parse_error(l, "section: mass must be >= 0 (found %g)", spec.mass);
     }
     if (!rc) rc = ctn_parse_key_num(l, 2, "mbl", 0, &spec.mbl);
@@ -361,7 +362,11 @@ static int nodal(ctn_line *l, int moment)
     return ctn_model_add_moment(l->m, id, M);
 }
 
-static int d_load(ctn_line *l) { return nodal(l, 0); }
+static int d_load(ctn_line *l)
+{
+    int named = l->ntok > 1 && (!strncmp(l->tok[1], "set=", 4) || !strncmp(l->tok[1], "cable=", 6));
+    return named ? ctn_parse_load_sel(l) : nodal(l, 0);
+}
 static int d_moment(ctn_line *l) { return nodal(l, 1); }
 
 /* "A-B" or "A" or "all" into an inclusive id range. */
@@ -566,6 +571,7 @@ static const directive directives[] = {
     { "buckling", d_buckling },
     { "dynamics", ctn_parse_dynamics }, { "damping", ctn_parse_damping }, { "record", ctn_parse_record },
     { "function", ctn_parse_function }, { "remove", ctn_parse_remove },
+    { "set", ctn_parse_set }, { "include", ctn_parse_include },
 };
 
 int ctn_parse_directive(ctn_line *l)

@@ -105,7 +105,7 @@ int ctn_parse_ice(ctn_line *l)
     if (!(gn > 0)) return ctn_parse_error(l, "ice: its weight acts along gravity, and there is none (give gravity on an earlier line)");
     double w = rho * g0 * 3.14159265358979323846 * t * (d + t), q[3];
     for (int k = 0; k < 3; k++) q[k] = w * g[k] / gn;
-    return ctn_model_add_lineload(l->m, l->tok[1], q);
+    return ctn_model_add_ice(l->m, l->tok[1], q, t);
 }
 
 /* dir=X,Y,Z: three numbers. */
@@ -147,5 +147,5 @@ int ctn_parse_wind(ctn_line *l)
     if (hv) p = 0.5 * rho * V * V;
     if (!(p >= 0 && cd >= 0 && d >= 0 && rho >= 0))
         return ctn_parse_error(l, "wind: pressure, rho, cd and d must be >= 0");
-    return ctn_model_add_wind(l->m, l->tok[1], dir, cd * p * d);
+    return ctn_model_add_wind(l->m, l->tok[1], dir, cd * p, d);
 }

@@ -47,13 +47,27 @@ static void put_stability(ctn_jw *j, const ctn_solution *s)
     ctn_jw_end(j);
 }
 
+/* The name of the first case or combination of s that did not converge; NULL if none. */
+static const char *failed_case(const ctn_solution *s)
+{
+    for (size_t i = 0; i < ctn_solution_case_count(s); i++) {
+        ctn_step_result st;
+        if (!ctn_solution_step(ctn_solution_case(s, i), 0, &st) && st.reason != CTN_CONVERGED) return st.name;
+    }
+    return NULL;
+}
+
+/* "converged": the steps and every case and combination ("failed_case" names the first
+ * that did not); "reason": the steps'. */
 static void put_summary(json_writer *jw, const ctn_solution *s)
 {
     ctn_jw *j = &jw->j;
     ctn_solve_summary sum;
     size_t n;
+    const char *failed = failed_case(s);
     ctn_solution_summary(s, &sum);
-    ctn_jw_bool(j, "converged", sum.reason == CTN_CONVERGED);
+    ctn_jw_bool(j, "converged", sum.reason == CTN_CONVERGED && !failed);
+    if (failed) ctn_jw_string(j, "failed_case", failed);
     ctn_jw_string(j, "reason", ctn_reason_name(sum.reason));
     ctn_jw_number(j, "iterations", sum.iterations);
     const double *h = ctn_solution_residual_history(s, &n);
@@ -103,8 +117,18 @@ static void put3(ctn_jw *j, const char *const *k, const double *v)
 /* "nodes" (coordinates, displacements and, in a model with rotations, the rotations rx,
  * ry, rz) and "reactions" (of the supported nodes; with rotations, the moments mx, my,
  * mz too) of step k. */
+static void put_nodes_from(json_writer *jw, const ctn_solution *s, size_t k, const double *base);
+
 static void put_nodes(json_writer *jw, const ctn_solution *s, size_t k)
 {
+    put_nodes_from(jw, s, k, NULL);
+}
+
+/* The same; with base (the installed state's displacements, 3 per node), each node's
+ * displacement from it too: ux_from, uy_from, uz_from. */
+static void put_nodes_from(json_writer *jw, const ctn_solution *s, size_t k, const double *base)
+{
+    static const char *const fromk[3] = { "ux_from", "uy_from", "uz_from" };
     static const char *const uk[3] = { "ux", "uy", "uz" }, *const fk[3] = { "fx", "fy", "fz" };
     static const char *const rk[3] = { "rx", "ry", "rz" }, *const mk[3] = { "mx", "my", "mz" };
     ctn_jw *j = &jw->j;
@@ -123,6 +147,11 @@ static void put_nodes(json_writer *jw, const ctn_solution *s, size_t k)
             ctn_jw_number(j, "id", p.id);
             put3(j, xyz, p.X);
             put3(j, uk, ctn_piece_d(&pc, i));
+            if (base) {
+                const double *u = ctn_piece_d(&pc, i);
+                double du[3] = { u[0] - base[3 * i], u[1] - base[3 * i + 1], u[2] - base[3 * i + 2] };
+                put3(j, fromk, du);
+            }
             if (pc.rot) put3(j, rk, ctn_piece_rot(&pc, i));
             ctn_jw_end(j);
         }
@@ -278,6 +307,83 @@ static void put_cables(json_writer *jw, const ctn_solution *s)
     ctn_jw_end(j);
 }
 
+/* One meshed cable i at the end of step k: its sag, the largest and smallest element
+ * force and the stretched and unstressed lengths (sums over its elements). */
+static void put_state_cable(json_writer *jw, const ctn_solution *s, size_t k, size_t i)
+{
+    ctn_jw *j = &jw->j;
+    const ctn_model *m = jw->w.m;
+    ctn_cable_info c;
+    ctn_element_info first, last, ei;
+    ctn_element_state es;
+    double sag = 0, hi = -INFINITY, lo = INFINITY, len = 0, l0 = 0;
+    if (ctn_model_cable(m, i, &c) || ctn_model_element(m, c.first, &first) ||
+        ctn_model_element(m, c.first + c.count - 1, &last)) {
+        ctn_writer_mismatch(&jw->w);
+        return;
+    }
+    for (size_t e = c.first; e < c.first + c.count; e++) {
+        if (ctn_model_element(m, e, &ei) || ctn_solution_step_element(s, k, e, &es)) {
+            ctn_writer_mismatch(&jw->w);
+            return;
+        }
+        hi = fmax(hi, es.force);
+        lo = fmin(lo, es.force);
+        len += es.length;
+        l0 += ei.l0;
+    }
+    ctn_jw_object(j, NULL);
+    ctn_jw_number(j, "node1", node_id(m, c.node[0]));
+    ctn_jw_number(j, "node2", node_id(m, c.node[1]));
+    ctn_jw_number(j, "first_element", first.id);
+    ctn_jw_number(j, "last_element", last.id);
+    if (!ctn_solution_step_cable_sag(m, s, k, i, &sag)) ctn_jw_number(j, "sag", sag);
+    ctn_jw_number(j, "max_tension", hi);
+    ctn_jw_number(j, "min_tension", lo);
+    ctn_jw_number(j, "stretched_length", len);
+    ctn_jw_number(j, "unstressed_length", l0);
+    ctn_jw_end(j);
+}
+
+/* A catenary element i at the end of step k: its exact sag, end tensions (the smallest
+ * tension is H when the curve's vertex lies inside the span: both supports lift it) and
+ * lengths. */
+static void put_state_catenary(json_writer *jw, const ctn_solution *s, size_t k, size_t i,
+                               const ctn_element_info *e)
+{
+    ctn_jw *j = &jw->j;
+    ctn_catenary_result c = { .size = sizeof c };
+    if (ctn_solution_catenary(jw->w.m, s, k, i, &c)) return;
+    double hi = fmax(c.tension[0], c.tension[1]), lo = fmin(c.tension[0], c.tension[1]);
+    if (c.V[0] > 0 && c.V[1] > 0) lo = c.H;
+    ctn_jw_object(j, NULL);
+    ctn_jw_number(j, "element", e->id);
+    ctn_jw_number(j, "node1", node_id(jw->w.m, e->node[0]));
+    ctn_jw_number(j, "node2", node_id(jw->w.m, e->node[1]));
+    ctn_jw_number(j, "sag", c.sag);
+    ctn_jw_number(j, "max_tension", hi);
+    ctn_jw_number(j, "min_tension", lo);
+    ctn_jw_number(j, "stretched_length", c.length);
+    ctn_jw_number(j, "unstressed_length", e->l0);
+    ctn_jw_end(j);
+}
+
+/* "cables" of a step or case entry: each generated cable, then each catenary element;
+ * the key is left out when the model has neither. */
+static void put_state_cables(json_writer *jw, const ctn_solution *s, size_t k)
+{
+    const ctn_model *m = jw->w.m;
+    size_t nc = ctn_model_cable_count(m), ne = ctn_model_element_count(m), ncat = 0;
+    ctn_element_info e;
+    for (size_t i = 0; i < ne; i++) ncat += !ctn_model_element(m, i, &e) && !strcmp(e.type, "catenary");
+    if (!nc && !ncat) return;
+    ctn_jw_array(&jw->j, "cables");
+    for (size_t i = 0; i < nc && !jw->w.out.err; i++) put_state_cable(jw, s, k, i);
+    for (size_t i = 0; i < ne && ncat && !jw->w.out.err; i++)
+        if (!ctn_model_element(m, i, &e) && !strcmp(e.type, "catenary")) put_state_catenary(jw, s, k, i, &e);
+    ctn_jw_end(&jw->j);
+}
+
 /* "groups": totals and extremes of each group at the end of step k. */
 static void put_groups(json_writer *jw, const ctn_solution *s, size_t k)
 {
@@ -307,8 +413,10 @@ static void put_groups(json_writer *jw, const ctn_solution *s, size_t k)
     ctn_jw_end(j);
 }
 
-/* The body of one entry of "steps" (or of "cases"): step k's outcome and state. */
-static void put_step_body(json_writer *jw, const ctn_solution *s, size_t k, const ctn_step_result *st)
+/* The body of one entry of "steps" (or of "cases", base: its installed state's
+ * displacements): step k's outcome and state. */
+static void put_step_body(json_writer *jw, const ctn_solution *s, size_t k, const ctn_step_result *st,
+                          const double *base)
 {
     ctn_jw *j = &jw->j;
     ctn_jw_string(j, "name", st->name);
@@ -316,15 +424,16 @@ static void put_step_body(json_writer *jw, const ctn_solution *s, size_t k, cons
     ctn_jw_string(j, "reason", ctn_reason_name(st->reason));
     ctn_jw_number(j, "load_factor", st->load_factor);
     ctn_jw_number(j, "iterations", st->iterations);
-    put_nodes(jw, s, k);
+    put_nodes_from(jw, s, k, base);
     put_elements(jw, s, k);
     if (ctn_model_group_count(jw->w.m)) put_groups(jw, s, k);
+    put_state_cables(jw, s, k);
 }
 
 static void put_step(json_writer *jw, const ctn_solution *s, size_t k, const ctn_step_result *st)
 {
     ctn_jw_object(&jw->j, NULL);
-    put_step_body(jw, s, k, st);
+    put_step_body(jw, s, k, st, NULL);
     ctn_jw_end(&jw->j);
 }
 
@@ -345,8 +454,13 @@ static void put_cases(json_writer *jw, int comb)
             break;
         }
         if (kind != comb) continue;
+        ctn_step_result base;
+        if (ctn_solution_step(jw->s, (size_t)from, &base)) {
+            ctn_writer_mismatch(&jw->w);
+            break;
+        }
         ctn_jw_object(j, NULL);
-        put_step_body(jw, cs, 0, &st);
+        put_step_body(jw, cs, 0, &st, base.d);
         ctn_jw_string(j, "from", ctn_model_step_name(m, (size_t)from));
         if (comb) {
             ctn_jw_array(j, "terms");

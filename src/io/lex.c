@@ -114,11 +114,11 @@ int ctn_parse_int(const ctn_line *l, const char *what, const char *tok, int *out
 static int with_unit(const ctn_line *l, const char *what, const char *tok, const char *end, double *v)
 {
     char b[64], msg[256];
-    int f = 0, d = 0;
-    if (!ctn_parse_unit_dim(what, &f, &d))
+    int f = 0, d = 0, t = 0;
+    if (!ctn_parse_unit_dim(what, &f, &d, &t))
         return ctn_parse_error(l, "expected a number for %s, found '%s' (%s takes no unit)", what,
                                ctn_parse_show(tok, b, sizeof b), what);
-    if (ctn_model_convert(l->m, end, f, d, v, msg, sizeof msg))
+    if (ctn_model_convert(l->m, end, f, d, t, v, msg, sizeof msg))
         return ctn_parse_error(l, "expected a number for %s, found '%s': %s", what, ctn_parse_show(tok, b, sizeof b), msg);
     return CTN_OK;
 }

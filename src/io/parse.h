@@ -8,8 +8,17 @@
 
 #define CTN_MAX_TOKENS 64
 
+/* The files being read, innermost first (`include`, include.c). */
+typedef struct ctn_incl {
+    const char *path;             /* as opened */
+    char *real;                   /* its canonical path (realpath), owned */
+    int line;                     /* the line of the include that opened the next one in */
+    const struct ctn_incl *up;
+} ctn_incl;
+
 typedef struct ctn_line {
     ctn_model *m;
+    const ctn_incl *incl;         /* the include chain; NULL in the top file */
     ctn_solve_options *opt;       /* where the `solve` line goes */
     const char *file;
     int line;
@@ -34,8 +43,9 @@ int ctn_parse_int(const ctn_line *l, const char *what, const char *tok, int *out
 /* A real number; one the value may carry a unit converted to the model's units
  * (`200GPa`), when `what` names a quantity with a dimension (unit_keys.c). */
 int ctn_parse_num(const ctn_line *l, const char *what, const char *tok, double *out);
-/* The dimension force^f length^l of the value named `what`; 0 if it takes no unit. */
-int ctn_parse_unit_dim(const char *what, int *f, int *l);
+/* The dimension force^f length^l second^t of the value named `what` (t = 2: a mass);
+ * 0 if it takes no unit. */
+int ctn_parse_unit_dim(const char *what, int *f, int *l, int *t);
 /* key=value lookup among tokens from index `from`; NULL if absent (marks it used). */
 const char *ctn_parse_key(ctn_line *l, int from, const char *key);
 /* A flag token (no '='), e.g. "tension-only"; 1 if present (marks it used). */
@@ -104,5 +114,9 @@ int ctn_parse_damping(ctn_line *l);
 int ctn_parse_record(ctn_line *l);
 int ctn_parse_function(ctn_line *l);
 int ctn_parse_remove(ctn_line *l);
+/* Selection and generation (directives_sets.c, include.c). */
+int ctn_parse_set(ctn_line *l);
+int ctn_parse_load_sel(ctn_line *l);     /* load set=NAME ... | load cable=A-B at=T ... */
+int ctn_parse_include(ctn_line *l);
 
 #endif

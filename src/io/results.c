@@ -2,7 +2,8 @@
  * last step), modes.csv when the solution has modes, buckling.csv when it has buckling
  * factors, history.csv when it has a dynamics analysis, and for a run of several steps
  * result_K.vtu for every step and
- * result.pvd listing them. Each is streamed by its writer (io/writer.h) into a staged
+ * result.pvd listing them; for each load case and combination NAME, cases/NAME/ with its
+ * nodes.csv, elements.csv and result.vtu. Each is streamed by its writer (io/writer.h) into a staged
  * temporary (io/atomic.h), synced; only when all are staged is any renamed onto its
  * target. */
 #include "io/atomic.h"
@@ -19,12 +20,17 @@
 #include <unistd.h>
 
 #define NFIXED 4
+#define NCASE 3          /* files per case: nodes.csv, elements.csv, result.vtu */
+#define CASES_DIR "cases"
 
-/* One file of the set: its writer, the step it writes (one-step writers) and its name. */
+/* One file of the set: its writer, the step it writes (one-step writers), its name
+ * (relative to the directory) and the solution it writes (NULL: the run's; else a
+ * case's). */
 typedef struct job {
     const ctn_writer_ops *ops;
     size_t step;
-    char name[CTN_VTU_NAME_MAX];
+    char name[CTN_VTU_NAME_MAX + 80];
+    const ctn_solution *sol;
 } job;
 
 /* The set for solution s of n steps: NFIXED files, modes.csv when s has modes,
@@ -52,6 +58,59 @@ static job *plan(ctn_ctx *ctx, const ctn_solution *s, size_t *count)
         else ctn_vtu_step_name(j[i].name, j[i].step, n);
     }
     return j;
+}
+
+/* The set with each case's files after the run's (cases/NAME/...). */
+static job *plan_cases(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s, size_t *count)
+{
+    static const ctn_writer_ops *const per[NCASE] = { &ctn_writer_nodes_csv, &ctn_writer_elements_csv, &ctn_writer_vtu };
+    size_t n0 = 0, nc = ctn_solution_case_count(s);
+    job *j0 = plan(ctx, s, &n0);
+    if (!j0 || !nc) {
+        *count = n0;
+        return j0;
+    }
+    job *j = ctn_calloc(ctx, n0 + NCASE * nc, sizeof *j);
+    if (j) memcpy(j, j0, n0 * sizeof *j);
+    ctn_free(j0);
+    if (!j) return NULL;
+    for (size_t i = 0; i < nc; i++)
+        for (size_t f = 0; f < NCASE; f++) {
+            job *t = &j[n0 + NCASE * i + f];
+            const char *name = "";
+            ctn_model_case_info(m, i, &name, NULL, NULL);
+            t->ops = per[f];
+            t->step = 0;
+            t->sol = ctn_solution_case(s, i);
+            snprintf(t->name, sizeof t->name, "%s/%s/%s", CASES_DIR, name, per[f]->name);
+        }
+    *count = n0 + NCASE * nc;
+    return j;
+}
+
+static int make_dir(ctn_ctx *ctx, const char *path)
+{
+    if (mkdir(path, 0755) && errno != EEXIST)
+        return ctn_error(ctx, CTN_ERR_IO, "%s: cannot create directory: %s", path, strerror(errno));
+    return CTN_OK;
+}
+
+/* dir/cases and dir/cases/NAME for each case and combination. */
+static int make_case_dirs(ctn_ctx *ctx, const char *dir, const ctn_model *m, const ctn_solution *s)
+{
+    char path[4096];
+    size_t nc = ctn_solution_case_count(s);
+    if (!nc) return CTN_OK;
+    snprintf(path, sizeof path, "%s/%s", dir, CASES_DIR);
+    int rc = make_dir(ctx, path);
+    for (size_t i = 0; i < nc && !rc; i++) {
+        const char *name = "";
+        ctn_model_case_info(m, i, &name, NULL, NULL);
+        if ((size_t)snprintf(path, sizeof path, "%s/%s/%s", dir, CASES_DIR, name) >= sizeof path)
+            return ctn_error(ctx, CTN_ERR_IO, "%s: path too long", dir);
+        rc = make_dir(ctx, path);
+    }
+    return rc;
 }
 
 static int target(ctn_ctx *ctx, const char *dir, const char *name, char *path, size_t size)
@@ -82,7 +141,7 @@ static int stage(ctn_ctx *ctx, const char *dir, const job *j, const ctn_model *m
     if (!rc) rc = ctn_atomic_open(ctx, path, f);
     if (rc) return rc;
     ctn_sink sink = ctn_atomic_sink(f);
-    rc = ctn_writer_run_step(ctx, j->ops, 1, j->step, &sink, m, s);
+    rc = ctn_writer_run_step(ctx, j->ops, 1, j->step, &sink, m, j->sol ? j->sol : s);
     return rc ? rc : ctn_atomic_close(f);
 }
 
@@ -167,10 +226,9 @@ int ctn_write_results(ctn_ctx *ctx, const char *dir, const ctn_model *m,
     if (!dir || !m || !s) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_write_results: bad arguments");
     int rc = ctn_result_check(ctx, m, s);
     if (rc) return rc;
-    if (mkdir(dir, 0755) && errno != EEXIST)
-        return ctn_error(ctx, CTN_ERR_IO, "%s: cannot create directory: %s", dir, strerror(errno));
+    if ((rc = make_dir(ctx, dir)) || (rc = make_case_dirs(ctx, dir, m, s))) return rc;
     size_t n = 0;
-    job *jobs = plan(ctx, s, &n);
+    job *jobs = plan_cases(ctx, m, s, &n);
     ctn_atomic_file *f = jobs ? ctn_calloc(ctx, n, sizeof *f) : NULL;
     rc = f ? write_set(ctx, dir, jobs, n, m, s, f) : CTN_ERR_NOMEM;
     if (!rc && ctn_solution_step_count(s) == 1) rc = remove_stale(ctx, dir);

@@ -6,31 +6,32 @@
 
 typedef struct key_dim {
     const char *what;
-    int f, l;
+    int f, l, t;     /* powers of force, length and time (2 for masses) */
 } key_dim;
 
 static const key_dim dims[] = {
-    { "a coordinate", 0, 1 },      { "a force component", 1, 0 }, { "a moment component", 1, 1 },
-    { "'E'", 1, -2 },              { "'G'", 1, -2 },              { "'s0'", 1, -2 },
-    { "'A'", 0, 2 },               { "'Asy'", 0, 2 },             { "'Asz'", 0, 2 },
-    { "'Iy'", 0, 4 },              { "'Iz'", 0, 4 },              { "'J'", 0, 4 },
-    { "'w'", 1, -1 },              { "'q'", 1, -1 },              { "'qx'", 1, -1 },
-    { "'qy'", 1, -1 },             { "'qz'", 1, -1 },             { "'mbl'", 1, 0 },
-    { "'N0'", 1, 0 },              { "'H'", 1, 0 },               { "'tension'", 1, 0 },
-    { "'force'", 1, 0 },           { "'length'", 0, 1 },          { "'l0'", 0, 1 },
-    { "'sag'", 0, 1 },             { "'x'", 0, 1 },               { "'y'", 0, 1 },
-    { "'z'", 0, 1 },               { "'arclength'", 0, 1 },       { "'thickness'", 0, 1 },
-    { "'d'", 0, 1 },               { "'density'", 1, -4 },        { "'rho'", 1, -4 },
-    { "'pressure'", 1, -2 },       { "'fy'", 1, -2 },             { "'Wy'", 0, 3 },
-    { "'Wz'", 0, 3 },
+    { "a coordinate", 0, 1, 0 },      { "a force component", 1, 0, 0 }, { "a moment component", 1, 1, 0 },
+    { "'E'", 1, -2, 0 },              { "'G'", 1, -2, 0 },              { "'s0'", 1, -2, 0 },
+    { "'A'", 0, 2, 0 },               { "'Asy'", 0, 2, 0 },             { "'Asz'", 0, 2, 0 },
+    { "'Iy'", 0, 4, 0 },              { "'Iz'", 0, 4, 0 },              { "'J'", 0, 4, 0 },
+    { "'w'", 1, -1, 0 },              { "'q'", 1, -1, 0 },              { "'qx'", 1, -1, 0 },
+    { "'qy'", 1, -1, 0 },             { "'qz'", 1, -1, 0 },             { "'mbl'", 1, 0, 0 },
+    { "'N0'", 1, 0, 0 },              { "'H'", 1, 0, 0 },               { "'tension'", 1, 0, 0 },
+    { "'force'", 1, 0, 0 },           { "'length'", 0, 1, 0 },          { "'l0'", 0, 1, 0 },
+    { "'sag'", 0, 1, 0 },             { "'x'", 0, 1, 0 },               { "'y'", 0, 1, 0 },
+    { "'z'", 0, 1, 0 },               { "'arclength'", 0, 1, 0 },       { "'thickness'", 0, 1, 0 },
+    { "'d'", 0, 1, 0 },               { "'density'", 1, -4, 2 },     { "'rho'", 1, -4, 2 },
+    { "'pressure'", 1, -2, 0 },       { "'mass'", 1, -1, 2 },        { "'mass' per length", 1, -2, 2 },
+    { "'fy'", 1, -2, 0 },        { "'Wy'", 0, 3, 0 },         { "'Wz'", 0, 3, 0 },
 };
 
-int ctn_parse_unit_dim(const char *what, int *f, int *l)
+int ctn_parse_unit_dim(const char *what, int *f, int *l, int *t)
 {
     for (size_t i = 0; i < sizeof dims / sizeof *dims; i++)
         if (!strcmp(dims[i].what, what)) {
             *f = dims[i].f;
             *l = dims[i].l;
+            *t = dims[i].t;
             return 1;
         }
     return 0;

@@ -32,6 +32,8 @@ int ctn_model_group_get(ctn_model *m, const char *name, int *index)
                                "digits, '_', '-' or '.', at most %d characters; not 'all')", name ? name : "",
                                CTN_NAME_MAX - 1);
     int g = ctn_model_find_group(m, name);
+    if (g < 0 && ctn_model_find_set(m, name) >= 0)
+        return ctn_model_error(m, CTN_ERR_MODEL, "group '%s': the name is already a set", name);
     if (g < 0) {
         int rc = CTN_ARRAY_RESERVE(m->ctx, m->groups, 1);
         if (rc) return rc;
@@ -107,10 +109,18 @@ int ctn_model_load_target(ctn_model *m, const char *what, const char *target,
         *index = e;
         return CTN_OK;
     }
-    int g = ctn_model_find_group(m, target);
+    int g = ctn_model_find_set(m, target);
+    if (g >= 0 && m->sets.v[g].nodes)
+        return ctn_model_error(m, CTN_ERR_MODEL, "%s: set '%.63s' is a node set; give an element set", what, target);
+    if (g >= 0) {
+        *kind = CTN_TARGET_SET;
+        *index = g;
+        return CTN_OK;
+    }
+    g = ctn_model_find_group(m, target);
     if (g < 0)
-        return ctn_model_error(m, CTN_ERR_MODEL, "%s: '%.63s' is not 'all', an element id or a defined group", what,
-                               target);
+        return ctn_model_error(m, CTN_ERR_MODEL, "%s: '%.63s' is not 'all', an element id or a defined group "
+                               "(or element set)", what, target);
     *kind = CTN_TARGET_GROUP;
     *index = g;
     return CTN_OK;
@@ -127,9 +137,7 @@ int ctn_model_add_temperature(ctn_model *m, const char *target, double dT)
     if (!rc) rc = CTN_ARRAY_RESERVE(m->ctx, m->tloads, 1);
     if (rc) return rc;
     for (size_t i = 0; i < m->elements.n; i++) {   /* 1 + alpha dT must stay positive */
-        if (!thermal(m, i) || (t.kind == CTN_TARGET_ELEMENT && (int)i != t.target) ||
-            (t.kind == CTN_TARGET_GROUP && m->elements.v[i].group != t.target))
-            continue;
+        if (!thermal(m, i) || !ctn_model_target_has(m, t.kind, t.target, i)) continue;
         const ctn_element *el = &m->elements.v[i];
         double alpha = m->materials.v[m->sections.v[el->section].material].alpha;
         if (!(1 + alpha * dT > 0.5))
@@ -158,7 +166,7 @@ void ctn_model_sel_temperatures(const ctn_model *m, const ctn_loadsel *sel, doub
             continue;
         }
         for (size_t i = 0; i < m->elements.n; i++)
-            if (thermal(m, i) && (t->kind == CTN_TARGET_ALL || m->elements.v[i].group == t->target)) dT[i] += w * t->dT;
+            if (thermal(m, i) && ctn_model_target_has(m, t->kind, t->target, i)) dT[i] += w * t->dT;
     }
 }
 
@@ -176,9 +184,7 @@ double ctn_model_sel_element_temperature(const ctn_model *m, const ctn_loadsel *
         const ctn_tload *t = &m->tloads.v[j];
         double w = ctn_loadsel_weight(sel, t->step);
         if (w == 0) continue;
-        if (t->kind == CTN_TARGET_ALL || (t->kind == CTN_TARGET_ELEMENT && t->target == (int)e) ||
-            (t->kind == CTN_TARGET_GROUP && m->elements.v[e].group == t->target))
-            dT += w * t->dT;
+        if (ctn_model_target_has(m, t->kind, t->target, e)) dT += w * t->dT;
     }
     return dT;
 }

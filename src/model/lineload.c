@@ -27,11 +27,7 @@ int ctn_lload_on(const ctn_model *m, const ctn_lload *l, size_t e)
 {
     const ctn_element *el = &m->elements.v[e];
     if (el->section < 0) return 0;                   /* springs: sets pass over them */
-    switch (l->kind) {
-    case CTN_TARGET_ELEMENT: return (int)e == l->target;
-    case CTN_TARGET_GROUP: return el->group == l->target;
-    default: return 1;
-    }
+    return ctn_model_target_has(m, l->kind, l->target, e);
 }
 
 /* TARGET: all, an element id (a cable element) or a defined group. */
@@ -46,41 +42,75 @@ static int resolve(ctn_model *m, const char *target, ctn_lload *l)
                                  "cable)", &l->kind, &l->target);
 }
 
+static int push(ctn_model *m, const char *target, ctn_lload *l)
+{
+    int rc = resolve(m, target, l);
+    if (!rc) rc = CTN_ARRAY_RESERVE(m->ctx, m->lloads, 1);
+    if (rc) return rc;
+    m->lloads.v[m->lloads.n++] = *l;
+    return CTN_OK;
+}
+
 int ctn_model_add_lineload(ctn_model *m, const char *target, const double q[3])
+{
+    return ctn_model_add_ice(m, target, q, 0);
+}
+
+int ctn_model_add_ice(ctn_model *m, const char *target, const double q[3], double t)
 {
     if (!m || !target || !q) return CTN_ERR_INVALID;
     for (int k = 0; k < 3; k++)
         if (!isfinite(q[k])) return ctn_model_error(m, CTN_ERR_MODEL, "lineload: q must be finite");
-    ctn_lload l = { CTN_TARGET_ALL, -1, { q[0], q[1], q[2] }, ctn_model_load_tag(m), m->line, 0 };
-    int rc = resolve(m, target, &l);
-    if (!rc) rc = CTN_ARRAY_RESERVE(m->ctx, m->lloads, 1);
-    if (rc) return rc;
-    m->lloads.v[m->lloads.n++] = l;
-    return CTN_OK;
+    if (!(t >= 0) || !isfinite(t)) return ctn_model_error(m, CTN_ERR_MODEL, "ice: the thickness must be >= 0 and finite");
+    ctn_lload l = { CTN_TARGET_ALL, -1, { q[0], q[1], q[2] }, ctn_model_load_tag(m), m->line, 0, { 0, 0, 0 }, 0, 0, t };
+    return push(m, target, &l);
 }
 
-int ctn_model_add_wind(ctn_model *m, const char *target, const double dir[3], double q)
+int ctn_model_add_wind(ctn_model *m, const char *target, const double dir[3], double cdp, double d)
 {
     if (!m || !target || !dir) return CTN_ERR_INVALID;
-    double n = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+    double n = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]), q = cdp * d;
     if (!isfinite(q) || !(n > 0) || !isfinite(n))
         return ctn_model_error(m, CTN_ERR_MODEL, "wind: the direction must be a finite non-zero vector and the load finite");
     ctn_lload l = { CTN_TARGET_ALL, -1, { q * dir[0] / n, q * dir[1] / n, q * dir[2] / n }, ctn_model_load_tag(m),
-                    m->line, 1 };
-    int rc = resolve(m, target, &l);
-    if (!rc) rc = CTN_ARRAY_RESERVE(m->ctx, m->lloads, 1);
-    if (rc) return rc;
-    m->lloads.v[m->lloads.n++] = l;
-    return CTN_OK;
+                    m->line, 1, { dir[0] / n, dir[1] / n, dir[2] / n }, cdp, d, 0 };
+    return push(m, target, &l);
 }
 
-/* The drag of wind l on the chord a-b at the reference geometry, added at both ends. */
-static void add_reference_drag(const ctn_model *m, const ctn_lload *l, double w, const int *nd, double *f)
+void ctn_lload_dir(const ctn_lload *l, double u[3])
 {
-    double qn = sqrt(l->q[0] * l->q[0] + l->q[1] * l->q[1] + l->q[2] * l->q[2]), u[3], h[3], along = 0, hn = 0;
+    double qn = sqrt(l->q[0] * l->q[0] + l->q[1] * l->q[1] + l->q[2] * l->q[2]);
+    for (int k = 0; k < 3; k++) u[k] = qn > 0 ? l->q[k] / qn : l->dir[k];
+}
+
+/* The thickest ice of a selection (positive weight) on element e; 0 if none. */
+static double ice_on(const ctn_model *m, const ctn_loadsel *sel, size_t e)
+{
+    double t = 0;
+    for (size_t j = 0; j < m->lloads.n; j++) {
+        const ctn_lload *l = &m->lloads.v[j];
+        if (l->t > t && ctn_loadsel_weight(sel, l->step) > 0 && ctn_lload_on(m, l, e)) t = l->t;
+    }
+    return t;
+}
+
+double ctn_model_drag_q(const ctn_model *m, const ctn_lload *l, const ctn_loadsel *sel, size_t e)
+{
+    double t = ice_on(m, sel, e);
+    if (t > 0) return l->cdp * (l->d + 2 * t);                       /* the iced diameter */
+    return sqrt(l->q[0] * l->q[0] + l->q[1] * l->q[1] + l->q[2] * l->q[2]);
+}
+
+/* The drag of wind l on element e (chord a-b) at the reference geometry, added at both
+ * ends. */
+static void add_reference_drag(const ctn_model *m, const ctn_lload *l, const ctn_loadsel *sel, double w, size_t e,
+                               double *f)
+{
+    const int *nd = ctn_elem_nodes(m, e);
+    double qn = ctn_model_drag_q(m, l, sel, e), h[3], u[3], along = 0, hn = 0;
     if (!(qn > 0)) return;
+    ctn_lload_dir(l, u);
     for (int k = 0; k < 3; k++) {
-        u[k] = l->q[k] / qn;
         h[k] = m->nodes.v[nd[1]].X[k] - m->nodes.v[nd[0]].X[k];
         along += h[k] * u[k];
     }
@@ -100,9 +130,8 @@ void ctn_model_add_lineloads(const ctn_model *m, const ctn_loadsel *sel, int dea
         if (w == 0 || (l->drag && dead_only)) continue;
         for (size_t e = 0; e < m->elements.n; e++) {
             if (!ctn_lload_on(m, l, e)) continue;
-            const int *nd = ctn_elem_nodes(m, e);
             if (l->drag) {
-                add_reference_drag(m, l, w, nd, f);
+                add_reference_drag(m, l, sel, w, e, f);
                 continue;
             }
             const ctn_element_ops *ops = ctn_element_family(m->elements.v[e].type);
@@ -111,6 +140,7 @@ void ctn_model_add_lineloads(const ctn_model *m, const ctn_loadsel *sel, int dea
                 ops->line_load(m, e, q, f, NULL);
                 continue;
             }
+            const int *nd = ctn_elem_nodes(m, e);
             double half = 0.5 * w * m->elements.v[e].l0;          /* q l0 / 2 at each end */
             for (int k = 0; k < 3; k++) {
                 f[3 * (size_t)nd[0] + (size_t)k] += half * l->q[k];

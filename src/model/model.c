@@ -47,6 +47,7 @@ void ctn_model_destroy(ctn_model **m)
     ctn_free(p->cases.v);
     ctn_free(p->combos.v);
     ctn_free(p->terms.v);
+    ctn_model_free_sets(p);
     ctn_free(p->etargets.v);
     ctn_free(p->densities.v);
     ctn_free(p->records.v);

@@ -68,7 +68,18 @@ typedef struct ctn_group {
 } ctn_group;
 
 /* A temperature change dT of the elements it targets, from its step on. */
-enum { CTN_TARGET_ALL = 0, CTN_TARGET_ELEMENT = 1, CTN_TARGET_GROUP = 2 };
+enum { CTN_TARGET_ALL = 0, CTN_TARGET_ELEMENT = 1, CTN_TARGET_GROUP = 2, CTN_TARGET_SET = 3 };
+
+/* A named set of nodes or elements (`set`, sets.c): member[i] is 1 for the node or
+ * element index i in it. */
+typedef struct ctn_set {
+    char name[CTN_NAME_MAX];
+    int nodes;       /* 1: a node set; 0: an element set */
+    unsigned char *member;   /* nodes.n or elements.n bytes (at the set's definition) */
+    size_t size;     /* the member array's length */
+    size_t count;    /* members */
+    int line;
+} ctn_set;
 typedef struct ctn_tload {
     int kind;        /* CTN_TARGET_* */
     int target;      /* element index or group index */
@@ -96,6 +107,10 @@ typedef struct ctn_lload {
     int line;
     int drag;        /* 1: wind drag, q_w per unit length of the chord projected on the
                         plane normal to the wind, following the geometry (follow.c) */
+    double dir[3];   /* drag: the wind's unit direction */
+    double cdp, d;   /* drag: cd p [force/length^2] and the bare diameter d [length]:
+                        q_w = cdp d, or cdp (d + 2 t) on iced elements */
+    double t;        /* ice: the sleeve's thickness [length] (0: another lineload) */
 } ctn_lload;
 
 /* A load case (cases.c): the load records tagged CTN_CASE_TAG0 + its index, solved from
@@ -246,6 +261,7 @@ struct ctn_model {
     CTN_ARRAY(ctn_case) cases;      /* load cases, in order */
     CTN_ARRAY(ctn_combo) combos;    /* combinations of cases */
     CTN_ARRAY(ctn_combo_term) terms;
+    CTN_ARRAY(ctn_set) sets;        /* named node and element sets (sets.c) */
     int in_case;                    /* load records now go to the last case */
     double fconv, lconv;            /* the model's force and length units in N and m, 0
                                        when unit-less (values with units: units.c) */
@@ -285,9 +301,9 @@ static inline int ctn_model_load_tag(const ctn_model *m)
 }
 
 /* Convert v, carrying `unit`, to the model's units for a quantity of force^f length^l
- * (units.c); 1 with a message when the unit is unknown, of another dimension, or the
- * model has no units. */
-int ctn_model_convert(ctn_model *m, const char *unit, int f, int l, double *v, char *msg, size_t size);
+ * second^t (t = 2 for masses: kg = N s^2/m) (units.c); 1 with a message when the unit is
+ * unknown, of another dimension, or the model has no units. */
+int ctn_model_convert(ctn_model *m, const char *unit, int f, int l, int t, double *v, char *msg, size_t size);
 
 /* Report an error located at the model's current origin (file:line if known). */
 int ctn_model_error(const ctn_model *m, int code, const char *fmt, ...)
@@ -316,8 +332,18 @@ void ctn_model_add_line_moments(const ctn_model *m, const ctn_loadsel *sel, doub
 /* The uniform load per unstressed length [F/L] on element e of a family with line_load
  * (weight w g and a selection's lineloads), global axes; 0 for other families. */
 void ctn_model_element_line(const ctn_model *m, const ctn_loadsel *sel, size_t e, double q[3]);
-/* wind TARGET: drag q_w [force/length] along the unit direction dir (lineload.c). */
-int ctn_model_add_wind(ctn_model *m, const char *target, const double dir[3], double q);
+/* wind TARGET: drag cdp d [force/length] along the unit direction dir, cdp = cd p and d
+ * the bare diameter (lineload.c). */
+int ctn_model_add_wind(ctn_model *m, const char *target, const double dir[3], double cdp, double d);
+/* ice TARGET: the sleeve's weight q (a lineload) and its thickness t, which widens the
+ * wind's diameter to d + 2 t on the elements it covers in the same solve. */
+int ctn_model_add_ice(ctn_model *m, const char *target, const double q[3], double t);
+/* The drag per unit projected length [force/length] of wind l on element e in a
+ * selection (unweighted): cdp d, or cdp (d + 2 T) where ice of thickness T (the
+ * thickest of the selection's ice on e with a positive weight) covers it. */
+double ctn_model_drag_q(const ctn_model *m, const ctn_lload *l, const ctn_loadsel *sel, size_t e);
+/* The unit direction of wind l. */
+void ctn_lload_dir(const ctn_lload *l, double u[3]);
 /* Whether lineload l acts on element e (cable elements of its target). */
 int ctn_lload_on(const ctn_model *m, const ctn_lload *l, size_t e);
 /* Checks made when the model is solved: every lineload reaches an element, and none a
@@ -351,6 +377,19 @@ int ctn_model_find_section(const ctn_model *m, const char *name);
  * an undefined id or name is one too. */
 int ctn_model_load_target(ctn_model *m, const char *what, const char *target,
                           int (*accepts)(const ctn_model *, size_t), const char *refusal, int *kind, int *index);
+/* Sets (sets.c). The index of set `name`, -1 if none. */
+int ctn_model_find_set(const ctn_model *m, const char *name);
+/* Whether element e is in the target (kind, index) of a load: all, an element, a group
+ * or an element set (springs are in none but their own id: the caller tests families). */
+int ctn_model_target_has(const ctn_model *m, int kind, int index, size_t e);
+/* A new set `name` of nodes (nodes = 1) or elements with the given membership (n bytes,
+ * copied); an error if the name is taken or the set is empty. */
+int ctn_model_add_set(ctn_model *m, const char *name, int nodes, const unsigned char *member, size_t n);
+/* Free the sets (model.c). */
+void ctn_model_free_sets(ctn_model *m);
+/* The generated cable with end node ids a and b (in that order or reversed: *reversed),
+ * -1 with a model error when there is none or more than one. */
+int ctn_model_find_cable(ctn_model *m, const char *what, int a, int b, int *reversed);
 /* Group index of a name, -1 if none (groups.c). */
 int ctn_model_find_group(const ctn_model *m, const char *name);
 /* Group index of name, created (named at the current line) if new; a model error if the

@@ -14,19 +14,19 @@
 
 typedef struct unit_def {
     const char *name;
-    int f, l;                            /* powers of force and length */
-    double si;                           /* value in N^f m^l */
+    int f, l, t;                         /* powers of force, length and time (seconds) */
+    double si;                           /* value in N^f m^l s^t */
 } unit_def;
 
 static const unit_def units[] = {
-    { "N", 1, 0, 1.0 },        { "kN", 1, 0, 1e3 },       { "MN", 1, 0, 1e6 },
-    { "lbf", 1, 0, CTN_LBF },  { "kip", 1, 0, 1e3 * CTN_LBF },
-    { "mm", 0, 1, 1e-3 },      { "cm", 0, 1, 1e-2 },      { "m", 0, 1, 1.0 },
-    { "km", 0, 1, 1e3 },       { "in", 0, 1, 0.0254 },    { "ft", 0, 1, 0.3048 },
-    { "Pa", 1, -2, 1.0 },      { "kPa", 1, -2, 1e3 },     { "MPa", 1, -2, 1e6 },
-    { "GPa", 1, -2, 1e9 },     { "psi", 1, -2, CTN_LBF / (0.0254 * 0.0254) },
-    { "ksi", 1, -2, 1e3 * CTN_LBF / (0.0254 * 0.0254) },
-    { "kg", 1, -1, 1.0 },      { "t", 1, -1, 1e3 },       /* mass: N s^2/m (seconds fixed) */
+    { "N", 1, 0, 0, 1.0 },        { "kN", 1, 0, 0, 1e3 },       { "MN", 1, 0, 0, 1e6 },
+    { "lbf", 1, 0, 0, CTN_LBF },  { "kip", 1, 0, 0, 1e3 * CTN_LBF },
+    { "mm", 0, 1, 0, 1e-3 },      { "cm", 0, 1, 0, 1e-2 },      { "m", 0, 1, 0, 1.0 },
+    { "km", 0, 1, 0, 1e3 },       { "in", 0, 1, 0, 0.0254 },    { "ft", 0, 1, 0, 0.3048 },
+    { "Pa", 1, -2, 0, 1.0 },      { "kPa", 1, -2, 0, 1e3 },     { "MPa", 1, -2, 0, 1e6 },
+    { "GPa", 1, -2, 0, 1e9 },     { "psi", 1, -2, 0, CTN_LBF / (0.0254 * 0.0254) },
+    { "ksi", 1, -2, 0, 1e3 * CTN_LBF / (0.0254 * 0.0254) },
+    { "kg", 1, -1, 2, 1.0 },      { "t", 1, -1, 2, 1e3 },       /* mass: N s^2/m */
 };
 
 static const unit_def *find_unit(const char *s, size_t n)
@@ -59,10 +59,10 @@ int ctn_model_set_units(ctn_model *m, const char *force, const char *length)
 /* The factor to SI and the powers of a unit expression: NAME[POWER] factors joined by
  * '*' or '.', then at most one '/' and the factors of the denominator. 0 if malformed or
  * unknown. */
-static int parse_unit(const char *s, double *si, int *f, int *l)
+static int parse_unit(const char *s, double *si, int *f, int *l, int *t)
 {
     int sign = 1, any = 0;
-    *si = 1, *f = 0, *l = 0;
+    *si = 1, *f = 0, *l = 0, *t = 0;
     while (*s) {
         size_t n = 0;
         while (isalpha((unsigned char)s[n])) n++;
@@ -76,6 +76,7 @@ static int parse_unit(const char *s, double *si, int *f, int *l)
         *si *= sign > 0 ? pow(u->si, pw) : 1 / pow(u->si, pw);
         *f += sign * pw * u->f;
         *l += sign * pw * u->l;
+        *t += sign * pw * u->t;
         any = 1;
         if (*s == '/' && sign > 0) sign = -1, s++;
         else if (*s == '*' || *s == '.') s++;
@@ -84,33 +85,38 @@ static int parse_unit(const char *s, double *si, int *f, int *l)
     return any;
 }
 
-/* A dimension as words: "force/length^2". */
-static const char *dim_name(int f, int l, char *buf, size_t size)
+/* A dimension as words: "force/length^2", "mass per length". */
+static const char *dim_name(int f, int l, int t, char *buf, size_t size)
 {
-    if (f == 0 && l == 0) snprintf(buf, size, "no dimension");
-    else if (l == 0) snprintf(buf, size, "force%s", f == 1 ? "" : "^?");
-    else if (f == 0) snprintf(buf, size, "length%s%d", l == 1 ? "" : "^", l);
-    else snprintf(buf, size, "force%s%s/length%s%d", f == 1 ? "" : "^", "", l == -1 ? "" : "^", -l);
-    if (f == 0 && l == 1) snprintf(buf, size, "length");
-    if (f == 1 && l == -1) snprintf(buf, size, "force/length");
-    if (f == 1 && l == 1) snprintf(buf, size, "force length");
-    if (f == 1 && l == -4) snprintf(buf, size, "density (mass/length^3)");
+    if (t == 2 && f == 1 && l == -1) snprintf(buf, size, "mass (force s^2/length)");
+    else if (t == 2 && f == 1 && l == -2) snprintf(buf, size, "mass per length");
+    else if (t == 2 && f == 1 && l == -4) snprintf(buf, size, "density (mass/length^3)");
+    else if (t == 2 && f == 1 && l < -2) snprintf(buf, size, "mass/length^%d", -(l + 1));
+    else if (t) snprintf(buf, size, "force^%d length^%d s^%d", f, l, t);
+    else if (f == 0 && l == 0) snprintf(buf, size, "no dimension");
+    else if (f == 0 && l == 1) snprintf(buf, size, "length");
+    else if (f == 0) snprintf(buf, size, "length^%d", l);
+    else if (f == 1 && l == 0) snprintf(buf, size, "force");
+    else if (f == 1 && l == -1) snprintf(buf, size, "force/length");
+    else if (f == 1 && l == 1) snprintf(buf, size, "force length");
+    else if (f == 1 && l < 0) snprintf(buf, size, "force/length^%d", -l);
+    else snprintf(buf, size, "force^%d length^%d", f, l);
     return buf;
 }
 
-int ctn_model_convert(ctn_model *m, const char *unit, int f, int l, double *v, char *msg, size_t size)
+int ctn_model_convert(ctn_model *m, const char *unit, int f, int l, int t, double *v, char *msg, size_t size)
 {
     double si;
-    int uf, ul;
+    int uf, ul, ut;
     char a[32], b[32];
-    if (!parse_unit(unit, &si, &uf, &ul)) {
+    if (!parse_unit(unit, &si, &uf, &ul, &ut)) {
         snprintf(msg, size, "unknown unit '%.40s' (units: N kN MN lbf kip, mm cm m km in ft, Pa kPa MPa GPa psi "
                  "ksi, kg t, with powers and one '/': mm2, kN/m, N/mm2, kg/m3)", unit);
         return 1;
     }
-    if (uf != f || ul != l) {
-        snprintf(msg, size, "the unit '%.40s' is a %s, the value a %s", unit, dim_name(uf, ul, a, sizeof a),
-                 dim_name(f, l, b, sizeof b));
+    if (uf != f || ul != l || ut != t) {
+        snprintf(msg, size, "the unit '%.40s' is a %s, the value a %s", unit, dim_name(uf, ul, ut, a, sizeof a),
+                 dim_name(f, l, t, b, sizeof b));
         return 1;
     }
     if (!(m->fconv > 0)) {

@@ -16,6 +16,7 @@ typedef struct cable_chain {
     const ctn_model *m;
     const ctn_solution *s;
     const ctn_cable *c;
+    const double *d;          /* the displacements of the state measured, 3 per node */
 } cable_chain;
 
 /* Node index of node j of the cable's chain (its elements run from end 0 to end 1). */
@@ -28,7 +29,7 @@ static void point(const void *ud, size_t j, double x[3])
 {
     const cable_chain *cc = ud;
     size_t i = chain_node(cc, j);
-    for (int k = 0; k < 3; k++) x[k] = cc->m->nodes.v[i].X[k] + ctn_solution_displacements(cc->s)[3 * i + (size_t)k];
+    for (int k = 0; k < 3; k++) x[k] = cc->m->nodes.v[i].X[k] + cc->d[3 * i + (size_t)k];
 }
 
 static int kink(const void *ud, size_t j)
@@ -46,6 +47,7 @@ static int cable_chain_of(const ctn_model *m, const ctn_solution *s, size_t i, c
     cc->m = m;
     cc->s = s;
     cc->c = &m->cables.v[i];
+    cc->d = ctn_solution_displacements(s);
     ch->n = cc->c->count;
     ch->point = point;
     ch->kink = kink;
@@ -69,4 +71,15 @@ int ctn_solution_cable_max_sag_from_chord(const ctn_model *m, const ctn_solution
     int rc = d ? cable_chain_of(m, s, i, &cc, &ch) : CTN_ERR_INVALID;
     if (!rc) *d = ctn_sag_max_from_chord(&ch);
     return rc ? rc : isfinite(*d) ? CTN_OK : CTN_ERR_DOMAIN;
+}
+
+int ctn_solution_step_cable_sag(const ctn_model *m, const ctn_solution *s, size_t k, size_t i, double *sag)
+{
+    cable_chain cc;
+    ctn_sag_chain ch;
+    ctn_step_result st;
+    int rc = sag ? cable_chain_of(m, s, i, &cc, &ch) : CTN_ERR_INVALID;
+    if (!rc) rc = ctn_solution_step(s, k, &st);
+    if (!rc) cc.d = st.d;
+    return rc ? rc : ctn_sag_mid(&ch, sag);
 }

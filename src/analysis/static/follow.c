@@ -52,7 +52,7 @@ static double segment_q(const ctn_model *m, const struct ctn_follow *f, size_t s
     if (f->src[s] < 0) return element_q_sel(m, (size_t)f->elem[s], sel);
     const ctn_lload *l = &m->lloads.v[f->src[s]];
     double w = ctn_loadsel_weight(sel, l->step);
-    return w == 0 ? 0 : w * sqrt(l->q[0] * l->q[0] + l->q[1] * l->q[1] + l->q[2] * l->q[2]);
+    return w == 0 ? 0 : w * ctn_model_drag_q(m, l, sel, (size_t)f->elem[s]);
 }
 
 /* The same at the end of model step k, or (k >= the step count) in case k - steps alone. */
@@ -90,9 +90,9 @@ static size_t scan(const ctn_model *m, struct ctn_follow *f, const double *g)
     }
     for (size_t j = 0; j < m->lloads.n; j++) {
         const ctn_lload *l = &m->lloads.v[j];
-        double qn = sqrt(l->q[0] * l->q[0] + l->q[1] * l->q[1] + l->q[2] * l->q[2]);
-        if (!l->drag || !(qn > 0)) continue;
-        double u[3] = { l->q[0] / qn, l->q[1] / qn, l->q[2] / qn };
+        double u[3];
+        if (!l->drag || !(l->cdp > 0)) continue;
+        ctn_lload_dir(l, u);
         for (size_t e = 0; e < m->elements.n; e++) {
             if (!ctn_lload_on(m, l, e)) continue;
             const int *nd = ctn_elem_nodes(m, e);
