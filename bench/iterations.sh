@@ -21,20 +21,7 @@ root=$(cd "$here/.." && pwd)
 dir=${ITER_DIR:-/tmp/catena-iterations}
 mkdir -p "$dir"
 
-b1() {   # b1 N > file
-    python3 - "$1" <<'PY'
-import sys
-n, L, s, w = int(sys.argv[1]), 1000.0, 1.0, 0.1
-print("units kN m\nmaterial steel E=2.0e8\nsection c material=steel A=3.14e-4")
-for i in range(n + 1):
-    x = L * i / n
-    print("node %d %r %r 0%s" % (i + 1, x, -4 * s * x * (L - x) / L ** 2, " fix=xyz" if i in (0, n) else " fix=z"))
-for i in range(n):
-    print("element %d %d %d section=c eps0=1e-3" % (i + 1, i + 1, i + 2))
-for i in range(1, n):
-    print("load %d 0 %r 0" % (i + 1, -w * L / n))
-PY
-}
+b1() { python3 "$here/b1_cable.py" "$1"; }   # b1 N > file
 
 # run BIN MODEL: "iterations factorizations wall-s" of catena's own process ("- -" and
 # the reason when it did not converge)

@@ -23,22 +23,7 @@ set -u
 cli_init loaded_starts "${1:-}"
 [ "$have_python" = 1 ] || { echo "loaded_starts: python3 missing: skipped"; cli_summary; exit $?; }
 
-b1() {   # b1 N SAG EXTRA_LINE
-    python3 - "$1" "$2" "$3" <<'PY'
-import sys
-n, s, extra = int(sys.argv[1]), float(sys.argv[2]), sys.argv[3]
-L, w = 1000.0, 0.1
-print("units kN m\nmaterial steel E=2.0e8\nsection c material=steel A=3.14e-4")
-for i in range(n + 1):
-    x = L * i / n
-    print("node %d %r %r 0%s" % (i + 1, x, -4 * s * x * (L - x) / L ** 2, " fix=xyz" if i in (0, n) else " fix=z"))
-for i in range(n):
-    print("element %d %d %d section=c eps0=1e-3" % (i + 1, i + 1, i + 2))
-for i in range(1, n):
-    print("load %d 0 %r 0" % (i + 1, -w * L / n))
-if extra: print(extra)
-PY
-}
+b1() { python3 bench/b1_cable.py "$@"; }   # b1 N SAG EXTRA_LINE (cli_init is at the root)
 
 compare() {   # compare A.json B.json WHAT: mid-span node equal to 1e-9 of the sag
     python3 - "$1" "$2" "$3" <<'PY'
