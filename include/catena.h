@@ -19,7 +19,9 @@
  *                      then asked for the stability of its solution and for its natural
  *                      modes), Newton-Raphson / globalized Newton / arc-length,
  *                      convergence reasons, displacements, reactions, element forces,
- *                      per-step results, modes (frequencies, shapes, participation)
+ *                      modes (frequencies, shapes, participation); it includes
+ *   catena/results.h   the results per load step (nodes, elements, catenaries, beams,
+ *                      groups, utilisation)
  *   catena/analytic.h  closed forms of a single cable: catenary, elastic catenary,
  *                      parabola, funicular polygon (reference solutions)
  *   catena/compare.h   a model's single span against those closed forms; the length
