@@ -11,6 +11,10 @@
  * linear_solver= asked, the static analysis uses "petsc" (the arc-length method
  * "petsc-ldl"). Built without PETSc and MPI (catena --version says which), create
  * returns CTN_ERR_INVALID. docs/parallel.md.
+ *
+ * MPI and PETSc are not linked into the library: they live in a module,
+ * libcatena_mpi.so, loaded by ctn_parallel_create and ctn_parallel_job_init (looked for
+ * beside the library's code, in ../lib of an installation, then on the loader's path).
  */
 #ifndef CATENA_PARALLEL_H
 #define CATENA_PARALLEL_H
@@ -38,8 +42,17 @@ int ctn_parallel_rank(const ctn_parallel *p);
 int ctn_parallel_size(const ctn_parallel *p);
 /* *v <- the largest *v over the processes (a collective call; p NULL: unchanged). */
 int ctn_parallel_max(ctn_parallel *p, int *v);
-/* 1 if this catena was built with PETSc and MPI, else 0. */
+/* 1 if this catena was built with PETSc and MPI and its module loads, else 0. */
 int ctn_parallel_available(void);
+
+/* For a program that leaves MPI and PETSc to catena (the catena command): initialise
+ * both through the module, with PETSc's options argv[0 .. argc-1] (argv[0] the
+ * program's name); ctn_parallel_job_finalize finalises them (after every handle is
+ * destroyed). CTN_ERR_INVALID (message in ctx) if the module is not there. */
+typedef struct ctn_parallel_job ctn_parallel_job;
+int ctn_parallel_job_init(ctn_ctx *ctx, int argc, char **argv, ctn_parallel_job **out);
+/* NULL or *job NULL: no-op; *job set to NULL. */
+void ctn_parallel_job_finalize(ctn_parallel_job **job);
 
 /* The processes a solution was computed on (1 without a communicator). */
 int ctn_solution_ranks(const ctn_solution *s);

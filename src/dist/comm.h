@@ -14,6 +14,7 @@
 typedef enum ctn_reduce_op { CTN_REDUCE_SUM = 0, CTN_REDUCE_MAX = 1, CTN_REDUCE_MIN = 2 } ctn_reduce_op;
 
 typedef struct ctn_layout ctn_layout;
+struct ctn_linsolve_ops;
 
 typedef struct ctn_comm_ops {
     const char *name;                                  /* "serial", "mpi" */
@@ -24,6 +25,9 @@ typedef struct ctn_comm_ops {
     int (*allreduce)(void *impl, double *v, size_t n, ctn_reduce_op op);
     /* the ghost entries of v (after the owned ones, lay's order) <- their owners' values */
     int (*ghosts)(void *impl, const ctn_layout *lay, double *v);
+    /* the linear solvers that run over this communicator's processes (NULL-terminated;
+     * NULL: none beyond the registry's, linalg/linsolve.c) */
+    const struct ctn_linsolve_ops *const *solvers;
 } ctn_comm_ops;
 
 typedef struct ctn_comm {

@@ -34,15 +34,31 @@ static double cpu_clock(clockid_t id)
 
 static const ctn_linsolve_ops *const solvers[] = {
     &ctn_cholmod_ll_ops, &ctn_cholmod_ldl_ops,
-#ifdef CTN_HAVE_PETSC
-    &ctn_petsc_mumps_ops, &ctn_petsc_ldl_ops, &ctn_petsc_cg_ops, &ctn_petsc_inertia_ops,
-#endif
 };
+
+/* The PETSc solvers' names: they come with the MPI module (dist/plugin.h) on the
+ * communicator it sets, so a name is known before the module is loaded. */
+static const char *const module_solvers[] = { "petsc", "petsc-ldl", "petsc-cg", "petsc-inertia" };
+
+int ctn_linsolve_module_name(const char *name)
+{
+    for (size_t i = 0; name && i < sizeof module_solvers / sizeof *module_solvers; i++)
+        if (!strcmp(module_solvers[i], name)) return 1;
+    return 0;
+}
+
+/* the solver of that name on ctx's communicator, else the registry's */
+static const ctn_linsolve_ops *find_ctx(const ctn_ctx *ctx, const char *name)
+{
+    const ctn_comm *c = ctn_ctx_comm(ctx);
+    for (const struct ctn_linsolve_ops *const *s = c->ops->solvers; name && s && *s; s++)
+        if (!strcmp((*s)->name, name)) return *s;
+    return ctn_linsolve_find(name);
+}
 
 const char *ctn_linsolve_default(const ctn_ctx *ctx, const char *name)
 {
-    const ctn_comm *c = ctn_ctx_comm(ctx);
-    int mpi = !strcmp(c->ops->name, "mpi") && ctn_linsolve_find("petsc");
+    int mpi = find_ctx(ctx, "petsc") != NULL;
     if (name && !mpi && !strcmp(name, "cholmod-inertia")) return "cholmod-ldl";
     if (!name || !mpi) return name;
     return !strcmp(name, "cholmod")          ? "petsc"
@@ -94,7 +110,10 @@ int ctn_linsolve_create_opts(ctn_ctx *ctx, const char *name, const ctn_pattern *
     }
     int threads = o.threads;
     *out = NULL;
-    const ctn_linsolve_ops *ops = ctn_linsolve_find(name);
+    const ctn_linsolve_ops *ops = find_ctx(ctx, name);
+    if (!ops && ctn_linsolve_module_name(name))
+        return ctn_error(ctx, CTN_ERR_INVALID, "linear solver '%s' runs in an MPI job: under mpirun, or with --petsc "
+                         "(docs/parallel.md)", name);
     if (!ops) return ctn_error(ctx, CTN_ERR_INVALID, "unknown linear solver '%s'", name ? name : "");
     ctn_linsolve *s = ctn_calloc(ctx, 1, sizeof *s);
     if (!s) return CTN_ERR_NOMEM;

@@ -95,11 +95,15 @@ typedef struct ctn_linsolve_ops {
 
 typedef struct ctn_linsolve ctn_linsolve;
 
-/* The registered solver of that name, NULL if none. */
+/* The registered solver of that name, NULL if none (the process's own: the PETSc ones
+ * are found by ctn_linsolve_create on an MPI communicator, dist/plugin.h). */
 const ctn_linsolve_ops *ctn_linsolve_find(const char *name);
+/* 1 if name is one of the MPI module's solvers ("petsc", "petsc-ldl", "petsc-cg",
+ * "petsc-inertia"), loaded or not. */
+int ctn_linsolve_module_name(const char *name);
 /* The solver an analysis of ctx uses for the one it names ("cholmod" or "cholmod-ldl",
  * a strategy's default or the file's; "cholmod-inertia": the stability check's count,
- * "cholmod-ldl" in one process): on an MPI communicator (dist/comm_mpi.h) the PETSc one
+ * "cholmod-ldl" in one process): on an MPI communicator (dist/plugin.h) the PETSc one
  * of the same kind ("petsc", "petsc-ldl", "petsc-inertia"), else the name itself. */
 const char *ctn_linsolve_default(const ctn_ctx *ctx, const char *name);
 /* The solver's label (ops->label, else its name). */
@@ -165,9 +169,5 @@ void ctn_blas_name(char *buf, size_t size);
 /* The backends (one file each). */
 extern const ctn_linsolve_ops ctn_cholmod_ll_ops;
 extern const ctn_linsolve_ops ctn_cholmod_ldl_ops;
-#ifdef CTN_HAVE_PETSC
-extern const ctn_linsolve_ops ctn_petsc_mumps_ops, ctn_petsc_ldl_ops, ctn_petsc_cg_ops,   /* backends/petsc/ */
-    ctn_petsc_inertia_ops;
-#endif
 
 #endif

@@ -4,6 +4,7 @@
 #include "problem/dynamics_options.h"
 
 #include "core/versioned.h"
+#include "dist/plugin.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -97,10 +98,11 @@ int ctn_solve_options_fault(const ctn_solve_options *opt, char *msg, size_t size
         return snprintf(msg, size, "solve: threads must be between 0 and 1024 (got %d)", opt->threads), 1;
     if (opt->reuse != 0 && opt->reuse != 1)
         return snprintf(msg, size, "solve: reuse must be 0 or 1 (got %d)", opt->reuse), 1;
-    if (opt->linear_solver && !ctn_linsolve_find(opt->linear_solver) && !strncmp(opt->linear_solver, "petsc", 5))
+    int module = ctn_linsolve_module_name(opt->linear_solver);
+    if (module && !ctn_mpi_module_built())
         return snprintf(msg, size, "solve: linear solver '%.40s' needs catena built with PETSc and MPI (docs/parallel.md)",
                         opt->linear_solver), 1;
-    if (opt->linear_solver && !ctn_linsolve_find(opt->linear_solver))
+    if (opt->linear_solver && !module && !ctn_linsolve_find(opt->linear_solver))
         return snprintf(msg, size, "solve: unknown linear solver '%.40s' (expected cholmod or cholmod-ldl)", opt->linear_solver), 1;
     if (ctn_buckling_options_fault(&opt->buckling, msg, size)) return 1;
     if (ctn_dynamics_options_fault(&opt->dynamics, msg, size)) return 1;

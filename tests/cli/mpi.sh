@@ -14,7 +14,11 @@
 #   output_dir      -o DIR on 2 ranks: the result set written once, equal to the serial;
 #   petsc_options   --petsc -ksp_type cg -pc_type jacobi ... and linear_solver=petsc-cg;
 #   batch           `catena batch` of three models on 2 ranks: each result.json the
-#                   serial solve's bytes.
+#                   serial solve's bytes;
+#   module          PETSc and MPI live in libcatena_mpi.so (src/dist/plugin.h): the
+#                   command maps none of their libraries, a `petsc` solver asked for
+#                   outside an MPI job is refused naming mpirun, and the module found
+#                   beside an installed command (../lib) runs it.
 # Two models are compared by their verdicts only (converged, reason, stable), their
 # answers being round-off: tests/models/trust/paper_E2e14.cable (E = 2e14: the forces
 # are resolved to 1e-6 by any solver, the round-off floor) and the mode shapes of
@@ -131,5 +135,30 @@ for m in s250.8777 net elastic_support; do
 done
 grep -q "^batch: 3 models over 2 ranks" "$T/out" || WHY+=("batch: $(head -c 200 "$T/out")")
 finish batch
+
+# the MPI module: loaded only for a job
+libs=$(ldd "$BIN" 2>/dev/null)
+case $libs in *libpetsc* | *libmpi*) WHY+=("module: the command links PETSc or MPI: $(grep -E 'petsc|mpi' <<<"$libs" | head -3)") ;; esac
+[ -f "$(dirname "$BIN")/libcatena_mpi.so" ] || WHY+=("module: no libcatena_mpi.so beside $BIN")
+grep -v "^solve" examples/paper/s250.8777.cable >"$T/ps.cable"
+echo "solve linear_solver=petsc" >>"$T/ps.cable"
+"$BIN" solve "$T/ps.cable" >"$T/out" 2>"$T/err"
+code=$?
+[ "$code" = 4 ] && grep -q "linear solver 'petsc' runs in an MPI job: under mpirun, or with --petsc" "$T/err" ||
+    WHY+=("module: linear_solver=petsc outside a job: exit $code: $(head -c 300 "$T/err")")
+"$BIN" solve "$T/ps.cable" --json --petsc >"$T/par.json" 2>"$T/err" || WHY+=("module: --petsc: exit $?: $(head -c 300 "$T/err")")
+grep -q '"ranks":	1' "$T/par.json" || WHY+=("module: --petsc: no ranks 1 in the JSON")
+# an installed command finds the module in ../lib (the installation's library directory)
+BUILD=$(dirname "$BIN")
+if cmake --install "$BUILD" --prefix "$T/prefix" >"$T/install.log" 2>&1; then
+    inst=$(find "$T/prefix" -name libcatena_mpi.so | head -1)
+    [ -n "$inst" ] || WHY+=("module: libcatena_mpi.so not installed")
+    "$T/prefix/bin/catena" solve examples/paper/s250.8777.cable --json --petsc >"$T/par.json" 2>"$T/err" ||
+        WHY+=("module: installed command with --petsc: exit $?: $(head -c 300 "$T/err")")
+    grep -q '"ranks":	1' "$T/par.json" || WHY+=("module: the installed command did not run PETSc")
+else
+    WHY+=("module: cmake --install failed: $(tail -3 "$T/install.log")")
+fi
+finish module
 
 cli_summary

@@ -2,9 +2,9 @@
  * (MUMPS LDL', indefinite, with inertia) and "petsc-cg" (CG + GAMG). PETSc's error
  * handler is the returning one around every call (the library prints nothing); a PETSc
  * error becomes a status with PETSc's message in the context. */
-#include "linalg/backends/petsc/petsc.h"
+#include "plugin/mpi/petsc/petsc.h"
 
-#include "dist/comm_mpi.h"
+#include "plugin/mpi/comm_mpi.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -2,7 +2,7 @@
  * compressed rows PETSc takes (petsc.h). Columns are visited in order: a row's entries
  * below the diagonal come with its own column (rows ascending, the diagonal last), the
  * ones right of it with the later columns, so every row's columns come out sorted. */
-#include "linalg/backends/petsc/petsc.h"
+#include "plugin/mpi/petsc/petsc.h"
 
 static int owned(const ctn_petsc_rows *r, PetscInt i) { return i >= r->lo && i < r->hi; }
 

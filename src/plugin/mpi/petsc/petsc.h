@@ -1,12 +1,12 @@
 /* Internal: the PETSc linear solvers (petsc_backend.c): the tangent's rows a process
- * owns in a PETSc matrix over the context's communicator (MPI, dist/comm_mpi.h; one
+ * owns in a PETSc matrix over the context's communicator (MPI, plugin/mpi/comm_mpi.h; one
  * process without one), factored by MUMPS (KSPPREONLY + PCCHOLESKY) or solved by a
  * Krylov method (CG + GAMG), PETSc options passed through (KSPSetFromOptions). The
  * model is replicated: every process holds the whole pattern and values and passes its
  * owned rows; the solution reaches every process whole. The only place that includes
  * PETSc's headers, with comm_mpi.c. */
-#ifndef CTN_LINALG_PETSC_H
-#define CTN_LINALG_PETSC_H
+#ifndef CTN_PLUGIN_MPI_PETSC_H
+#define CTN_PLUGIN_MPI_PETSC_H
 
 #include "linalg/linsolve.h"
 

@@ -1,12 +1,12 @@
-/* The MPI communicator (comm_mpi.h) and the public handle that sets it on a context
- * (catena/parallel.h). Reductions gather every process's values and combine them in rank
+/* The MPI communicator (comm_mpi.h) and the module's handle that sets it on a context
+ * (the library's ctn_parallel_create, dist/parallel.c, calls it through plugin.h). Reductions gather every process's values and combine them in rank
  * order on every process: the same bits everywhere, whatever MPI's own reduction tree
  * would have done, so that a decision taken on a reduced value (a converged residual) is
  * the same decision on every rank. */
-#include "dist/comm_mpi.h"
+#include "plugin/mpi/comm_mpi.h"
 
-#include "catena/parallel.h"
 #include "core/ctx.h"
+#include "plugin/mpi/petsc/petsc.h"
 
 #include <math.h>
 
@@ -18,12 +18,12 @@ typedef struct mpi_comm {
 
 #define CTN_MPI_REDUCE_MAX 16  /* values per reduction in one exchange */
 
-struct ctn_parallel {
+typedef struct mpi_handle {
     ctn_ctx *ctx;
     ctn_comm comm;
     mpi_comm impl;
     const ctn_comm *before;    /* the context's communicator before (restored) */
-};
+} mpi_handle;
 
 static int mpi_rank(const void *impl) { return ((const mpi_comm *)impl)->rank; }
 
@@ -62,21 +62,25 @@ static int mpi_ghosts(void *impl, const ctn_layout *lay, double *v)
     return CTN_ERR_INVALID;
 }
 
-const ctn_comm_ops ctn_comm_mpi_ops = { "mpi", mpi_rank, mpi_size, mpi_allreduce, mpi_ghosts };
+/* the PETSc solvers: over this communicator's processes */
+static const ctn_linsolve_ops *const mpi_solvers[] = {
+    &ctn_petsc_mumps_ops, &ctn_petsc_ldl_ops, &ctn_petsc_cg_ops, &ctn_petsc_inertia_ops, NULL,
+};
+
+const ctn_comm_ops ctn_comm_mpi_ops = { "mpi", mpi_rank, mpi_size, mpi_allreduce, mpi_ghosts, mpi_solvers };
 
 MPI_Comm ctn_comm_mpi_handle(const ctn_comm *c)
 {
     return c && c->ops == &ctn_comm_mpi_ops ? ((const mpi_comm *)c->impl)->comm : MPI_COMM_SELF;
 }
 
-int ctn_parallel_create(ctn_ctx *ctx, const void *mpi_comm_ptr, ctn_parallel **out)
+int ctn_mpi_handle_create(ctn_ctx *ctx, const void *mpi_comm_ptr, void **out)
 {
     int init = 0;
-    if (!ctx || !out) return CTN_ERR_INVALID;
     *out = NULL;
     if (MPI_Initialized(&init) != MPI_SUCCESS || !init)
         return ctn_error(ctx, CTN_ERR_INVALID, "ctn_parallel_create: MPI is not initialised (the caller initialises it)");
-    ctn_parallel *p = ctn_calloc(ctx, 1, sizeof *p);
+    mpi_handle *p = ctn_calloc(ctx, 1, sizeof *p);
     if (!p) return CTN_ERR_NOMEM;
     MPI_Comm given = mpi_comm_ptr ? *(const MPI_Comm *)mpi_comm_ptr : MPI_COMM_WORLD;
     if (MPI_Comm_dup(given, &p->impl.comm) != MPI_SUCCESS) {
@@ -99,36 +103,32 @@ int ctn_parallel_create(ctn_ctx *ctx, const void *mpi_comm_ptr, ctn_parallel **o
     return CTN_OK;
 }
 
-int ctn_parallel_attach(ctn_parallel *p, ctn_ctx *ctx)
+int ctn_mpi_handle_attach(void *h, ctn_ctx *ctx)
 {
-    if (!p || !ctx) return CTN_ERR_INVALID;
+    mpi_handle *p = h;
     ctn_ctx_set_comm(ctx, &p->comm);
     return CTN_OK;
 }
 
-void ctn_parallel_destroy(ctn_parallel **pp)
+void ctn_mpi_handle_destroy(void *h)
 {
-    if (!pp || !*pp) return;
-    ctn_parallel *p = *pp;
+    mpi_handle *p = h;
     if (p->ctx->comm == &p->comm) ctn_ctx_set_comm(p->ctx, p->before);
     int fin = 0;
     MPI_Finalized(&fin);
     if (!fin) MPI_Comm_free(&p->impl.comm);
     ctn_free(p->impl.buf);
     ctn_free(p);
-    *pp = NULL;
 }
 
-int ctn_parallel_rank(const ctn_parallel *p) { return p ? p->impl.rank : 0; }
+int ctn_mpi_handle_rank(const void *h) { return ((const mpi_handle *)h)->impl.rank; }
 
-int ctn_parallel_size(const ctn_parallel *p) { return p ? p->impl.size : 1; }
+int ctn_mpi_handle_size(const void *h) { return ((const mpi_handle *)h)->impl.size; }
 
-int ctn_parallel_max(ctn_parallel *p, int *v)
+int ctn_mpi_handle_max(void *h, int *v)
 {
-    if (!p) return CTN_OK;
+    mpi_handle *p = h;
     int in = *v;
     if (MPI_Allreduce(&in, v, 1, MPI_INT, MPI_MAX, p->impl.comm) != MPI_SUCCESS) return CTN_ERR_IO;
     return CTN_OK;
 }
-
-int ctn_parallel_available(void) { return 1; }
