@@ -213,7 +213,7 @@ static void solve_options(const bench_opts *o, stamps *st, ctn_solve_options *op
 }
 
 /* First iteration k with |dd_k| <= dtol (|d| + L_ref), |d| the final displacement norm
- * and L_ref over-estimated (THEORY.md's increment test, applied afterwards); 0 if none.
+ * and L_ref over-estimated (docs/solver.md's increment test, applied afterwards); 0 if none.
  * Tells when the iteration reached the solution, whatever the residual test said. */
 static int first_increment_met(const ctn_solution *s, double dtol, size_t nn)
 {

@@ -3,7 +3,7 @@
  *   T = sqrt(H^2 + (V - w s)^2),  z = depth below the left support,
  * are integrated numerically (RK4, independent of the closed form) with the solved H, V
  * and must land on the right support; plus equilibrium, the EA -> infinity limit, the
- * taut (L0 < chord) and slack cases and the THEORY.md mid-span formula. */
+ * taut (L0 < chord) and slack cases and docs/analytic.md's mid-span formula. */
 #include "catena/analytic.h"
 #include "check.h"
 
@@ -124,7 +124,7 @@ static void test_inextensible_limit(void)
         }
 }
 
-/* Level span: V = w L0 / 2 and THEORY's z(L0/2) = w L0^2 / (8 EA) + (T_support - H) / w. */
+/* Level span: V = w L0 / 2 and the elastic catenary's z(L0/2) = w L0^2 / (8 EA) + (T_support - H) / w. */
 static void test_level_midspan(void)
 {
     const double EA[] = {50.0, 1e4, 1e8};

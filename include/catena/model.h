@@ -26,7 +26,7 @@ enum { CTN_FIX_X = 1, CTN_FIX_Y = 2, CTN_FIX_Z = 4, CTN_FIX_ALL = 7 };
  * when it is solved (ctn_model_validate). CTN_FIX_ALL stays the three translations. */
 enum { CTN_FIX_RX = 8, CTN_FIX_RY = 16, CTN_FIX_RZ = 32, CTN_FIX_ROT = 56, CTN_FIX_ALL6 = 63 };
 
-/* Strain measure of a material (shared/THEORY.md). */
+/* Strain measure of a material (docs/theory.md). */
 typedef enum ctn_strain {
     CTN_STRAIN_GREEN_LAGRANGE = 0, /* eps = (lambda^2 - 1)/2, N = E A eps lambda (paper) */
     CTN_STRAIN_ENGINEERING = 1     /* eps = lambda - 1, N = E A eps (Irvine) */

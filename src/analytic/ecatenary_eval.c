@@ -2,7 +2,7 @@
  * abscissa x through the root of x(s) = x. With V(s) = V_left - w s:
  *   x(s) = H s / EA + (H / w) [asinh(V_left / H) - asinh(V(s) / H)]
  *   y(s) = -s (V_left + V(s)) [1 / (2 EA) + 1 / (T(0) + T(s))]
- * (the THEORY.md form with T(0) - T(s) = w s (V_left + V(s)) / (T(0) + T(s))). */
+ * (docs/analytic.md's form with T(0) - T(s) = w s (V_left + V(s)) / (T(0) + T(s))). */
 #include "analytic/an.h"
 
 #include <math.h>
