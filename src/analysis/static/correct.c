@@ -135,9 +135,14 @@ static int lm_step(corrector *c, double *alpha, double *rn, double *pi)
     if (rc || !ok) return rc;
     double noise = 1e-12 * fabs(c->pi), rho = pred > 0 ? (c->pi - *pi) / pred : -1;
     if (*pi < reference(c) || (*rn <= c->rn && *pi <= c->pi + noise)) {
-        if (rho > 0) {
+        /* A plateau: the model predicts no decrease and none came (a slack state under
+         * loads without a potential, where the merit |r|^2 / 2 cannot fall until members
+         * take up their slack): the step did no harm and says nothing, so it may grow as
+         * if the model agreed, instead of creeping at the shift of the last rejection. */
+        int plateau = e->fl && pred <= 1e-12 * 0.5 * c->rn * c->rn && *rn >= (1 - 1e-12) * c->rn;
+        if (rho > 0 || plateau) {
             double f = 1 - pow(2 * fmin(rho, 1) - 1, 3);
-            c->mu *= rho >= CTN_LM_AGREE ? CTN_LM_FALL : f > 1.0 / 3 ? f : 1.0 / 3;
+            c->mu *= plateau || rho >= CTN_LM_AGREE ? CTN_LM_FALL : f > 1.0 / 3 ? f : 1.0 / 3;
             if (c->mu < 1e-14 * e->kscale) c->mu = 0; /* plain Newton from here */
             c->nu = 2;
         }
