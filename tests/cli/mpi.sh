@@ -37,6 +37,7 @@ if [ "$have_python" = 0 ] || ! command -v mpirun >/dev/null 2>&1; then
 fi
 MPIRUN=(mpirun --allow-run-as-root --oversubscribe)
 export OMPI_MCA_btl_vader_single_copy_mechanism=none   # containers without CMA
+export OMPI_MCA_mpi_yield_when_idle=1                # ranks waiting in MPI yield the CPU: ctest -j runs other tests beside
 
 # one model on n ranks against the serial run (its JSON in $T/serial.json, exit $2)
 check_ranks() {
