@@ -70,5 +70,14 @@ int ctn_dynamics_finite(const ctn_solution *s)
         if (!isfinite(h[i])) return 0;
     for (size_t i = 0; i < rows * 4; i++)
         if (!isfinite(e[i])) return 0;
+    for (size_t k = 0; k < ctn_solution_frame_count(s); k++) {
+        ctn_dyn_frame f;
+        ctn_solution_frame(s, k, &f);
+        size_t nn = f.nodes, ne = f.elements;
+        for (size_t i = 0; i < 3 * nn; i++)
+            if (!isfinite(f.d[i]) || !isfinite(f.v[i]) || !isfinite(f.react[i])) return 0;
+        for (size_t i = 0; i < ne; i++)
+            if (!isfinite(f.force[i])) return 0;
+    }
     return isfinite(d.energy_error) && isfinite(d.dt_stable);
 }

@@ -197,9 +197,11 @@ typedef struct ctn_cable {
 /* A time history a dynamics analysis records (records.c). */
 typedef struct ctn_record {
     int node;        /* node index, or -1 */
-    unsigned dofs;   /* the node's directions (CTN_FIX_X | _Y | _Z) */
+    unsigned dofs;   /* the node's directions (CTN_FIX_X | _Y | _Z); a reaction's 0: the
+                        node's fixed ones */
     int element;     /* element index (its axial force), or -1 */
     int line;
+    int reaction;    /* 1: the node's support reactions in dofs (not its displacements) */
 } ctn_record;
 
 /* A function of time f(t) scaling loads and support motions in a dynamics analysis

@@ -82,7 +82,7 @@ int ctn_dyn_central_step(ctn_dyn *dy, double h, int *ok)
     if (rc || !valid) return rc;
     ctn_dyn_damp(dy, vh, dy->w2);
     for (size_t q = 0; q < n; q++) {
-        dy->a1[q] = (dy->r1[q] - dy->w2[q]) / dy->diag[q];
+        dy->a1[q] = (dy->r1[q] - dy->w2[q] - (dy->fsup ? dy->fsup[q] : 0.0)) / dy->diag[q];
         dy->v1[q] = vh[q] + 0.5 * h * dy->a1[q];
         if (!isfinite(dy->v1[q])) return CTN_OK;
     }

@@ -69,6 +69,7 @@ static void step_residual(ctn_dyn *dy, const double *r1, double *ref)
         ctn_dyn_damp(dy, w, dy->w2);
         for (size_t q = 0; q < n; q++) y[q] -= dy->w2[q];
     }
+    for (size_t q = 0; dy->fsup && q < n; q++) y[q] -= dy->fsup[q];   /* moving supports */
     double fe = 0, fi = 0;
     const int *eq = p->a->map.eq;
     for (size_t i = 0; i < p->ns; i++)

@@ -99,7 +99,7 @@ void ctn_dyn_set_time(ctn_dyn *dy, double t, double *d)
     }
 }
 
-/* a0 = M^-1 (f_ext - f_int(d0) - C v0): M factored by the problem's linear solver, or
+/* a0 = M^-1 (f_ext - f_int(d0) - C v0 - M_fs a_s - C_fs v_s): M factored by the problem's linear solver, or
  * over the lumped diagonal where M is singular (DOFs without mass: a0 = 0 there). */
 int ctn_dyn_acceleration(ctn_dyn *dy)
 {
@@ -109,7 +109,7 @@ int ctn_dyn_acceleration(ctn_dyn *dy)
     p->spd_factor = p->last_definite = 0;
     p->factored_at = NULL;
     ctn_dyn_damp(dy, dy->v0, dy->w2);
-    for (size_t q = 0; q < p->ndof; q++) dy->w2[q] = dy->r0[q] - dy->w2[q];
+    for (size_t q = 0; q < p->ndof; q++) dy->w2[q] = dy->r0[q] - dy->w2[q] - (dy->fsup ? dy->fsup[q] : 0.0);
     if (!rc && info.ok) return ctn_linsolve_solve(p->ls, dy->w2, dy->a0);
     for (size_t q = 0; q < p->ndof; q++) dy->a0[q] = dy->diag[q] > 0 ? dy->w2[q] / dy->diag[q] : 0.0;
     return rc;
@@ -148,6 +148,8 @@ int ctn_dyn_start(ctn_dyn *dy)
             return ctn_dyn_error(p, o, msg);
         }
     }
+    if ((rc = ctn_dyn_output_begin(dy))) return rc;
+    ctn_dyn_support_force(dy, 0.0, 0.0, 1.0, 1.0);
     if ((rc = ctn_dyn_acceleration(dy))) return rc;
     return ctn_dyn_record_begin(dy);
 }

@@ -19,8 +19,11 @@ static void dyn_free(ctn_dyn *dy)
     ctn_free(dy->mrow);
     ctn_free(dy->mval);
     ctn_free(dy->mslot);
+    ctn_free(dy->sup_e);
+    ctn_free(dy->sup_off);
+    ctn_free(dy->sup_idx);
     double *v[] = { dy->Mx, dy->Cx, dy->diag, dy->d0, dy->d1, dy->v0, dy->a0, dy->v1, dy->a1, dy->r0, dy->r1,
-                    dy->R, dy->w, dy->w2, dy->ework, dy->fe0 };
+                    dy->R, dy->w, dy->w2, dy->ework, dy->fe0, dy->react, dy->vs, dy->as, dy->sup_M, dy->sup_K, dy->fsup };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
 }
 
@@ -75,10 +78,22 @@ void ctn_dyn_accept(ctn_dyn *dy, double h, const double *r1)
 static int try_step(ctn_dyn *dy, double t, double h, int *ok)
 {
     ctn_dyn_set_time(dy, t + h, dy->d1);
+    ctn_dyn_support_force(dy, t, t + h, 1 - dy->am, 1 - dy->af);   /* central: am = af = 0 */
     return dy->o->method == CTN_DYN_CENTRAL ? ctn_dyn_central_step(dy, h, ok) : ctn_dyn_implicit_step(dy, h, ok);
 }
 
-/* From t = 0 to t_end: each multiple of dt reached in steps of dt, halved on failure. */
+/* A failed run's last converged state as a row when the rows skip steps and it is not
+ * the last row already (every step is a row otherwise). */
+static int last_row(ctn_dyn *dy, double t)
+{
+    const ctn_dyn_result *res = dy->s->dyn;
+    size_t w = 1 + res->ncol;
+    if (dy->every == 1 || !res->nrow || res->rows[(res->nrow - 1) * w] == t) return CTN_OK;
+    return ctn_dyn_record_row(dy, t);
+}
+
+/* From t = 0 to t_end: each multiple of dt reached in steps of dt, halved on failure; a
+ * row at every output_every-th and the last. */
 static int march(ctn_dyn *dy)
 {
     const ctn_dynamics_options *o = dy->o;
@@ -106,14 +121,14 @@ static int march(ctn_dyn *dy)
             if (level >= o->maxcuts || o->method == CTN_DYN_CENTRAL) {
                 dy->sum.reason = CTN_DIVERGED_MAXIT;
                 dy->sum.t_fail = t;
-                return CTN_OK;
+                return last_row(dy, t);
             }
             h *= 0.5;
             level++;
             dy->sum.cuts++;
         }
         t = target;
-        if ((rc = ctn_dyn_record_row(dy, t))) return rc;
+        if ((k % (size_t)dy->every == 0 || k == N) && (rc = ctn_dyn_record_row(dy, t))) return rc;
         dy->sum.steps = k;
         dy->sum.t_reached = t;
         if ((k & 63) == 0) ctn_progress(dy->p->ctx, "dynamics", t, o->t_end);
@@ -159,6 +174,7 @@ int ctn_dynamics_run(ctn_problem *p, ctn_solution *s, const ctn_dynamics_options
     dy.sum.damping_beta = o->damping_beta;
     dy.sum.reason = CTN_DIVERGED_MAXIT;
     dy.lumped = o->method == CTN_DYN_CENTRAL || o->mass == CTN_MASS_LUMPED;
+    dy.every = o->output_every > 0 ? o->output_every : 1;
     p->sum = &s->sum;
     p->mode = 0;
     ctn_problem_settle(p);
