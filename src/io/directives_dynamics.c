@@ -118,12 +118,48 @@ static int from_ratios(ctn_line *l, double *alpha, double *beta)
     return CTN_OK;
 }
 
-/* damping alpha= beta= | damping ratio=Z1,Z2 freq=F1,F2 */
+/* modal=Z1[,Z2,...] [modes=N]: the ratios and the modes damped (default: as many as
+ * ratios; one ratio with modes=N damps N modes at it). */
+static int modal(ctn_line *l, ctn_dynamics_options *o)
+{
+    const char *s = ctn_parse_key(l, 1, "modal");
+    char buf[1024];
+    int n = 0, count = 0, rc = CTN_OK;
+    snprintf(buf, sizeof buf, "%s", s);
+    for (char *tok = buf, *next; tok && !rc; tok = next) {
+        if ((next = strchr(tok, ','))) *next++ = '\0';
+        if (n == CTN_DYN_MODAL_MAX) return ctn_parse_error(l, "damping: modal= takes at most %d ratios", CTN_DYN_MODAL_MAX);
+        rc = ctn_parse_num(l, "modal", tok, &o->modal_zeta[n]);
+        if (!rc && !(o->modal_zeta[n] >= 0 && o->modal_zeta[n] < 1))
+            return ctn_parse_error(l, "damping: modal ratio %d must be from 0 to below 1 (found %g)", n + 1, o->modal_zeta[n]);
+        n++;
+    }
+    count = n;
+    if (!rc) rc = integer(l, "modes", 1, CTN_DYN_MODAL_MAX, &count);
+    if (!rc && n > 1 && count != n)
+        return ctn_parse_error(l, "damping: modes=%d but modal= gives %d ratios (give one ratio for all, or one per mode)",
+                               count, n);
+    o->modal_nzeta = n;
+    o->modal_count = count;
+    return rc;
+}
+
+/* damping alpha= beta= | damping ratio=Z1,Z2 freq=F1,F2 (either with modal=) |
+ * damping modal=Z1[,Z2,...] [modes=N] */
 int ctn_parse_damping(ctn_line *l)
 {
     double a = 0, b = 0;
-    int rc = ctn_parse_positional(l, 0, "damping alpha=MASS_FACTOR beta=STIFFNESS_FACTOR | damping ratio=Z1,Z2 freq=F1,F2");
+    int rc = ctn_parse_positional(l, 0, "damping alpha=MASS_FACTOR beta=STIFFNESS_FACTOR | damping ratio=Z1,Z2 freq=F1,F2 "
+                                        "| damping modal=Z1[,Z2,...] [modes=N]");
     int by_ratio = ctn_parse_key(l, 1, "ratio") || ctn_parse_key(l, 1, "freq");
+    int by_modes = !rc && ctn_parse_key(l, 1, "modal");
+    if (!rc && ctn_parse_key(l, 1, "modes") && !by_modes) return ctn_parse_error(l, "damping: modes= goes with modal=");
+    if (by_modes) rc = modal(l, &l->opt->dynamics);
+    if (!rc && by_modes && !by_ratio && !ctn_parse_key(l, 1, "alpha") && !ctn_parse_key(l, 1, "beta")) {
+        if ((rc = ctn_parse_leftovers(l, 1, "damping"))) return rc;
+        l->opt->dynamics.damping_alpha = l->opt->dynamics.damping_beta = 0;
+        return CTN_OK;
+    }
     if (!rc && by_ratio && (ctn_parse_key(l, 1, "alpha") || ctn_parse_key(l, 1, "beta")))
         return ctn_parse_error(l, "damping: give alpha= beta= or ratio= freq=, not both");
     if (!rc && by_ratio) rc = from_ratios(l, &a, &b);

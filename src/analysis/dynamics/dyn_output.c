@@ -155,6 +155,16 @@ static void int_visit(void *data, const ctn_asm *a, const ctn_asm_elem *el)
     }
 }
 
+/* Modal damping at the supports: (M w)_s, w = Phi E U^T v on the free DOFs (dy->as as
+ * the state-layout scratch, before it is set). */
+static void modal_reactions(ctn_dyn *dy, double *R)
+{
+    const ctn_problem *p = dy->p;
+    ctn_dyn_modal_velocity(dy, dy->v0, dy->w2);
+    for (size_t i = 0; i < p->ns; i++) dy->as[i] = p->a->map.eq[i] >= 0 ? dy->w2[p->a->map.eq[i]] : 0.0;
+    for (size_t k = 0; k < dy->nsup; k++) packed_fixed(dy, dy->sup_e[k], dy->sup_M + dy->sup_off[k], 1.0, dy->as, R);
+}
+
 int ctn_dyn_reactions(ctn_dyn *dy, double t, double *force)
 {
     ctn_problem *p = dy->p;
@@ -165,6 +175,7 @@ int ctn_dyn_reactions(ctn_dyn *dy, double t, double *force)
     memset(R, 0, p->ns * sizeof(double));
     if (force) memset(force, 0, p->a->ne * sizeof(double));
     if (ctn_asm_loop(p->a, dy->d0, CTN_EVAL_STRESS, 0, int_visit, &ip, NULL)) memset(R, 0, p->ns * sizeof(double));
+    if (dy->mr) modal_reactions(dy, R);
     ctn_dyn_rates(dy, t, dy->v0, dy->a0, dy->vs, dy->as);
     for (size_t k = 0; k < dy->nsup; k++) {
         size_t e = dy->sup_e[k], o = dy->sup_off[k];

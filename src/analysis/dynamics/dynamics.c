@@ -22,8 +22,9 @@ static void dyn_free(ctn_dyn *dy)
     ctn_free(dy->sup_e);
     ctn_free(dy->sup_off);
     ctn_free(dy->sup_idx);
+    ctn_free(dy->mpiv);
     double *v[] = { dy->Mx, dy->Cx, dy->diag, dy->d0, dy->d1, dy->v0, dy->a0, dy->v1, dy->a1, dy->r0, dy->r1,
-                    dy->R, dy->w, dy->w2, dy->ework, dy->fe0, dy->react, dy->vs, dy->as, dy->sup_M, dy->sup_K, dy->fsup };
+                    dy->R, dy->w, dy->w2, dy->ework, dy->fe0, dy->react, dy->vs, dy->as, dy->sup_M, dy->sup_K, dy->fsup, dy->mPhi, dy->mU, dy->mY, dy->mE, dy->mS };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
 }
 
@@ -57,7 +58,7 @@ void ctn_dyn_accept(ctn_dyn *dy, double h, const double *r1)
         if (eq[i] >= 0) work += 0.5 * (dy->fe0[i] + p->fext[i]) * (dy->d1[i] - dy->d0[i]);   /* loads held) */
     dy->W += ctn_layout_sum(&p->st, work);
     memcpy(dy->fe0, p->fext, p->ns * sizeof(double));
-    if (dy->Cx) {
+    if (ctn_dyn_damped(dy)) {
         ctn_dyn_damp(dy, dy->v0, dy->w2);
         double c0 = ctn_layout_dot(&p->eq, dy->v0, dy->w2);
         ctn_dyn_damp(dy, dy->v1, dy->w2);

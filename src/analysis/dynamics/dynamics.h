@@ -41,6 +41,12 @@ typedef struct ctn_dyn {
     size_t *sup_idx;              /* maxdof: an element's state indices */
     double *fsup;                 /* ndof: M_fs a_s + C_fs v_s of the moving supports over the
                                      step (NULL: no support moves) */
+    size_t mr;                    /* modal damping (dyn_modal.c): its modes r (0: none), */
+    double *mPhi, *mU, *mY;       /* ndof x r: Phi, U = M Phi, Y = A^-1 U (A the factored */
+    double *mE;                   /* effective tangent); r: 2 zeta_i omega_i */
+    double *mS;                   /* r x r: S = I + c2 E U^T Y, LU-factored (pivots mpiv) */
+    size_t *mpiv;
+    double mc2;                   /* c2 of the factored S */
 } ctn_dyn;
 
 /* A model error at the `dynamics` line (or without a place, from the API) (dyn_check.c). */
@@ -95,6 +101,18 @@ int ctn_dyn_keep_frame(ctn_dyn *dy, double t);
  * M_fs a_s + C_fs v_s with a_s, v_s weighted wa, wv at t1 (1 - wa, 1 - wv at t0), into
  * dy->fsup (nothing when no support moves). */
 void ctn_dyn_support_force(ctn_dyn *dy, double t0, double t1, double wa, double wv);
+
+/* dyn_modal.c: modal damping's modes about d0 (after M's own pattern and before a0);
+ * y += C_m x (ndof); w = Phi E U^T v (ndof: the modal damping force is M w, for the
+ * reactions); after A = K_T + c1 M + c2 C_R is factored, Y and S for c2 (*ok = 0 when S is
+ * singular); x = A^-1 b corrected into (A + c2 C_m)^-1 b. Each a no-op without it. */
+int ctn_dyn_modal_setup(ctn_dyn *dy);
+void ctn_dyn_modal_damp(const ctn_dyn *dy, const double *x, double *y);
+void ctn_dyn_modal_velocity(const ctn_dyn *dy, const double *v, double *w);
+int ctn_dyn_modal_factor(ctn_dyn *dy, double c2, int *ok);
+void ctn_dyn_modal_correct(const ctn_dyn *dy, double *x);
+/* Whether the analysis has damping (Rayleigh's or modal). */
+static inline int ctn_dyn_damped(const ctn_dyn *dy) { return dy->Cx != NULL || dy->mr > 0; }
 
 /* The result's columns (the model's records) and its first row (t = 0); a row at t. */
 int ctn_dyn_record_begin(ctn_dyn *dy);
