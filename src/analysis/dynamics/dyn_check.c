@@ -89,8 +89,11 @@ int ctn_dynamics_check(ctn_problem *p, const ctn_dynamics_options *o)
     int rc = check_reaction_records(p);
     if (rc) return rc;
     if (p->a->map.rot > 0) return ctn_dyn_error(p, o, "dynamics: models with rotations (beam, rspring) are not supported yet");
-    if (p->fl) return ctn_dyn_error(p, o, "dynamics: loads that follow the geometry (hload projection=deformed, wind) are "
-                                      "not supported yet");
+    for (size_t h = 0; h < m->hloads.n; h++)
+        if (!m->hloads.v[h].reference)
+            return ctn_dyn_error(p, o, "dynamics: hload on the deformed projection (a load that follows the geometry) is "
+                                       "not supported yet");
+    if ((rc = ctn_dyn_wind_check(p, o))) return rc;
     if (o->line > 0 && (size_t)o->steps_before != m->steps.n)
         return ctn_dyn_error(p, o, "dynamics: give it after the last `step` line (it starts from that step's equilibrium)");
     if (p->ndof == 0) return ctn_dyn_error(p, o, "dynamics: the model has no free DOF");

@@ -91,6 +91,7 @@ static int factor_effective(ctn_dyn *dy, double h, int *ok)
     size_t mnz = (size_t)dy->mcol[p->ndof];
     for (size_t k = 0; k < mnz; k++) p->Kx[dy->mslot[k]] += c1 * dy->mval[k];   /* M's nonzeros only */
     for (size_t k = 0; dy->Cx && k < p->a->nnz; k++) p->Kx[k] += c2 * dy->Cx[k];
+    ctn_dyn_wind_tangent(dy, c2);
     long col = -1;
     int rc = ctn_problem_factor(p, 0.0, ok, &col);
     dy->sum.factorizations++;
@@ -126,6 +127,7 @@ int ctn_dyn_implicit_step(ctn_dyn *dy, double h, int *ok)
         double ref = 0;
         kinematics(dy, h);
         if ((rc = ctn_dyn_residual(dy, dy->d1, with_K, r1, &valid)) || !valid) return rc;
+        ctn_dyn_wind(dy, dy->d1, dy->v1, dy->t1, r1);
         step_residual(dy, r1, &ref);
         double rn = ctn_layout_norm(&p->eq, dy->R);
         if (!isfinite(rn)) return CTN_OK;

@@ -189,7 +189,7 @@ int ctn_dyn_reactions(ctn_dyn *dy, double t, double *force)
             if (eq[k] < 0) R[k] += m->nodes.v[i].mass * (dy->as[k] + al * dy->vs[k]);
         }
     for (size_t k = 0; k < p->ns; k++)
-        if (eq[k] < 0) R[k] -= p->fext[k];
+        if (eq[k] < 0) R[k] -= p->fext[k] + (dy->nwind ? dy->wf[k] : 0.0);
     return CTN_OK;
 }
 

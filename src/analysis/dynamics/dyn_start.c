@@ -125,7 +125,12 @@ int ctn_dyn_start(ctn_dyn *dy)
     double tot[3];
     size_t bad;
     char msg[256];
-    int rc = ctn_dyn_residual(dy, dy->d0, 1, dy->r0, &valid);
+    int rc = ctn_dyn_wind_setup(dy);
+    if (!rc) rc = ctn_dyn_residual(dy, dy->d0, 1, dy->r0, &valid);
+    if (!rc && valid && dy->nwind) {
+        ctn_dyn_wind(dy, dy->d0, dy->v0, 0.0, dy->r0);
+        memcpy(dy->wf0, dy->wf, p->ns * sizeof(double));
+    }
     if (!rc && !valid) {
         snprintf(msg, sizeof msg, "dynamics: element %d cannot be evaluated in the start state (a chord of zero length)",
                  p->sum->fail_element);

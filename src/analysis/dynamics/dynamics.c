@@ -23,8 +23,10 @@ static void dyn_free(ctn_dyn *dy)
     ctn_free(dy->sup_off);
     ctn_free(dy->sup_idx);
     ctn_free(dy->mpiv);
+    ctn_free(dy->welem);
     double *v[] = { dy->Mx, dy->Cx, dy->diag, dy->d0, dy->d1, dy->v0, dy->a0, dy->v1, dy->a1, dy->r0, dy->r1,
-                    dy->R, dy->w, dy->w2, dy->ework, dy->fe0, dy->react, dy->vs, dy->as, dy->sup_M, dy->sup_K, dy->fsup, dy->mPhi, dy->mU, dy->mY, dy->mE, dy->mS };
+                    dy->R, dy->w, dy->w2, dy->ework, dy->fe0, dy->react, dy->vs, dy->as, dy->sup_M, dy->sup_K, dy->fsup, dy->mPhi, dy->mU, dy->mY, dy->mE, dy->mS, dy->wk, dy->wvel, dy->wD, dy->wf,
+                    dy->wf0, dy->wv };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
 }
 
@@ -56,6 +58,9 @@ void ctn_dyn_accept(ctn_dyn *dy, double h, const double *r1)
     double work = 0;
     for (size_t i = 0; i < p->ns; i++)                   /* the trapezoidal rule (exact for */
         if (eq[i] >= 0) work += 0.5 * (dy->fe0[i] + p->fext[i]) * (dy->d1[i] - dy->d0[i]);   /* loads held) */
+    for (size_t i = 0; dy->nwind && i < p->ns; i++)     /* the drag's work, likewise */
+        if (eq[i] >= 0) work += 0.5 * (dy->wf0[i] + dy->wf[i]) * (dy->d1[i] - dy->d0[i]);
+    if (dy->nwind) memcpy(dy->wf0, dy->wf, p->ns * sizeof(double));
     dy->W += ctn_layout_sum(&p->st, work);
     memcpy(dy->fe0, p->fext, p->ns * sizeof(double));
     if (ctn_dyn_damped(dy)) {
@@ -78,6 +83,7 @@ void ctn_dyn_accept(ctn_dyn *dy, double h, const double *r1)
 /* One step of h from t by the method; *ok = 0 when it failed. */
 static int try_step(ctn_dyn *dy, double t, double h, int *ok)
 {
+    dy->t1 = t + h;
     ctn_dyn_set_time(dy, t + h, dy->d1);
     ctn_dyn_support_force(dy, t, t + h, 1 - dy->am, 1 - dy->af);   /* central: am = af = 0 */
     return dy->o->method == CTN_DYN_CENTRAL ? ctn_dyn_central_step(dy, h, ok) : ctn_dyn_implicit_step(dy, h, ok);
@@ -161,6 +167,7 @@ int ctn_dynamics_run(ctn_problem *p, ctn_solution *s, const ctn_dynamics_options
 {
     double t0 = ctn_clock();
     ctn_solve_summary *keep = p->sum;
+    ctn_follow *fl = p->fl;                          /* winds: the relative drag instead */
     int overlap = p->overlap;
     ctn_dyn dy;
     memset(&dy, 0, sizeof dy);
@@ -181,6 +188,7 @@ int ctn_dynamics_run(ctn_problem *p, ctn_solution *s, const ctn_dynamics_options
     ctn_problem_settle(p);
     p->overlap = 0;                                  /* K_T is not what is factored */
     int rc = ctn_dynamics_check(p, o);
+    p->fl = NULL;
     if (!rc) rc = dyn_alloc(&dy);
     if (!rc) {
         ctn_dyn_method_params(&dy);
@@ -192,6 +200,7 @@ int ctn_dynamics_run(ctn_problem *p, ctn_solution *s, const ctn_dynamics_options
     ctn_dyn_restore_removals(&dy);
     p->overlap = overlap;
     p->sum = keep;
+    p->fl = fl;
     dyn_free(&dy);
     return rc;
 }

@@ -47,6 +47,12 @@ typedef struct ctn_dyn {
     double *mS;                   /* r x r: S = I + c2 E U^T Y, LU-factored (pivots mpiv) */
     size_t *mpiv;
     double mc2;                   /* c2 of the factored S */
+    size_t nwind;                 /* relative wind (dyn_wind.c): elements under a wind, */
+    size_t *welem;                /* their indices, */
+    double *wk, *wvel, *wD;       /* rho cd d / 2, the wind's velocity (3), the last block */
+    double *wf, *wf0;             /* state: the drag at the last evaluation, at t_n */
+    double *wv;                   /* state: every DOF's velocity (scratch) */
+    double t1;                    /* the end time of the step being taken */
 } ctn_dyn;
 
 /* A model error at the `dynamics` line (or without a place, from the API) (dyn_check.c). */
@@ -111,6 +117,15 @@ void ctn_dyn_modal_damp(const ctn_dyn *dy, const double *x, double *y);
 void ctn_dyn_modal_velocity(const ctn_dyn *dy, const double *v, double *w);
 int ctn_dyn_modal_factor(ctn_dyn *dy, double c2, int *ok);
 void ctn_dyn_modal_correct(const ctn_dyn *dy, double *x);
+/* dyn_wind.c: the winds a dynamics can take (CTN_ERR_MODEL otherwise); the elements under
+ * them; their drag at positions d (state) and free velocities v (ndof; a moving support's
+ * from its function at t) added into r (ndof), kept in dy->wf; c2 times its velocity
+ * derivative's blocks added into the effective tangent p->Kx. */
+int ctn_dyn_wind_check(const ctn_problem *p, const ctn_dynamics_options *o);
+int ctn_dyn_wind_setup(ctn_dyn *dy);
+void ctn_dyn_wind(ctn_dyn *dy, const double *d, const double *v, double t, double *r);
+void ctn_dyn_wind_tangent(ctn_dyn *dy, double c2);
+
 /* Whether the analysis has damping (Rayleigh's or modal). */
 static inline int ctn_dyn_damped(const ctn_dyn *dy) { return dy->Cx != NULL || dy->mr > 0; }
 
