@@ -130,6 +130,10 @@ typedef struct ctn_dynamics_summary {
     ctn_reason reason;        /* CTN_CONVERGED when t_end was reached; else why the step
                                  after t_reached failed with dt cut maxcuts times */
     double t_fail;            /* not converged: the time the failed step started [s] */
+    int output_every;         /* a row every this many steps (t = 0 and the last too) */
+    int modal_count;          /* modes under modal damping (0: none) */
+    size_t frames;            /* frames kept for the VTU series (0: none) */
+    int relative_wind;        /* elements under a relative-velocity wind drag (0: none) */
 } ctn_dynamics_summary;
 
 /* CTN_ERR_INVALID when no dynamics analysis was run on s. */

@@ -39,6 +39,10 @@ static void put_parameters(ctn_jw *j, const ctn_dynamics_summary *d)
     ctn_jw_number(j, "cuts", d->cuts);
     ctn_jw_number(j, "substeps", d->substeps);
     ctn_jw_number(j, "energy_error", d->energy_error);
+    if (d->output_every > 1) ctn_jw_number(j, "output_every", d->output_every);
+    if (d->frames) ctn_jw_number(j, "frames", (double)d->frames);
+    if (d->modal_count) ctn_jw_number(j, "modal_damping_modes", d->modal_count);
+    if (d->relative_wind) ctn_jw_number(j, "relative_wind_elements", d->relative_wind);
 }
 
 void ctn_json_put_dynamics(ctn_jw *j, const ctn_solution *s)

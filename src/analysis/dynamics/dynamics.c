@@ -159,6 +159,10 @@ static int finish(ctn_dyn *dy, double t0)
     s->sum.load_factor = 1.0;
     dy->sum.energy_error = dy->escale > 0 ? dy->emax / dy->escale : 0.0;
     dy->sum.t_total = ctn_clock() - t0;
+    dy->sum.output_every = dy->every;
+    dy->sum.modal_count = (int)dy->mr;
+    dy->sum.frames = s->dyn->nframe;
+    dy->sum.relative_wind = (int)dy->nwind;
     s->dyn->sum = dy->sum;
     return CTN_OK;
 }
