@@ -20,6 +20,13 @@ void ctn_print_dynamics(FILE *out, const ctn_model *m, const ctn_solution *s)
     if (d.method == CTN_DYN_CENTRAL) fprintf(out, "  stable step of the mesh %.6g s\n", d.dt_stable);
     if (d.damping_alpha > 0 || d.damping_beta > 0)
         fprintf(out, "  Rayleigh damping: alpha %.6g 1/s, beta %.6g s\n", d.damping_alpha, d.damping_beta);
+    if (d.modal_count) fprintf(out, "  modal damping: the %d lowest modes about the start\n", d.modal_count);
+    if (d.relative_wind) fprintf(out, "  wind drag on the relative velocity: %d elements\n", d.relative_wind);
+    if (d.output_every > 1 || d.frames) {
+        fprintf(out, "  output: %zu rows (every %d steps, and the last)", rows, d.output_every);
+        if (d.frames) fprintf(out, ", %zu frames for the VTU series", d.frames);
+        fputc('\n', out);
+    }
     if (rows) {
         const double *en = e + 4 * (rows - 1);
         fprintf(out, "  energy at t = %g: kinetic %.6g, strain %.6g, work of loads %.6g, damping %.6g; balance error "

@@ -113,7 +113,8 @@ typedef struct ctn_dynamics_summary {
     ctn_dyn_method method;
     double dt, t_end;         /* as asked [s] */
     double t_reached;         /* the time of the last converged state [s] (t_end when done) */
-    size_t steps;             /* time steps of dt taken (rows of the history - 1) */
+    size_t steps;             /* time steps of dt taken (rows of the history - 1 with
+                                 output_every 1) */
     double alpha_m, alpha_f, gamma, beta; /* the method's parameters */
     double rho_inf;           /* as asked (genalpha, hht) */
     ctn_mass_matrix mass;     /* the mass matrix used */
@@ -129,12 +130,17 @@ typedef struct ctn_dynamics_summary {
     ctn_reason reason;        /* CTN_CONVERGED when t_end was reached; else why the step
                                  after t_reached failed with dt cut maxcuts times */
     double t_fail;            /* not converged: the time the failed step started [s] */
+    int output_every;         /* a row every this many steps (t = 0 and the last too) */
+    int modal_count;          /* modes under modal damping (0: none) */
+    size_t frames;            /* frames kept for the VTU series (0: none) */
+    int relative_wind;        /* elements under a relative-velocity wind drag (0: none) */
 } ctn_dynamics_summary;
 
 /* CTN_ERR_INVALID when no dynamics analysis was run on s. */
 int ctn_solution_dynamics_summary(const ctn_solution *s, ctn_dynamics_summary *out);
 /* The recorded time histories (ctn_model_record_node, ctn_model_record_element): rows
- * 1 + steps (t = 0 first, then every dt), each 1 + columns numbers: t [s], then one per
+ * 1 + steps (t = 0 first, then every dt; with output_every K every K-th step and the
+ * last), each 1 + columns numbers: t [s], then one per
  * column (a node's displacement from the start geometry, an element's axial force);
  * NULL (0, 0) without a dynamics analysis. Owned by the solution. */
 const double *ctn_solution_history(const ctn_solution *s, size_t *rows, size_t *columns);
@@ -145,6 +151,21 @@ const char *ctn_solution_history_name(const ctn_solution *s, size_t j);
  * work of the external loads since t = 0 W, energy dissipated by damping D [force
  * length]; NULL without a dynamics analysis. Owned by the solution. */
 const double *ctn_solution_energy(const ctn_solution *s, size_t *rows);
+/* The state at a row of the histories, kept when the options asked for frames
+ * (ctn_dynamics_options.frames; the model file's `dynamics ... vtu=1`): arrays owned by
+ * the solution, 3 numbers per node in model order, one per element. */
+typedef struct ctn_dyn_frame {
+    double t;                 /* its time [s] (the row's) */
+    const double *d;          /* displacements from the start geometry [L] */
+    const double *v;          /* velocities [L/s] (a moving support's from its function) */
+    const double *react;      /* reactions at the supports f_int + M a + C v - f_ext [F]
+                                 (inertia and damping included), 0 elsewhere */
+    const double *force;      /* the elements' axial forces N [F] */
+    size_t nodes, elements;   /* the arrays' sizes: 3 nodes, elements */
+} ctn_dyn_frame;
+/* The frames kept (0 without), and frame k < that count (CTN_ERR_INVALID otherwise). */
+size_t ctn_solution_frame_count(const ctn_solution *s);
+int ctn_solution_frame(const ctn_solution *s, size_t k, ctn_dyn_frame *out);
 /* The name of a method: "genalpha", "hht", "newmark", "central" ("?" if none). */
 const char *ctn_dyn_method_name(ctn_dyn_method m);
 

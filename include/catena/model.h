@@ -421,6 +421,9 @@ int ctn_model_validate(const ctn_model *m);
  * undefined id or one recorded twice. */
 int ctn_model_record_node(ctn_model *m, int id, unsigned dofs);
 int ctn_model_record_element(ctn_model *m, int id);
+/* The support reactions of node id (it must have a fix=) in the directions dofs (0: all
+ * three): f_int + M a + C v - f_ext there, inertia and damping included. */
+int ctn_model_record_reaction(ctn_model *m, int id, unsigned dofs);
 size_t ctn_model_record_count(const ctn_model *m);
 
 /* Functions of time for a dynamics analysis (docs/format.md "Dynamics"): par holds

@@ -123,6 +123,9 @@ typedef enum ctn_dyn_method {
                                 the stable step of the mesh */
 } ctn_dyn_method;
 
+/* The most modes modal damping takes (ctn_dynamics_options.modal_count). */
+#define CTN_DYN_MODAL_MAX 64
+
 /* A dynamics analysis: time integration from t = 0 to t_end in steps dt. */
 typedef struct ctn_dynamics_options {
     size_t size;          /* sizeof(ctn_dynamics_options): ctn_dynamics_options_default sets
@@ -147,6 +150,19 @@ typedef struct ctn_dynamics_options {
                              equilibrium of the last static step, its loads held */
     int line;             /* the model file's `dynamics` line, named by its errors (0: none) */
     int steps_before;     /* the `step` lines before the `dynamics` line (the reader's) */
+    int output_every;     /* a row of the histories (and a frame) every K-th step of dt, K
+                             >= 1; t = 0 and the last step always (default 1) */
+    int frames;           /* 1: keep the state at every row (ctn_solution_frame: the
+                             displacements, velocities, reactions and element forces) for
+                             the VTU series of ctn_write_results; 0 (default): none */
+    int modal_count;      /* modal damping: the N lowest modes about the start state damped,
+                             C = M Phi diag(2 zeta_i omega_i) Phi^T M (0: none; the default) */
+    int modal_nzeta;      /* ratios given in modal_zeta: 1 (every mode's) or modal_count */
+    double modal_zeta[CTN_DYN_MODAL_MAX]; /* the modes' damping ratios, [0, 1) */
+    int relative_wind;    /* 1: `wind` loads drag on the velocity of the air relative to the
+                             element, 0.5 rho Cd d |v_n| v_n per length with v_n the normal
+                             part of v_wind - v_structure (aerodynamic damping); 0
+                             (default): wind is refused in a dynamics analysis */
 } ctn_dynamics_options;
 
 /* Solver options; ctn_solve_options_default() fills the defaults. */

@@ -38,14 +38,15 @@ static int integer(ctn_line *l, const char *key, int lo, int hi, int *out)
 }
 
 /* dynamics dt= t_end= [method=] [rho_inf=] [alpha=] [gamma=] [beta=] [mass=] [tol=]
- * [maxit=] [cutbacks=] */
+ * [maxit=] [cutbacks=] [output_every=] [vtu=] [relative_wind=] */
 int ctn_parse_dynamics(ctn_line *l)
 {
     static const char *const methods[] = { "genalpha", "hht", "newmark", "central" }, *const masses[] = { "consistent", "lumped" };
     ctn_dynamics_options o = l->opt->dynamics;
     int method = (int)o.method, mass = (int)o.mass;
     int rc = ctn_parse_positional(l, 0, "dynamics dt=STEP t_end=TIME [method=genalpha|hht|newmark|central] [rho_inf=R] "
-                                        "[alpha=A] [gamma=G beta=B] [mass=consistent|lumped]");
+                                        "[alpha=A] [gamma=G beta=B] [mass=consistent|lumped] [output_every=K] [vtu=0|1] "
+                                        "[relative_wind=0|1]");
     if (!rc && l->opt->dynamics.line > 0)
         return ctn_parse_error(l, "dynamics: given twice (first on line %d)", l->opt->dynamics.line);
     if (!rc) rc = ctn_parse_key_num(l, 1, "dt", 1, &o.dt);
@@ -59,6 +60,9 @@ int ctn_parse_dynamics(ctn_line *l)
     if (!rc) rc = ctn_parse_key_num(l, 1, "tol", 0, &o.tol);
     if (!rc) rc = integer(l, "maxit", 1, 1000, &o.maxit);
     if (!rc) rc = integer(l, "cutbacks", 0, 40, &o.maxcuts);
+    if (!rc) rc = integer(l, "output_every", 1, 1000000000, &o.output_every);
+    if (!rc) rc = integer(l, "vtu", 0, 1, &o.frames);
+    if (!rc) rc = integer(l, "relative_wind", 0, 1, &o.relative_wind);
     if (rc) return rc;
     if (!isnan(o.alpha) && method != CTN_DYN_HHT) return ctn_parse_error(l, "dynamics: alpha= is HHT's: give method=hht");
     if ((ctn_parse_key(l, 1, "gamma") || ctn_parse_key(l, 1, "beta")) && method != CTN_DYN_NEWMARK)
@@ -114,12 +118,48 @@ static int from_ratios(ctn_line *l, double *alpha, double *beta)
     return CTN_OK;
 }
 
-/* damping alpha= beta= | damping ratio=Z1,Z2 freq=F1,F2 */
+/* modal=Z1[,Z2,...] [modes=N]: the ratios and the modes damped (default: as many as
+ * ratios; one ratio with modes=N damps N modes at it). */
+static int modal(ctn_line *l, ctn_dynamics_options *o)
+{
+    const char *s = ctn_parse_key(l, 1, "modal");
+    char buf[1024];
+    int n = 0, count = 0, rc = CTN_OK;
+    snprintf(buf, sizeof buf, "%s", s);
+    for (char *tok = buf, *next; tok && !rc; tok = next) {
+        if ((next = strchr(tok, ','))) *next++ = '\0';
+        if (n == CTN_DYN_MODAL_MAX) return ctn_parse_error(l, "damping: modal= takes at most %d ratios", CTN_DYN_MODAL_MAX);
+        rc = ctn_parse_num(l, "modal", tok, &o->modal_zeta[n]);
+        if (!rc && !(o->modal_zeta[n] >= 0 && o->modal_zeta[n] < 1))
+            return ctn_parse_error(l, "damping: modal ratio %d must be from 0 to below 1 (found %g)", n + 1, o->modal_zeta[n]);
+        n++;
+    }
+    count = n;
+    if (!rc) rc = integer(l, "modes", 1, CTN_DYN_MODAL_MAX, &count);
+    if (!rc && n > 1 && count != n)
+        return ctn_parse_error(l, "damping: modes=%d but modal= gives %d ratios (give one ratio for all, or one per mode)",
+                               count, n);
+    o->modal_nzeta = n;
+    o->modal_count = count;
+    return rc;
+}
+
+/* damping alpha= beta= | damping ratio=Z1,Z2 freq=F1,F2 (either with modal=) |
+ * damping modal=Z1[,Z2,...] [modes=N] */
 int ctn_parse_damping(ctn_line *l)
 {
     double a = 0, b = 0;
-    int rc = ctn_parse_positional(l, 0, "damping alpha=MASS_FACTOR beta=STIFFNESS_FACTOR | damping ratio=Z1,Z2 freq=F1,F2");
+    int rc = ctn_parse_positional(l, 0, "damping alpha=MASS_FACTOR beta=STIFFNESS_FACTOR | damping ratio=Z1,Z2 freq=F1,F2 "
+                                        "| damping modal=Z1[,Z2,...] [modes=N]");
     int by_ratio = ctn_parse_key(l, 1, "ratio") || ctn_parse_key(l, 1, "freq");
+    int by_modes = !rc && ctn_parse_key(l, 1, "modal");
+    if (!rc && ctn_parse_key(l, 1, "modes") && !by_modes) return ctn_parse_error(l, "damping: modes= goes with modal=");
+    if (by_modes) rc = modal(l, &l->opt->dynamics);
+    if (!rc && by_modes && !by_ratio && !ctn_parse_key(l, 1, "alpha") && !ctn_parse_key(l, 1, "beta")) {
+        if ((rc = ctn_parse_leftovers(l, 1, "damping"))) return rc;
+        l->opt->dynamics.damping_alpha = l->opt->dynamics.damping_beta = 0;
+        return CTN_OK;
+    }
     if (!rc && by_ratio && (ctn_parse_key(l, 1, "alpha") || ctn_parse_key(l, 1, "beta")))
         return ctn_parse_error(l, "damping: give alpha= beta= or ratio= freq=, not both");
     if (!rc && by_ratio) rc = from_ratios(l, &a, &b);
@@ -153,20 +193,22 @@ static int dofs(ctn_line *l, unsigned *bits)
     return CTN_OK;
 }
 
-/* record node=ID [dof=ux,uy,uz] | record element=ID force */
+/* record node=ID [dof=ux,uy,uz] [reaction] | record element=ID force */
 int ctn_parse_record(ctn_line *l)
 {
-    int id = 0;
+    int id = 0, reaction = 0;
     unsigned bits = 0;
-    int rc = ctn_parse_positional(l, 0, "record node=ID [dof=ux,uy,uz] | record element=ID force");
+    int rc = ctn_parse_positional(l, 0, "record node=ID [dof=ux,uy,uz] [reaction] | record element=ID force");
     const char *node = rc ? NULL : ctn_parse_key(l, 1, "node"), *elem = rc ? NULL : ctn_parse_key(l, 1, "element");
     if (!rc && !!node == !!elem) return ctn_parse_error(l, "record: give node=ID or element=ID");
     if (!rc) rc = ctn_parse_int(l, node ? "the node id" : "the element id", node ? node : elem, &id);
     if (!rc && node) rc = dofs(l, &bits);
+    if (!rc && node) reaction = ctn_parse_flag(l, 1, "reaction");
     if (!rc && elem && !ctn_parse_flag(l, 1, "force"))
         return ctn_parse_error(l, "record: element=%d records its axial force: give the word force", id);
     if (!rc) rc = ctn_parse_leftovers(l, 1, "record");
     if (rc) return rc;
+    if (reaction) return ctn_model_record_reaction(l->m, id, bits);
     return node ? ctn_model_record_node(l->m, id, bits) : ctn_model_record_element(l->m, id);
 }
 

@@ -147,5 +147,6 @@ int ctn_parse_wind(ctn_line *l)
     if (hv) p = 0.5 * rho * V * V;
     if (!(p >= 0 && cd >= 0 && d >= 0 && rho >= 0))
         return ctn_parse_error(l, "wind: pressure, rho, cd and d must be >= 0");
-    return ctn_model_add_wind(l->m, l->tok[1], dir, cd * p, d);
+    rc = ctn_model_add_wind(l->m, l->tok[1], dir, cd * p, d);
+    return rc ? rc : ctn_model_wind_air(l->m, hv ? rho : NAN, V, cd);   /* a dynamics' relative wind */
 }

@@ -39,6 +39,10 @@ static void put_parameters(ctn_jw *j, const ctn_dynamics_summary *d)
     ctn_jw_number(j, "cuts", d->cuts);
     ctn_jw_number(j, "substeps", d->substeps);
     ctn_jw_number(j, "energy_error", d->energy_error);
+    if (d->output_every > 1) ctn_jw_number(j, "output_every", d->output_every);
+    if (d->frames) ctn_jw_number(j, "frames", (double)d->frames);
+    if (d->modal_count) ctn_jw_number(j, "modal_damping_modes", d->modal_count);
+    if (d->relative_wind) ctn_jw_number(j, "relative_wind_elements", d->relative_wind);
 }
 
 void ctn_json_put_dynamics(ctn_jw *j, const ctn_solution *s)
@@ -70,5 +74,14 @@ int ctn_dynamics_finite(const ctn_solution *s)
         if (!isfinite(h[i])) return 0;
     for (size_t i = 0; i < rows * 4; i++)
         if (!isfinite(e[i])) return 0;
+    for (size_t k = 0; k < ctn_solution_frame_count(s); k++) {
+        ctn_dyn_frame f;
+        ctn_solution_frame(s, k, &f);
+        size_t nn = f.nodes, ne = f.elements;
+        for (size_t i = 0; i < 3 * nn; i++)
+            if (!isfinite(f.d[i]) || !isfinite(f.v[i]) || !isfinite(f.react[i])) return 0;
+        for (size_t i = 0; i < ne; i++)
+            if (!isfinite(f.force[i])) return 0;
+    }
     return isfinite(d.energy_error) && isfinite(d.dt_stable);
 }

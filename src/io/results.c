@@ -3,7 +3,8 @@
  * factors, history.csv when it has a dynamics analysis, and for a run of several steps
  * result_K.vtu for every step and
  * result.pvd listing them; for each load case and combination NAME, cases/NAME/ with its
- * nodes.csv, elements.csv and result.vtu. Each is streamed by its writer (io/writer.h) into a staged
+ * nodes.csv, elements.csv and result.vtu; a dynamics analysis's VTU series (dynamics/frame_K.vtu,
+ * dynamics.pvd) when it kept frames. Each is streamed by its writer (io/writer.h) into a staged
  * temporary (io/atomic.h), synced; only when all are staged is any renamed onto its
  * target. */
 #include "io/atomic.h"
@@ -31,7 +32,11 @@ typedef struct job {
     size_t step;
     char name[CTN_VTU_NAME_MAX + 80];
     const ctn_solution *sol;
+    int kind;            /* JOB_WRITER (ops), JOB_FRAME (frame `step` of the dynamics'
+                            VTU series), JOB_FRAMES_PVD (their collection) */
 } job;
+
+enum { JOB_WRITER = 0, JOB_FRAME = 1, JOB_FRAMES_PVD = 2 };
 
 /* The set for solution s of n steps: NFIXED files, modes.csv when s has modes,
  * buckling.csv when it has buckling factors, and n + 1
@@ -88,6 +93,31 @@ static job *plan_cases(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s, 
     return j;
 }
 
+/* The set with the dynamics analysis's VTU series last (dynamics/frame_K.vtu and
+ * dynamics.pvd), when it kept frames. */
+static job *plan_frames(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s, size_t *count)
+{
+    size_t n0 = 0, nf = ctn_solution_frame_count(s);
+    job *j0 = plan_cases(ctx, m, s, &n0);
+    if (!j0 || !nf) {
+        *count = n0;
+        return j0;
+    }
+    job *j = ctn_calloc(ctx, n0 + nf + 1, sizeof *j);
+    if (j) memcpy(j, j0, n0 * sizeof *j);
+    ctn_free(j0);
+    if (!j) return NULL;
+    for (size_t k = 0; k <= nf; k++) {
+        job *t = &j[n0 + k];
+        t->kind = k < nf ? JOB_FRAME : JOB_FRAMES_PVD;
+        t->step = k;
+        if (k < nf) ctn_frame_name(t->name, k, nf);
+        else snprintf(t->name, sizeof t->name, "%s", CTN_FRAMES_PVD);
+    }
+    *count = n0 + nf + 1;
+    return j;
+}
+
 static int make_dir(ctn_ctx *ctx, const char *path)
 {
     if (mkdir(path, 0755) && errno != EEXIST)
@@ -141,7 +171,9 @@ static int stage(ctn_ctx *ctx, const char *dir, const job *j, const ctn_model *m
     if (!rc) rc = ctn_atomic_open(ctx, path, f);
     if (rc) return rc;
     ctn_sink sink = ctn_atomic_sink(f);
-    rc = ctn_writer_run_step(ctx, j->ops, 1, j->step, &sink, m, j->sol ? j->sol : s);
+    if (j->kind == JOB_FRAME) rc = ctn_write_frame_vtu(ctx, j->step, &sink, m, s);
+    else if (j->kind == JOB_FRAMES_PVD) rc = ctn_write_frames_pvd(ctx, &sink, m, s);
+    else rc = ctn_writer_run_step(ctx, j->ops, 1, j->step, &sink, m, j->sol ? j->sol : s);
     return rc ? rc : ctn_atomic_close(f);
 }
 
@@ -227,11 +259,15 @@ int ctn_write_results(ctn_ctx *ctx, const char *dir, const ctn_model *m,
     int rc = ctn_result_check(ctx, m, s);
     if (rc) return rc;
     if ((rc = make_dir(ctx, dir)) || (rc = make_case_dirs(ctx, dir, m, s))) return rc;
-    size_t n = 0;
-    job *jobs = plan_cases(ctx, m, s, &n);
+    char frames[4096];
+    size_t n = 0, nf = ctn_solution_frame_count(s);
+    if (nf && !(rc = target(ctx, dir, CTN_FRAMES_DIR, frames, sizeof frames))) rc = make_dir(ctx, frames);
+    if (rc) return rc;
+    job *jobs = plan_frames(ctx, m, s, &n);
     ctn_atomic_file *f = jobs ? ctn_calloc(ctx, n, sizeof *f) : NULL;
     rc = f ? write_set(ctx, dir, jobs, n, m, s, f) : CTN_ERR_NOMEM;
     if (!rc && ctn_solution_step_count(s) == 1) rc = remove_stale(ctx, dir);
+    if (!rc) rc = ctn_frames_remove_stale(ctx, dir, nf);
     ctn_free(f);
     ctn_free(jobs);
     return rc;

@@ -220,7 +220,7 @@ static int put_data(ctn_writer *w, const vtu_data *d, vtu_where where, size_t n)
 }
 
 /* <Points>: the reference coordinates. */
-static int put_points(ctn_writer *w, size_t nn)
+int ctn_vtu_put_points(ctn_writer *w, size_t nn)
 {
     ctn_wbuf *b = &w->out;
     ctn_wbuf_puts(b, "      <Points>\n");
@@ -241,7 +241,7 @@ static int put_points(ctn_writer *w, size_t nn)
 /* <Cells>: connectivity (node indices), offsets (the end of each cell's run) and types
  * (3 line, 4 polyline). A curved element drawn by sample points would add its points
  * after the nodes and be a polyline through them. */
-static int put_cells(ctn_writer *w, size_t ne)
+int ctn_vtu_put_cells(ctn_writer *w, size_t ne)
 {
     ctn_wbuf *b = &w->out;
     ctn_element_info e;
@@ -304,8 +304,8 @@ static int vtu_step(void *p, const ctn_solution *s, size_t k)
     ctn_wbuf_puts(b, "\">\n");
     int rc = put_data(w, &d, VTU_POINT, nn);
     if (!rc) rc = put_data(w, &d, VTU_CELL, ne);
-    if (!rc) rc = put_points(w, nn);
-    if (!rc) rc = put_cells(w, ne);
+    if (!rc) rc = ctn_vtu_put_points(w, nn);
+    if (!rc) rc = ctn_vtu_put_cells(w, ne);
     ctn_wbuf_puts(b, "    </Piece>\n");
     return rc ? rc : b->err;
 }

@@ -52,6 +52,22 @@ extern const ctn_writer_ops ctn_writer_pvd;           /* result.pvd: the steps' 
 #define CTN_VTU_NAME_MAX 48
 void ctn_vtu_step_name(char *name, size_t k, size_t n);
 
+/* The <Points> (reference coordinates) and <Cells> of a .vtu piece (vtu.c). */
+int ctn_vtu_put_points(ctn_writer *w, size_t nn);
+int ctn_vtu_put_cells(ctn_writer *w, size_t ne);
+
+/* The dynamics analysis's VTU series (vtu_frames.c): the name of frame k of n in a result
+ * directory ("dynamics/frame_KKKKK.vtu", k from 0, zero-padded to at least 5 digits, name
+ * of CTN_VTU_NAME_MAX); frame k of s (ctn_solution_frame) as a .vtu; the collection of
+ * the frames with their times (dynamics.pvd); the frame files of an earlier run in
+ * dir/dynamics that the n frames written do not replace, removed. */
+#define CTN_FRAMES_DIR "dynamics"
+#define CTN_FRAMES_PVD "dynamics.pvd"
+void ctn_frame_name(char *name, size_t k, size_t n);
+int ctn_write_frame_vtu(ctn_ctx *ctx, size_t k, ctn_sink *sink, const ctn_model *m, const ctn_solution *s);
+int ctn_write_frames_pvd(ctn_ctx *ctx, ctn_sink *sink, const ctn_model *m, const ctn_solution *s);
+int ctn_frames_remove_stale(ctn_ctx *ctx, const char *dir, size_t n);
+
 /* The same with the nodes' results taken from pieces (piece.h) in place of the
  * solution's own (a distributed run's gathering source; tests). */
 int ctn_writer_run_pieces(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, size_t k, const ctn_pieces *pieces,

@@ -62,7 +62,7 @@ int ctn_model_add_ice(ctn_model *m, const char *target, const double q[3], doubl
     for (int k = 0; k < 3; k++)
         if (!isfinite(q[k])) return ctn_model_error(m, CTN_ERR_MODEL, "lineload: q must be finite");
     if (!(t >= 0) || !isfinite(t)) return ctn_model_error(m, CTN_ERR_MODEL, "ice: the thickness must be >= 0 and finite");
-    ctn_lload l = { CTN_TARGET_ALL, -1, { q[0], q[1], q[2] }, ctn_model_load_tag(m), m->line, 0, { 0, 0, 0 }, 0, 0, t };
+    ctn_lload l = { CTN_TARGET_ALL, -1, { q[0], q[1], q[2] }, ctn_model_load_tag(m), m->line, 0, { 0, 0, 0 }, 0, 0, t, NAN, 0, 0 };
     return push(m, target, &l);
 }
 
@@ -73,8 +73,18 @@ int ctn_model_add_wind(ctn_model *m, const char *target, const double dir[3], do
     if (!isfinite(q) || !(n > 0) || !isfinite(n))
         return ctn_model_error(m, CTN_ERR_MODEL, "wind: the direction must be a finite non-zero vector and the load finite");
     ctn_lload l = { CTN_TARGET_ALL, -1, { q * dir[0] / n, q * dir[1] / n, q * dir[2] / n }, ctn_model_load_tag(m),
-                    m->line, 1, { dir[0] / n, dir[1] / n, dir[2] / n }, cdp, d, 0 };
+                    m->line, 1, { dir[0] / n, dir[1] / n, dir[2] / n }, cdp, d, 0, NAN, 0, 0 };
     return push(m, target, &l);
+}
+
+int ctn_model_wind_air(ctn_model *m, double rho, double speed, double cd)
+{
+    if (!m || !m->lloads.n || !m->lloads.v[m->lloads.n - 1].drag) return CTN_ERR_INVALID;
+    ctn_lload *l = &m->lloads.v[m->lloads.n - 1];
+    l->rho = rho;
+    l->speed = speed;
+    l->cd = cd;
+    return CTN_OK;
 }
 
 void ctn_lload_dir(const ctn_lload *l, double u[3])

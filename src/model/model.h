@@ -111,6 +111,9 @@ typedef struct ctn_lload {
     double cdp, d;   /* drag: cd p [force/length^2] and the bare diameter d [length]:
                         q_w = cdp d, or cdp (d + 2 t) on iced elements */
     double t;        /* ice: the sleeve's thickness [length] (0: another lineload) */
+    double rho, speed, cd; /* drag given by speed= rho=: the air's density [mass/L^3], the
+                        wind's speed [L/s] and cd (a dynamics' relative wind); rho NAN
+                        when given by pressure= (ctn_model_wind_air) */
 } ctn_lload;
 
 /* A load case (cases.c): the load records tagged CTN_CASE_TAG0 + its index, solved from
@@ -197,9 +200,11 @@ typedef struct ctn_cable {
 /* A time history a dynamics analysis records (records.c). */
 typedef struct ctn_record {
     int node;        /* node index, or -1 */
-    unsigned dofs;   /* the node's directions (CTN_FIX_X | _Y | _Z) */
+    unsigned dofs;   /* the node's directions (CTN_FIX_X | _Y | _Z); a reaction's 0: the
+                        node's fixed ones */
     int element;     /* element index (its axial force), or -1 */
     int line;
+    int reaction;    /* 1: the node's support reactions in dofs (not its displacements) */
 } ctn_record;
 
 /* A function of time f(t) scaling loads and support motions in a dynamics analysis
@@ -335,6 +340,9 @@ void ctn_model_element_line(const ctn_model *m, const ctn_loadsel *sel, size_t e
 /* wind TARGET: drag cdp d [force/length] along the unit direction dir, cdp = cd p and d
  * the bare diameter (lineload.c). */
 int ctn_model_add_wind(ctn_model *m, const char *target, const double dir[3], double cdp, double d);
+/* The air of the wind just added: its density rho [mass/L^3] (NAN: given by pressure=),
+ * speed [L/s] and cd, for a dynamics analysis's drag on the relative velocity. */
+int ctn_model_wind_air(ctn_model *m, double rho, double speed, double cd);
 /* ice TARGET: the sleeve's weight q (a lineload) and its thickness t, which widens the
  * wind's diameter to d + 2 t on the elements it covers in the same solve. */
 int ctn_model_add_ice(ctn_model *m, const char *target, const double q[3], double t);

@@ -2,13 +2,15 @@
  * axial forces, in the order asked (catena/model.h). */
 #include "model/model.h"
 
-static int add_record(ctn_model *m, int node, unsigned dofs, int element)
+static int add_record(ctn_model *m, int node, unsigned dofs, int element, int reaction)
 {
     for (size_t i = 0; i < m->records.n; i++) {
         const ctn_record *r = &m->records.v[i];
-        if ((node >= 0 && r->node == node && (r->dofs & dofs)) || (element >= 0 && r->element == element))
+        unsigned mine = dofs ? dofs : CTN_FIX_ALL, theirs = r->dofs ? r->dofs : CTN_FIX_ALL;
+        if ((node >= 0 && r->node == node && (theirs & mine) && r->reaction == reaction) ||
+            (element >= 0 && r->element == element))
             return ctn_model_error(m, CTN_ERR_MODEL, "record: %s %d is recorded twice (first on line %d)",
-                                   node >= 0 ? "node" : "element",
+                                   node >= 0 ? (reaction ? "the reaction of node" : "node") : "element",
                                    node >= 0 ? m->nodes.v[node].id : m->elements.v[element].id, r->line);
     }
     int rc = CTN_ARRAY_RESERVE(m->ctx, m->records, 1);
@@ -18,6 +20,7 @@ static int add_record(ctn_model *m, int node, unsigned dofs, int element)
     r->dofs = dofs;
     r->element = element;
     r->line = m->line;
+    r->reaction = reaction;
     return CTN_OK;
 }
 
@@ -27,7 +30,7 @@ int ctn_model_record_node(ctn_model *m, int id, unsigned dofs)
     if (!m) return CTN_ERR_INVALID;
     if (dofs & ~(unsigned)CTN_FIX_ALL) return ctn_model_error(m, CTN_ERR_MODEL, "record: node %d: unknown directions", id);
     int rc = ctn_model_node_lookup(m, id, &i);
-    return rc ? rc : add_record(m, i, dofs ? dofs : CTN_FIX_ALL, -1);
+    return rc ? rc : add_record(m, i, dofs ? dofs : CTN_FIX_ALL, -1, 0);
 }
 
 int ctn_model_record_element(ctn_model *m, int id)
@@ -35,7 +38,16 @@ int ctn_model_record_element(ctn_model *m, int id)
     if (!m) return CTN_ERR_INVALID;
     int e = ctn_idmap_get(&m->element_ids, id);
     if (e < 0) return ctn_model_error(m, CTN_ERR_MODEL, "record: undefined element %d", id);
-    return add_record(m, -1, 0, e);
+    return add_record(m, -1, 0, e, 0);
+}
+
+int ctn_model_record_reaction(ctn_model *m, int id, unsigned dofs)
+{
+    int i;
+    if (!m) return CTN_ERR_INVALID;
+    if (dofs & ~(unsigned)CTN_FIX_ALL) return ctn_model_error(m, CTN_ERR_MODEL, "record: node %d: unknown directions", id);
+    int rc = ctn_model_node_lookup(m, id, &i);
+    return rc ? rc : add_record(m, i, dofs, -1, 1);   /* 0: its fixed directions */
 }
 
 size_t ctn_model_record_count(const ctn_model *m) { return m ? m->records.n : 0; }

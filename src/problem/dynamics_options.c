@@ -23,6 +23,7 @@ void ctn_dynamics_options_default(ctn_dynamics_options *opt)
     opt->maxit = 20;
     opt->maxcuts = 10;
     opt->from_rest = 1;
+    opt->output_every = 1;
 }
 
 const char *ctn_dyn_method_name(ctn_dyn_method m)
@@ -46,6 +47,22 @@ static int newmark_fault(const ctn_dynamics_options *o, char *msg, size_t size)
     double lo = 0.25 * (o->gamma + 0.5) * (o->gamma + 0.5);
     if (!(isfinite(o->beta) && o->beta >= lo - 1e-15 && o->beta <= 0.5))
         return snprintf(msg, size, "dynamics: beta must be from (gamma + 1/2)^2 / 4 = %g to 0.5 (got %g)", lo, o->beta), 1;
+    return 0;
+}
+
+/* Modal damping: a count within CTN_DYN_MODAL_MAX, 1 or count ratios in [0, 1). */
+static int modal_fault(const ctn_dynamics_options *o, char *msg, size_t size)
+{
+    if (o->modal_count < 0 || o->modal_count > CTN_DYN_MODAL_MAX)
+        return snprintf(msg, size, "dynamics: modal damping takes 1 to %d modes (got %d)", CTN_DYN_MODAL_MAX, o->modal_count), 1;
+    if (!o->modal_count) return 0;
+    if (o->modal_nzeta != 1 && o->modal_nzeta != o->modal_count)
+        return snprintf(msg, size, "dynamics: modal damping needs 1 ratio or one per mode (%d), got %d", o->modal_count,
+                        o->modal_nzeta), 1;
+    for (int i = 0; i < o->modal_nzeta; i++)
+        if (!(o->modal_zeta[i] >= 0 && o->modal_zeta[i] < 1))
+            return snprintf(msg, size, "dynamics: modal damping ratio %d must be from 0 to below 1 (got %g)", i + 1,
+                            o->modal_zeta[i]), 1;
     return 0;
 }
 
@@ -73,7 +90,10 @@ int ctn_dynamics_options_fault(const ctn_dynamics_options *o, char *msg, size_t 
     if (o->maxit < 1 || o->maxit > 1000) return snprintf(msg, size, "dynamics: maxit must be from 1 to 1000 (got %d)", o->maxit), 1;
     if (o->maxcuts < 0 || o->maxcuts > 40)
         return snprintf(msg, size, "dynamics: cutbacks must be from 0 to 40 (got %d)", o->maxcuts), 1;
-    return 0;
+    if (o->output_every < 1) return snprintf(msg, size, "dynamics: output_every must be >= 1 (got %d)", o->output_every), 1;
+    if (o->frames != 0 && o->frames != 1) return fault(msg, size, "frames must be 0 or 1");
+    if (o->relative_wind != 0 && o->relative_wind != 1) return fault(msg, size, "relative_wind must be 0 or 1");
+    return modal_fault(o, msg, size);
 }
 
 int ctn_dynamics_options_take(ctn_ctx *ctx, ctn_dynamics_options *dst, const ctn_dynamics_options *src)

@@ -41,6 +41,10 @@ typedef struct ctn_dyn_result {
     size_t nrow, cap;          /* rows stored, room */
     double *rows;              /* nrow x (1 + ncol): t, then the columns */
     double *energy;            /* nrow x 4: kinetic, strain, work, damping */
+    size_t nn, ne;             /* the model's nodes and elements (a frame's size) */
+    size_t nframe, fcap;       /* frames stored (one per row when asked), room */
+    double *frames;            /* nframe x (1 + 9 nn + ne): t, d, v, react (3 per node),
+                                  the elements' axial forces */
 } ctn_dyn_result;
 void ctn_dyn_result_destroy(ctn_dyn_result **r);
 

@@ -80,9 +80,10 @@ int ctn_dyn_central_step(ctn_dyn *dy, double h, int *ok)
     }
     int rc = ctn_dyn_residual(dy, dy->d1, 0, dy->r1, &valid);
     if (rc || !valid) return rc;
+    ctn_dyn_wind(dy, dy->d1, vh, dy->t1, dy->r1);          /* on v(n+1/2) */
     ctn_dyn_damp(dy, vh, dy->w2);
     for (size_t q = 0; q < n; q++) {
-        dy->a1[q] = (dy->r1[q] - dy->w2[q]) / dy->diag[q];
+        dy->a1[q] = (dy->r1[q] - dy->w2[q] - (dy->fsup ? dy->fsup[q] : 0.0)) / dy->diag[q];
         dy->v1[q] = vh[q] + 0.5 * h * dy->a1[q];
         if (!isfinite(dy->v1[q])) return CTN_OK;
     }

@@ -65,18 +65,41 @@ static int check_mass(ctn_problem *p, const ctn_dynamics_options *o, double *dia
     return CTN_OK;
 }
 
+/* A reaction is recorded only where the node is fixed. */
+static int check_reaction_records(const ctn_problem *p)
+{
+    const ctn_model *m = p->m;
+    for (size_t i = 0; i < m->records.n; i++) {
+        const ctn_record *r = &m->records.v[i];
+        unsigned free_dofs = r->reaction ? ctn_dyn_record_dofs(m, r) & ~m->nodes.v[r->node].fix & CTN_FIX_ALL : 0;
+        if (r->reaction && !ctn_dyn_record_dofs(m, r))
+            return ctn_error_at(p->ctx, CTN_ERR_MODEL, m->file, r->line, "record: node %d has no support (fix=): it "
+                                "has no reaction to record", m->nodes.v[r->node].id);
+        if (free_dofs)
+            return ctn_error_at(p->ctx, CTN_ERR_MODEL, m->file, r->line, "record: node %d is not fixed in u%c: it has no "
+                                "reaction there (give dof= of its fixed directions, or fix= them)", m->nodes.v[r->node].id,
+                                "xyz"[free_dofs & CTN_FIX_X ? 0 : free_dofs & CTN_FIX_Y ? 1 : 2]);
+    }
+    return CTN_OK;
+}
+
 int ctn_dynamics_check(ctn_problem *p, const ctn_dynamics_options *o)
 {
     const ctn_model *m = p->m;
+    int rc = check_reaction_records(p);
+    if (rc) return rc;
     if (p->a->map.rot > 0) return ctn_dyn_error(p, o, "dynamics: models with rotations (beam, rspring) are not supported yet");
-    if (p->fl) return ctn_dyn_error(p, o, "dynamics: loads that follow the geometry (hload projection=deformed, wind) are "
-                                      "not supported yet");
+    for (size_t h = 0; h < m->hloads.n; h++)
+        if (!m->hloads.v[h].reference)
+            return ctn_dyn_error(p, o, "dynamics: hload on the deformed projection (a load that follows the geometry) is "
+                                       "not supported yet");
+    if ((rc = ctn_dyn_wind_check(p, o))) return rc;
     if (o->line > 0 && (size_t)o->steps_before != m->steps.n)
         return ctn_dyn_error(p, o, "dynamics: give it after the last `step` line (it starts from that step's equilibrium)");
     if (p->ndof == 0) return ctn_dyn_error(p, o, "dynamics: the model has no free DOF");
     double *diag = ctn_malloc(p->ctx, p->ndof, sizeof(double));
     if (!diag) return CTN_ERR_NOMEM;
-    int rc = check_mass(p, o, diag);
+    rc = check_mass(p, o, diag);
     ctn_free(diag);
     return rc;
 }

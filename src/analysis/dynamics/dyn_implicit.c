@@ -5,7 +5,8 @@
  *   a1 = (d1 - d0 - h v0 - h^2 (1/2 - beta) a0) / (beta h^2),
  *   v1 = v0 + h ((1 - gamma) a0 + gamma a1).
  * Newton on d1: (K_T + c1 M + c2 C) dd = R / (1 - af), c1 = (1 - am) / ((1 - af) beta
- * h^2), c2 = gamma / (beta h). docs/theory.md "Dynamics". */
+ * h^2), c2 = gamma / (beta h) (modal damping's low-rank part of C by Woodbury's identity,
+ * dyn_modal.c). docs/theory.md "Dynamics". */
 #include "analysis/dynamics/dynamics.h"
 #include "linalg/pcg.h"
 
@@ -36,6 +37,7 @@ void ctn_dyn_damp(const ctn_dyn *dy, const double *x, double *y)
 {
     if (dy->Cx) ctn_problem_symv(dy->p, dy->Cx, x, y);
     else memset(y, 0, dy->p->ndof * sizeof(double));
+    if (dy->mr) ctn_dyn_modal_damp(dy, x, y);
 }
 
 /* a1, v1 from d1 (Newmark). */
@@ -64,11 +66,12 @@ static void step_residual(ctn_dyn *dy, const double *r1, double *ref)
     ctn_dyn_mass(dy, w, y);                           /* y = M a(n+1-am) */
     double ma = ctn_layout_norm(&p->eq, y);
     for (size_t q = 0; q < n; q++) y[q] = (1 - af) * r1[q] + af * dy->r0[q] - y[q];
-    if (dy->Cx) {
+    if (ctn_dyn_damped(dy)) {
         for (size_t q = 0; q < n; q++) w[q] = (1 - af) * dy->v1[q] + af * dy->v0[q];
         ctn_dyn_damp(dy, w, dy->w2);
         for (size_t q = 0; q < n; q++) y[q] -= dy->w2[q];
     }
+    for (size_t q = 0; dy->fsup && q < n; q++) y[q] -= dy->fsup[q];   /* moving supports */
     double fe = 0, fi = 0;
     const int *eq = p->a->map.eq;
     for (size_t i = 0; i < p->ns; i++)
@@ -88,9 +91,11 @@ static int factor_effective(ctn_dyn *dy, double h, int *ok)
     size_t mnz = (size_t)dy->mcol[p->ndof];
     for (size_t k = 0; k < mnz; k++) p->Kx[dy->mslot[k]] += c1 * dy->mval[k];   /* M's nonzeros only */
     for (size_t k = 0; dy->Cx && k < p->a->nnz; k++) p->Kx[k] += c2 * dy->Cx[k];
+    ctn_dyn_wind_tangent(dy, c2);
     long col = -1;
     int rc = ctn_problem_factor(p, 0.0, ok, &col);
     dy->sum.factorizations++;
+    if (!rc && *ok) rc = ctn_dyn_modal_factor(dy, c2, ok);
     return rc;
 }
 
@@ -122,6 +127,7 @@ int ctn_dyn_implicit_step(ctn_dyn *dy, double h, int *ok)
         double ref = 0;
         kinematics(dy, h);
         if ((rc = ctn_dyn_residual(dy, dy->d1, with_K, r1, &valid)) || !valid) return rc;
+        ctn_dyn_wind(dy, dy->d1, dy->v1, dy->t1, r1);
         step_residual(dy, r1, &ref);
         double rn = ctn_layout_norm(&p->eq, dy->R);
         if (!isfinite(rn)) return CTN_OK;
@@ -137,6 +143,7 @@ int ctn_dyn_implicit_step(ctn_dyn *dy, double h, int *ok)
         if ((rc = factor_effective(dy, h, &posdef)) || !posdef) return rc;
         for (size_t q = 0; q < p->ndof; q++) dy->R[q] /= 1 - dy->af;
         if ((rc = ctn_problem_linsolve(p, dy->R, dy->w))) return rc;
+        ctn_dyn_modal_correct(dy, dy->w);
         ctn_problem_update(p, dy->d1, 1.0, dy->w);
         dy->sum.iterations++;
         double dn = ctn_layout_norm(&p->eq, dy->w), dd = ctn_layout_norm(&p->st, dy->d1) + p->lref;

@@ -1,6 +1,6 @@
 /* The histories of a dynamics analysis: a row per time step (t = 0 first) of the
- * model's records (nodes' displacements from the start geometry, elements' axial
- * forces) and of the energy balance; the solution's accessors of them. */
+ * model's records (nodes' displacements from the start geometry, supports' reactions,
+ * elements' axial forces) and of the energy balance; the solution's accessors of them. */
 #include "analysis/dynamics/dynamics.h"
 
 #include <stdio.h>
@@ -12,8 +12,14 @@ void ctn_dyn_result_destroy(ctn_dyn_result **r)
     ctn_free((*r)->names);
     ctn_free((*r)->rows);
     ctn_free((*r)->energy);
+    ctn_free((*r)->frames);
     ctn_free(*r);
     *r = NULL;
+}
+
+unsigned ctn_dyn_record_dofs(const ctn_model *m, const ctn_record *r)
+{
+    return r->reaction && !r->dofs ? m->nodes.v[r->node].fix & CTN_FIX_ALL : r->dofs;
 }
 
 static size_t column_count(const ctn_model *m)
@@ -21,7 +27,8 @@ static size_t column_count(const ctn_model *m)
     size_t n = 0;
     for (size_t i = 0; i < m->records.n; i++) {
         const ctn_record *r = &m->records.v[i];
-        n += r->element >= 0 ? 1 : (size_t)((r->dofs & 1) + (r->dofs >> 1 & 1) + (r->dofs >> 2 & 1));
+        unsigned b = ctn_dyn_record_dofs(m, r);
+        n += r->element >= 0 ? 1 : (size_t)((b & 1) + (b >> 1 & 1) + (b >> 2 & 1));
     }
     return n;
 }
@@ -35,13 +42,16 @@ int ctn_dyn_record_begin(ctn_dyn *dy)
     dy->s->dyn = res;
     res->ncol = column_count(m);
     if (res->ncol && !(res->names = ctn_calloc(dy->p->ctx, res->ncol, sizeof *res->names))) return CTN_ERR_NOMEM;
-    static const char *const u[3] = { "ux", "uy", "uz" };
+    static const char *const u[2][3] = { { "ux", "uy", "uz" }, { "fx", "fy", "fz" } };
     size_t c = 0;
+    res->nn = m->nodes.n;
+    res->ne = m->elements.n;
     for (size_t i = 0; i < m->records.n; i++) {
         const ctn_record *r = &m->records.v[i];
         if (r->element >= 0) snprintf(res->names[c++], CTN_DYN_NAME_MAX, "%d.force", m->elements.v[r->element].id);
         for (int k = 0; k < 3 && r->element < 0; k++)
-            if (r->dofs >> k & 1) snprintf(res->names[c++], CTN_DYN_NAME_MAX, "%d.%s", m->nodes.v[r->node].id, u[k]);
+            if (ctn_dyn_record_dofs(m, r) >> k & 1)
+                snprintf(res->names[c++], CTN_DYN_NAME_MAX, "%d.%s", m->nodes.v[r->node].id, u[r->reaction != 0][k]);
     }
     return ctn_dyn_record_row(dy, 0.0);
 }
@@ -75,14 +85,22 @@ int ctn_dyn_record_row(ctn_dyn *dy, double t)
         if (rc) return rc;
         res->cap = cap;
     }
+    if (dy->o->frames) {
+        int rc = ctn_dyn_keep_frame(dy, t);                   /* the reactions at t too */
+        if (rc) return rc;
+    } else if (dy->react) {
+        int rc = ctn_dyn_reactions(dy, t, NULL);
+        if (rc) return rc;
+    }
     double *row = res->rows + res->nrow * w, *en = res->energy + res->nrow * 4;
     size_t c = 1;
     row[0] = t;
     for (size_t i = 0; i < m->records.n; i++) {
         const ctn_record *r = &m->records.v[i];
+        const double *from = r->reaction ? dy->react : dy->d0;
         if (r->element >= 0) row[c++] = element_force(dy, (size_t)r->element, dy->d0);
         for (int k = 0; k < 3 && r->element < 0; k++)
-            if (r->dofs >> k & 1) row[c++] = dy->d0[ctn_dofmap_node(&dy->p->a->map, (size_t)r->node) + (size_t)k];
+            if (ctn_dyn_record_dofs(m, r) >> k & 1) row[c++] = from[ctn_dofmap_node(&dy->p->a->map, (size_t)r->node) + (size_t)k];
     }
     en[0] = dy->ek;
     en[1] = dy->U;

@@ -21,8 +21,10 @@ int ctn_dyn_apply_removals(ctn_dyn *dy, double t)
     if (rc || !changed) return rc;
     ctn_dyn_set_time(dy, t, dy->d0);
     if ((rc = ctn_dyn_residual(dy, dy->d0, 0, dy->r0, &valid))) return rc;
+    ctn_dyn_wind(dy, dy->d0, dy->v0, t, dy->r0);
     dy->D += dy->U - dy->U1;
     dy->U = dy->U1;
+    ctn_dyn_support_force(dy, t, t, 1.0, 1.0);
     return ctn_dyn_acceleration(dy);
 }
 

@@ -99,7 +99,7 @@ void ctn_dyn_set_time(ctn_dyn *dy, double t, double *d)
     }
 }
 
-/* a0 = M^-1 (f_ext - f_int(d0) - C v0): M factored by the problem's linear solver, or
+/* a0 = M^-1 (f_ext - f_int(d0) - C v0 - M_fs a_s - C_fs v_s): M factored by the problem's linear solver, or
  * over the lumped diagonal where M is singular (DOFs without mass: a0 = 0 there). */
 int ctn_dyn_acceleration(ctn_dyn *dy)
 {
@@ -109,7 +109,7 @@ int ctn_dyn_acceleration(ctn_dyn *dy)
     p->spd_factor = p->last_definite = 0;
     p->factored_at = NULL;
     ctn_dyn_damp(dy, dy->v0, dy->w2);
-    for (size_t q = 0; q < p->ndof; q++) dy->w2[q] = dy->r0[q] - dy->w2[q];
+    for (size_t q = 0; q < p->ndof; q++) dy->w2[q] = dy->r0[q] - dy->w2[q] - (dy->fsup ? dy->fsup[q] : 0.0);
     if (!rc && info.ok) return ctn_linsolve_solve(p->ls, dy->w2, dy->a0);
     for (size_t q = 0; q < p->ndof; q++) dy->a0[q] = dy->diag[q] > 0 ? dy->w2[q] / dy->diag[q] : 0.0;
     return rc;
@@ -125,7 +125,12 @@ int ctn_dyn_start(ctn_dyn *dy)
     double tot[3];
     size_t bad;
     char msg[256];
-    int rc = ctn_dyn_residual(dy, dy->d0, 1, dy->r0, &valid);
+    int rc = ctn_dyn_wind_setup(dy);
+    if (!rc) rc = ctn_dyn_residual(dy, dy->d0, 1, dy->r0, &valid);
+    if (!rc && valid && dy->nwind) {
+        ctn_dyn_wind(dy, dy->d0, dy->v0, 0.0, dy->r0);
+        memcpy(dy->wf0, dy->wf, p->ns * sizeof(double));
+    }
     if (!rc && !valid) {
         snprintf(msg, sizeof msg, "dynamics: element %d cannot be evaluated in the start state (a chord of zero length)",
                  p->sum->fail_element);
@@ -136,6 +141,7 @@ int ctn_dyn_start(ctn_dyn *dy)
     if (rc) return rc;
     ctn_asm_mass_diag(p->a, dy->diag, tot, &bad);
     for (size_t k = 0; dy->Cx && k < p->a->nnz; k++) dy->Cx[k] = o->damping_alpha * dy->Mx[k] + o->damping_beta * p->Kx[k];
+    if ((rc = ctn_dyn_modal_setup(dy))) return rc;
     dy->sum.mass = lumped ? CTN_MASS_LUMPED : CTN_MASS_CONSISTENT;
     dy->U = dy->U1;
     dy->e0 = dy->U;
@@ -148,6 +154,8 @@ int ctn_dyn_start(ctn_dyn *dy)
             return ctn_dyn_error(p, o, msg);
         }
     }
+    if ((rc = ctn_dyn_output_begin(dy))) return rc;
+    ctn_dyn_support_force(dy, 0.0, 0.0, 1.0, 1.0);
     if ((rc = ctn_dyn_acceleration(dy))) return rc;
     return ctn_dyn_record_begin(dy);
 }

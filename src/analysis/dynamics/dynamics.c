@@ -19,8 +19,14 @@ static void dyn_free(ctn_dyn *dy)
     ctn_free(dy->mrow);
     ctn_free(dy->mval);
     ctn_free(dy->mslot);
+    ctn_free(dy->sup_e);
+    ctn_free(dy->sup_off);
+    ctn_free(dy->sup_idx);
+    ctn_free(dy->mpiv);
+    ctn_free(dy->welem);
     double *v[] = { dy->Mx, dy->Cx, dy->diag, dy->d0, dy->d1, dy->v0, dy->a0, dy->v1, dy->a1, dy->r0, dy->r1,
-                    dy->R, dy->w, dy->w2, dy->ework, dy->fe0 };
+                    dy->R, dy->w, dy->w2, dy->ework, dy->fe0, dy->react, dy->vs, dy->as, dy->sup_M, dy->sup_K, dy->fsup, dy->mPhi, dy->mU, dy->mY, dy->mE, dy->mS, dy->wk, dy->wvel, dy->wD, dy->wf,
+                    dy->wf0, dy->wv };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
 }
 
@@ -52,9 +58,12 @@ void ctn_dyn_accept(ctn_dyn *dy, double h, const double *r1)
     double work = 0;
     for (size_t i = 0; i < p->ns; i++)                   /* the trapezoidal rule (exact for */
         if (eq[i] >= 0) work += 0.5 * (dy->fe0[i] + p->fext[i]) * (dy->d1[i] - dy->d0[i]);   /* loads held) */
+    for (size_t i = 0; dy->nwind && i < p->ns; i++)     /* the drag's work, likewise */
+        if (eq[i] >= 0) work += 0.5 * (dy->wf0[i] + dy->wf[i]) * (dy->d1[i] - dy->d0[i]);
+    if (dy->nwind) memcpy(dy->wf0, dy->wf, p->ns * sizeof(double));
     dy->W += ctn_layout_sum(&p->st, work);
     memcpy(dy->fe0, p->fext, p->ns * sizeof(double));
-    if (dy->Cx) {
+    if (ctn_dyn_damped(dy)) {
         ctn_dyn_damp(dy, dy->v0, dy->w2);
         double c0 = ctn_layout_dot(&p->eq, dy->v0, dy->w2);
         ctn_dyn_damp(dy, dy->v1, dy->w2);
@@ -74,11 +83,24 @@ void ctn_dyn_accept(ctn_dyn *dy, double h, const double *r1)
 /* One step of h from t by the method; *ok = 0 when it failed. */
 static int try_step(ctn_dyn *dy, double t, double h, int *ok)
 {
+    dy->t1 = t + h;
     ctn_dyn_set_time(dy, t + h, dy->d1);
+    ctn_dyn_support_force(dy, t, t + h, 1 - dy->am, 1 - dy->af);   /* central: am = af = 0 */
     return dy->o->method == CTN_DYN_CENTRAL ? ctn_dyn_central_step(dy, h, ok) : ctn_dyn_implicit_step(dy, h, ok);
 }
 
-/* From t = 0 to t_end: each multiple of dt reached in steps of dt, halved on failure. */
+/* A failed run's last converged state as a row when the rows skip steps and it is not
+ * the last row already (every step is a row otherwise). */
+static int last_row(ctn_dyn *dy, double t)
+{
+    const ctn_dyn_result *res = dy->s->dyn;
+    size_t w = 1 + res->ncol;
+    if (dy->every == 1 || !res->nrow || res->rows[(res->nrow - 1) * w] == t) return CTN_OK;
+    return ctn_dyn_record_row(dy, t);
+}
+
+/* From t = 0 to t_end: each multiple of dt reached in steps of dt, halved on failure; a
+ * row at every output_every-th and the last. */
 static int march(ctn_dyn *dy)
 {
     const ctn_dynamics_options *o = dy->o;
@@ -106,14 +128,14 @@ static int march(ctn_dyn *dy)
             if (level >= o->maxcuts || o->method == CTN_DYN_CENTRAL) {
                 dy->sum.reason = CTN_DIVERGED_MAXIT;
                 dy->sum.t_fail = t;
-                return CTN_OK;
+                return last_row(dy, t);
             }
             h *= 0.5;
             level++;
             dy->sum.cuts++;
         }
         t = target;
-        if ((rc = ctn_dyn_record_row(dy, t))) return rc;
+        if ((k % (size_t)dy->every == 0 || k == N) && (rc = ctn_dyn_record_row(dy, t))) return rc;
         dy->sum.steps = k;
         dy->sum.t_reached = t;
         if ((k & 63) == 0) ctn_progress(dy->p->ctx, "dynamics", t, o->t_end);
@@ -137,6 +159,10 @@ static int finish(ctn_dyn *dy, double t0)
     s->sum.load_factor = 1.0;
     dy->sum.energy_error = dy->escale > 0 ? dy->emax / dy->escale : 0.0;
     dy->sum.t_total = ctn_clock() - t0;
+    dy->sum.output_every = dy->every;
+    dy->sum.modal_count = (int)dy->mr;
+    dy->sum.frames = s->dyn->nframe;
+    dy->sum.relative_wind = (int)dy->nwind;
     s->dyn->sum = dy->sum;
     return CTN_OK;
 }
@@ -145,6 +171,7 @@ int ctn_dynamics_run(ctn_problem *p, ctn_solution *s, const ctn_dynamics_options
 {
     double t0 = ctn_clock();
     ctn_solve_summary *keep = p->sum;
+    ctn_follow *fl = p->fl;                          /* winds: the relative drag instead */
     int overlap = p->overlap;
     ctn_dyn dy;
     memset(&dy, 0, sizeof dy);
@@ -159,11 +186,13 @@ int ctn_dynamics_run(ctn_problem *p, ctn_solution *s, const ctn_dynamics_options
     dy.sum.damping_beta = o->damping_beta;
     dy.sum.reason = CTN_DIVERGED_MAXIT;
     dy.lumped = o->method == CTN_DYN_CENTRAL || o->mass == CTN_MASS_LUMPED;
+    dy.every = o->output_every > 0 ? o->output_every : 1;
     p->sum = &s->sum;
     p->mode = 0;
     ctn_problem_settle(p);
     p->overlap = 0;                                  /* K_T is not what is factored */
     int rc = ctn_dynamics_check(p, o);
+    p->fl = NULL;
     if (!rc) rc = dyn_alloc(&dy);
     if (!rc) {
         ctn_dyn_method_params(&dy);
@@ -175,6 +204,7 @@ int ctn_dynamics_run(ctn_problem *p, ctn_solution *s, const ctn_dynamics_options
     ctn_dyn_restore_removals(&dy);
     p->overlap = overlap;
     p->sum = keep;
+    p->fl = fl;
     dyn_free(&dy);
     return rc;
 }

@@ -32,6 +32,27 @@ typedef struct ctn_dyn {
     double U1;                    /* strain energy at the last residual */
     int lumped;                   /* the mass matrix is the lumped one */
     unsigned char *severed;       /* per model removal: applied */
+    int every;                    /* a row every this many steps (output_every) */
+    double *react, *vs, *as;      /* state: reactions, the velocity and acceleration of every
+                                     DOF (dyn_output.c; NULL when no reaction is asked) */
+    size_t nsup;                  /* the support elements (with a fixed DOF): */
+    size_t *sup_e, *sup_off;      /* their indices, the offsets of their packed blocks in */
+    double *sup_M, *sup_K;        /* their mass and start tangent (sup_K: beta > 0 only) */
+    size_t *sup_idx;              /* maxdof: an element's state indices */
+    double *fsup;                 /* ndof: M_fs a_s + C_fs v_s of the moving supports over the
+                                     step (NULL: no support moves) */
+    size_t mr;                    /* modal damping (dyn_modal.c): its modes r (0: none), */
+    double *mPhi, *mU, *mY;       /* ndof x r: Phi, U = M Phi, Y = A^-1 U (A the factored */
+    double *mE;                   /* effective tangent); r: 2 zeta_i omega_i */
+    double *mS;                   /* r x r: S = I + c2 E U^T Y, LU-factored (pivots mpiv) */
+    size_t *mpiv;
+    double mc2;                   /* c2 of the factored S */
+    size_t nwind;                 /* relative wind (dyn_wind.c): elements under a wind, */
+    size_t *welem;                /* their indices, */
+    double *wk, *wvel, *wD;       /* rho cd d / 2, the wind's velocity (3), the last block */
+    double *wf, *wf0;             /* state: the drag at the last evaluation, at t_n */
+    double *wv;                   /* state: every DOF's velocity (scratch) */
+    double t1;                    /* the end time of the step being taken */
 } ctn_dyn;
 
 /* A model error at the `dynamics` line (or without a place, from the API) (dyn_check.c). */
@@ -73,8 +94,45 @@ void ctn_dyn_damp(const ctn_dyn *dy, const double *x, double *y);
  * state moved (d1, v1, a1, r -> d0, v0, a0, r0). */
 void ctn_dyn_accept(ctn_dyn *dy, double h, const double *r1);
 
+/* dyn_output.c: the velocity and acceleration of every DOF (state layout) at t: the free
+ * ones' vq, aq (ndof), the fixed ones' from their support motion's function (as NULL:
+ * none); the support elements' mass and K_0 kept when reactions or frames are asked
+ * (after K_0 is at d0); the reactions f_int + M a + C v - f_ext at d0 into dy->react
+ * (the elements' axial forces into force, ne, unless NULL); a frame of the state at t. */
+void ctn_dyn_rates(const ctn_dyn *dy, double t, const double *vq, const double *aq, double *vs, double *as);
+int ctn_dyn_output_begin(ctn_dyn *dy);
+int ctn_dyn_reactions(ctn_dyn *dy, double t, double *force);
+int ctn_dyn_keep_frame(ctn_dyn *dy, double t);
+/* The moving supports' inertia and damping on the free DOFs over a step from t0 to t1,
+ * M_fs a_s + C_fs v_s with a_s, v_s weighted wa, wv at t1 (1 - wa, 1 - wv at t0), into
+ * dy->fsup (nothing when no support moves). */
+void ctn_dyn_support_force(ctn_dyn *dy, double t0, double t1, double wa, double wv);
+
+/* dyn_modal.c: modal damping's modes about d0 (after M's own pattern and before a0);
+ * y += C_m x (ndof); w = Phi E U^T v (ndof: the modal damping force is M w, for the
+ * reactions); after A = K_T + c1 M + c2 C_R is factored, Y and S for c2 (*ok = 0 when S is
+ * singular); x = A^-1 b corrected into (A + c2 C_m)^-1 b. Each a no-op without it. */
+int ctn_dyn_modal_setup(ctn_dyn *dy);
+void ctn_dyn_modal_damp(const ctn_dyn *dy, const double *x, double *y);
+void ctn_dyn_modal_velocity(const ctn_dyn *dy, const double *v, double *w);
+int ctn_dyn_modal_factor(ctn_dyn *dy, double c2, int *ok);
+void ctn_dyn_modal_correct(const ctn_dyn *dy, double *x);
+/* dyn_wind.c: the winds a dynamics can take (CTN_ERR_MODEL otherwise); the elements under
+ * them; their drag at positions d (state) and free velocities v (ndof; a moving support's
+ * from its function at t) added into r (ndof), kept in dy->wf; c2 times its velocity
+ * derivative's blocks added into the effective tangent p->Kx. */
+int ctn_dyn_wind_check(const ctn_problem *p, const ctn_dynamics_options *o);
+int ctn_dyn_wind_setup(ctn_dyn *dy);
+void ctn_dyn_wind(ctn_dyn *dy, const double *d, const double *v, double t, double *r);
+void ctn_dyn_wind_tangent(ctn_dyn *dy, double c2);
+
+/* Whether the analysis has damping (Rayleigh's or modal). */
+static inline int ctn_dyn_damped(const ctn_dyn *dy) { return dy->Cx != NULL || dy->mr > 0; }
+
 /* The result's columns (the model's records) and its first row (t = 0); a row at t. */
 int ctn_dyn_record_begin(ctn_dyn *dy);
+/* The directions record r takes (a reaction's 0: its node's fixed ones). */
+unsigned ctn_dyn_record_dofs(const ctn_model *m, const ctn_record *r);
 int ctn_dyn_record_row(ctn_dyn *dy, double t);
 
 #endif
