@@ -85,7 +85,7 @@ static int trial(corrector *c, double alpha, int fresh, double *rn, double *pi, 
     if (!fresh) memcpy(c->d, e->dsave, e->ns * sizeof(double));
     ctn_problem_update(e, c->d, alpha, e->dd);
     int rc = ctn_problem_residual(e, c->d, 1, rn, pi, ok);
-    if (pi && e->fl) *pi = 0.5 * *rn * *rn;          /* no potential: the residual's merit */
+    if (pi && (e->fl || e->sp)) *pi = 0.5 * *rn * *rn;          /* no potential: the residual's merit */
     return rc;
 }
 
@@ -128,7 +128,7 @@ static int lm_step(corrector *c, double *alpha, double *rn, double *pi)
 {
     ctn_problem *e = c->e;
     double dd2 = ctn_layout_dot(&e->eq, e->dd, e->dd);
-    double pred = e->fl ? 0.5 * (c->rn * c->rn - c->mu * c->mu * dd2)       /* |r|^2 / 2 */
+    double pred = e->fl || e->sp ? 0.5 * (c->rn * c->rn - c->mu * c->mu * dd2)       /* |r|^2 / 2 */
                         : 0.5 * (ctn_layout_dot(&e->eq, e->r, e->dd) + c->mu * dd2);
     int ok, rc = trial(c, 1.0, 1, rn, pi, &ok);
     *alpha = 0;
@@ -236,7 +236,7 @@ static int correct(ctn_problem *e, ctn_solution *s, double *d, ctn_reason *reaso
     c.globalized = e->strategy->globalized;
     *reason = CTN_DIVERGED_NANORINF;
     int valid, rc = ctn_problem_residual(e, d, 1, &c.rn, c.globalized ? &c.pi : NULL, &valid);
-    if (c.globalized && e->fl) c.pi = 0.5 * c.rn * c.rn;
+    if (c.globalized && (e->fl || e->sp)) c.pi = 0.5 * c.rn * c.rn;
     if (!rc && valid && c.globalized) remember(&c, c.pi);
     if (rc || !valid) return rc;
     if ((rc = ctn_solution_push_residual(s, c.rn))) return rc;
