@@ -212,6 +212,11 @@ int ctn_spin_create(ctn_problem *p);
 void ctn_spin_destroy(ctn_spin **s);
 int ctn_spin_solve(ctn_problem *p, const double *b, double *x);
 
+/* The right-hand side -g (ndof) of the stretch correction of a step dd (ndof) from d to
+ * dtrial (states) in the members of the families of finite rotations (stretch.c);
+ * 1 if there is any such member, else 0. */
+int ctn_problem_stretch_rhs(ctn_problem *p, const double *d, const double *dtrial, const double *dd, double *g);
+
 /* The tangent's values (p->Kx, mode 0: the materials' own laws) and p->fint at the state
  * d (state layout) of the solution's last step; CTN_ERR_INVALID, naming who, for a
  * solution of another model or a collapsed element (stability.c). */
