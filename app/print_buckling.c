@@ -16,4 +16,10 @@ void ctn_print_buckling(FILE *out, const ctn_model *m, const ctn_solution *s)
         ctn_solution_buckling(s, k, &b);
         fprintf(out, "%6zu %16.10g %8d %12.1e\n", k + 1, b.factor, b.node, b.residual);
     }
+    if (bs.nl_kind == 1)
+        fprintf(out, "  non-linear check (imperfection %.3g in mode 1, %d increments): limit at load factor %.6g\n",
+                bs.nl_imperfection, bs.nl_increments, bs.nl_factor);
+    else if (bs.nl_kind == 2)
+        fprintf(out, "  non-linear check (imperfection %.3g in mode 1, %d increments): stable up to the linear "
+                     "factor; Southwell's factor %.6g\n", bs.nl_imperfection, bs.nl_increments, bs.nl_factor);
 }

@@ -18,6 +18,8 @@
  * Then the closed-form laws of each family: the cable's two strain measures and
  * tension-only slack, the spring's N = k (l - l0). */
 #include "check.h"
+#include "assemble/dofmap.h"
+#include "element/beam3.h"
 #include "element/cable2.h"
 #include "element/spring2.h"
 
@@ -41,6 +43,10 @@ typedef struct sample {
     double props[32];   /* room for any family's properties (asserted) */
     int nn;             /* nodes: the family's count, 3 when it takes any (pulley) */
     double X[3 * MAXN];
+    int spin[MAXN];     /* a finite-rotation family's node whose rotations are composed
+                           (all free): its rotation variables are spins (beam3.h); else a
+                           quarter of the time a plane model's node (rx, ry fixed), whose
+                           are the rotation vector's components, added */
 } sample;
 
 /* A beam's material and section "mat", "sec" (random E, G, A, Iy, Iz, J; shear areas
@@ -85,7 +91,11 @@ static int make_sample(sample *s, int type, int variant, unsigned *seed)
     CHECK(ops->props_size <= sizeof s->props && s->nn <= MAXN && (ops->ndof_node == 3 || ops->ndof_node == 6));
     for (int k = 0; k < 3 * s->nn; k++) s->X[k] = urand(seed, -10, 10);
     int rc = ctn_ctx_create(&s->ctx) || ctn_model_create(s->ctx, &s->m);
-    for (int a = 0; a < s->nn; a++) rc = rc || ctn_model_add_node(s->m, a + 1, s->X + 3 * a, 0);
+    for (int a = 0; a < s->nn; a++) {
+        unsigned fix = (ops->flags & CTN_ELEM_FINITE_ROTATION) && urand(seed, 0, 1) < 0.25 ? CTN_FIX_RX | CTN_FIX_RY : 0;
+        s->spin[a] = (ops->flags & CTN_ELEM_FINITE_ROTATION) && ctn_beam_spin_node(fix);
+        rc = rc || ctn_model_add_node(s->m, a + 1, s->X + 3 * a, fix);
+    }
     ctn_element_spec_init(&spec);
     if (!rc && (ops->flags & CTN_ELEM_SECTION) && ops->ndof_node == 6)
         rc = beam_section(s->m, seed, spec.orient);
@@ -123,7 +133,25 @@ static void unpack(int n, const double *P, double *K)
         for (int j = i; j < n; j++) K[n * i + j] = K[n * j + i] = P[ctn_packed_index(n, i, j)];
 }
 
-/* max |K - K_fd| / max |K| at displacements u. */
+/* out = u moved by h in variable j: added, or for a spin (s->spin) composed,
+ * exp(psi) <- exp(h e) exp(psi). */
+static void perturb(const sample *s, const double *u, int j, double h, double *out)
+{
+    int ndn = s->ops->ndof_node, n = s->nn * ndn, a = j / ndn, c = j % ndn;
+    for (int k = 0; k < n; k++) out[k] = u[k];
+    if (c < 3 || !s->spin[a]) {
+        out[j] += h;
+        return;
+    }
+    double dw[3] = { 0, 0, 0 };
+    dw[c - 3] = h;
+    ctn_rot_update_compose(out + ndn * a + 3, dw);
+}
+
+/* max |K - K_fd| / max |K| at displacements u. The forces of a spin node are the
+ * gradient at the spin 0 of the current rotation, so their central difference along
+ * spin e_c is K e_c + (e_c x m) / 2 in that node's rotation rows (m its moment: the
+ * first-order term of the left Jacobian of exp, J^-T = I + [h e_c]x / 2), taken off. */
 static double tangent_error(const sample *s, const double *u)
 {
     int n = s->nn * s->ops->ndof_node;
@@ -134,13 +162,16 @@ static double tangent_error(const sample *s, const double *u)
     for (int j = 0; j < n; j++) {
         double up[MAXD], um[MAXD], fp[MAXD], fm[MAXD];
         double h = 1e-6 * (1.0 + (j % ndn < 3 ? fabs(s->X[3 * (j / ndn) + j % ndn]) : 0));
-        for (int k = 0; k < n; k++) up[k] = um[k] = u[k];
-        up[j] += h;
-        um[j] -= h;
+        perturb(s, u, j, h, up);
+        perturb(s, u, j, -h, um);
         s->ops->eval(s->props, 0, s->X, up, fp, NULL, NULL);
         s->ops->eval(s->props, 0, s->X, um, fm, NULL, NULL);
+        int a = j / ndn, c = j % ndn - 3;
         for (int i = 0; i < n; i++) {
             double fd = (fp[i] - fm[i]) / (2 * h);
+            int r = i % ndn - 3;
+            if (c >= 0 && s->spin[a] && i / ndn == a && r >= 0 && r != c)   /* (e_c x m)_r / 2 */
+                fd -= 0.5 * ((c - r + 3) % 3 == 1 ? 1 : -1) * f[ndn * a + 3 + 3 - c - r];
             emax = fmax(emax, fabs(K[n * i + j] - fd));
             kmax = fmax(kmax, fabs(K[n * i + j]));
         }
@@ -236,8 +267,14 @@ static void check_finite_rotation(const sample *s, const double R[9], double *u,
     CHECK_CLOSE(s1.energy, s0->energy, 1e-9, 1e-9 * scale * s0->l);
     double sum[6] = { 0 };
     for (int a = 0; a < s->nn; a++) {
-        spatial_moment(u + 6 * a + 3, f + 6 * a + 3, m[a]);
-        spatial_moment(ur + 6 * a + 3, fr + 6 * a + 3, mr[a]);
+        for (int i = 0; i < 3; i++) {                  /* a spin node's forces are moments */
+            m[a][i] = f[6 * a + 3 + i];
+            mr[a][i] = fr[6 * a + 3 + i];
+        }
+        if (!s->spin[a]) {
+            spatial_moment(u + 6 * a + 3, f + 6 * a + 3, m[a]);
+            spatial_moment(ur + 6 * a + 3, fr + 6 * a + 3, mr[a]);
+        }
         for (int i = 0; i < 3; i++) {
             double rf = 0, rm = 0;
             for (int j = 0; j < 3; j++) {
@@ -317,9 +354,8 @@ static void test_energy_gradient(int type)
         s.ops->eval(s.props, 0, s.X, u, f, NULL, &st);
         for (int j = 0; j < nd; j++) {
             double up[MAXD], um[MAXD], fd[MAXD], h = 1e-6;
-            for (int k = 0; k < nd; k++) up[k] = um[k] = u[k];
-            up[j] += h;
-            um[j] -= h;
+            perturb(&s, u, j, h, up);
+            perturb(&s, u, j, -h, um);
             s.ops->eval(s.props, 0, s.X, up, fd, NULL, &sp);
             s.ops->eval(s.props, 0, s.X, um, fd, NULL, &sm);
             CHECK_CLOSE((sp.energy - sm.energy) / (2 * h), f[j], 1e-6, 1e-6 * fabs(st.N) + 1e-9);
@@ -350,9 +386,8 @@ static void test_beam_releases(void)
         CHECK(s.ops->eval(s.props, 0, s.X, u, f, NULL, &st) == 0);
         for (int j = 0; j < 12; j++) {
             double up[MAXD], um[MAXD], h = 1e-6;
-            for (int k = 0; k < 12; k++) up[k] = um[k] = u[k];
-            up[j] += h;
-            um[j] -= h;
+            perturb(&s, u, j, h, up);
+            perturb(&s, u, j, -h, um);
             s.ops->eval(s.props, 0, s.X, up, fp, NULL, &sp);
             s.ops->eval(s.props, 0, s.X, um, fm, NULL, &sm);
             CHECK_CLOSE((sp.energy - sm.energy) / (2 * h), f[j], 1e-6, 1e-6 * fabs(st.N) + 1e-9);

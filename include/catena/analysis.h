@@ -93,6 +93,18 @@ typedef struct ctn_buckling_summary {
                                  1e-5 of the model's size) */
     double load_norm;         /* |f| on the free DOFs */
     double t_total;           /* wall seconds of the buckling analysis */
+    /* The non-linear check (check=1; docs/format.md "buckling"), 0 when not run: */
+    int nl_kind;              /* 1: a limit, the largest load factor of a converged stable
+                                 state on the imperfect path (the path fails or loses its
+                                 stability past it, below lambda_1 - 0.0115 (lambda_1 - 1));
+                                 2: the path stays stable to there (a stable bifurcation):
+                                 Southwell's factor, the slope of a / lambda against a (a
+                                 the path's amplitude in the mode) */
+    double nl_factor;         /* that load factor on the step's loads */
+    double nl_imperfection;   /* the imperfection's amplitude [length]: the largest
+                                 translation of the mode's shape times this, from a
+                                 perturbing load growing with lambda */
+    int nl_increments;        /* the path's increments solved */
 } ctn_buckling_summary;
 
 /* Buckling factors of a solution: the count (0 if no buckling analysis was run) and

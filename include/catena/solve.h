@@ -105,6 +105,9 @@ typedef struct ctn_buckling_options {
     int count;            /* the number of buckling factors N >= 1, the lowest positive
                              (0: no buckling analysis; the default) */
     int line;             /* the model file's `buckling` line, named by its errors (0: none) */
+    int check;            /* 1: the non-linear check beside the linear factors: the load
+                             path from the solved state with an imperfection in the first
+                             mode, its limit or Southwell's factor (0: none; the default) */
 } ctn_buckling_options;
 
 /* The time integration of a dynamics analysis (catena/analysis.h, docs/theory.md

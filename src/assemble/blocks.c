@@ -62,6 +62,8 @@ static int build_dofmap(ctn_ctx *ctx, ctn_asm *a)
     for (size_t i = 0; i < a->nn; i++) nd[i] = (unsigned char)a->m->nodes.v[i].ndof;
     int rc = ctn_dofmap_build(ctx, a->m, nd, &a->map);
     ctn_free(nd);
+    for (size_t k = 0; k < a->nblocks; k++)      /* finite rotations: composed (beam3.h, spin) */
+        if (a->blocks[k].ops->flags & CTN_ELEM_FINITE_ROTATION) a->map.rot_update = ctn_rot_update_compose;
     a->ndof = a->map.ndof;
     return rc;
 }

@@ -112,11 +112,14 @@ static void update_nodes(const ctn_dofmap *map, double *d, double alpha, const d
             if (map->eq[s + (size_t)k] >= 0) d[s + (size_t)k] += alpha * v[map->eq[s + (size_t)k]];
         if (ctn_dofmap_count(map, i) != 6) continue;
         double dt[3];
+        int nfree = 0;
         for (int k = 0; k < 3; k++) {
             int q = map->eq[s + 3 + (size_t)k];
             dt[k] = q >= 0 ? alpha * v[q] : 0.0;
+            nfree += q >= 0;
         }
-        map->rot_update(d + s + 3, dt);
+        if (nfree == 3) map->rot_update(d + s + 3, dt);
+        else ctn_rot_update_add(d + s + 3, dt);        /* a plane model's: psi's own components */
     }
 }
 

@@ -24,6 +24,10 @@
 typedef void (*ctn_rot_update_fn)(double *theta, const double *dtheta);
 /* The default: theta += dtheta. */
 void ctn_rot_update_add(double *theta, const double *dtheta);
+/* A family of finite rotations' (rot_compose.c): theta is the node's rotation vector
+ * psi, dtheta a spin: exp(psi) <- exp(dtheta) exp(psi), psi kept continuous (past 2 pi).
+ * The map then adds the rotations of a node with some fixed and some free. */
+void ctn_rot_update_compose(double *theta, const double *dtheta);
 
 typedef struct ctn_dofmap {
     size_t nn;          /* nodes */

@@ -1,6 +1,9 @@
 /* Two-node 3D beam, corotational (Battini and Pacoste 2002), 6 DOFs per node: x, y, z
- * and the node's total rotation vector psi (R = exp(psi), the DOF map's default update
- * adds increments to psi: the rotation DOFs are the rotation vector's components).
+ * and the node's total rotation vector psi (R = exp(psi)). At a node whose rotations the
+ * DOF map composes (all free or all fixed, beam3.h spin) the rotation variables are the
+ * spin w of exp(w) exp(psi) at w = 0: the forces are the true moments and the tangent
+ * the Hessian in w; at a node of a plane model (some rotations fixed) they are psi's
+ * components, added.
  *
  * Kinematics, exact for any rigid motion: the nodal triads T_a = R(psi_a) E0 (E0 the
  * reference local axes: e1 along the member, e3 in the plane of e1 and orient=); the
@@ -41,6 +44,24 @@ static void rotate(ctn_jet x[3], const ctn_jet psi[3], const ctn_jet c[3], const
     }
 }
 
+void ctn_beam_rotate(const double psi[3], const double e[3], double x[3])
+{
+    double y = psi[0] * psi[0] + psi[1] * psi[1] + psi[2] * psi[2], fa[3], fb[3];
+    ctn_beam_rod_a(y, fa);
+    ctn_beam_rod_b(y, fb);
+    double pe = psi[0] * e[0] + psi[1] * e[1] + psi[2] * e[2];
+    for (int k = 0; k < 3; k++) {
+        int i = (k + 1) % 3, j = (k + 2) % 3;
+        x[k] = (1 - fb[0] * y) * e[k] + fa[0] * (psi[i] * e[j] - psi[j] * e[i]) + fb[0] * pe * psi[k];
+    }
+}
+
+int ctn_beam_spin_node(unsigned fix)
+{
+    unsigned r = fix & CTN_FIX_ROT;
+    return r == 0 || r == CTN_FIX_ROT;
+}
+
 /* The triad T = R(psi) E0 of one node, columns t[j] (psi: variables v .. v + 2). */
 static void triad(const double *psi0, int v, const double E0[3][3], ctn_jet t[3][3])
 {
@@ -56,6 +77,21 @@ static void triad(const double *psi0, int v, const double E0[3][3], ctn_jet t[3]
     ctn_jet_const(&c[0], 1);
     ctn_jet_lin(&c[0], 1, &c[0], -1, &f);
     for (int j = 0; j < 3; j++) rotate(t[j], psi, c, E0[j]);
+}
+
+/* The triad of end a (its rotation: variables 3 + 3 a ..): over the spin dw of
+ * R = exp(dw) exp(psi) at dw = 0 (the reference axes turned by exp(psi) first), or over
+ * psi itself (beam3.h, spin). */
+static void node_triad(const ctn_beam_props *p, int a, const double *psi, const double E0[3][3], ctn_jet t[3][3])
+{
+    static const double zero[3] = { 0, 0, 0 };
+    if (!(p->spin >> a & 1u)) {
+        triad(psi, 3 + 3 * a, E0, t);
+        return;
+    }
+    double E[3][3];
+    for (int j = 0; j < 3; j++) ctn_beam_rotate(psi, E0[j], E[j]);
+    triad(zero, 3 + 3 * a, (const double(*)[3])E, t);
 }
 
 /* theta = log(Rr^T T) for the frame r (rows r[i]) and triad t (columns t[j]): the skew
@@ -101,8 +137,7 @@ int ctn_beam_kinematics(const ctn_beam_props *p, const double *X, const double *
     L = sqrt(L);
     if (!(L > 0)) return 1;
     for (int k = 0; k < 3; k++) E0[0][k] /= L;
-    triad(u + 3, 3, E0, t[0]);
-    triad(u + 9, 6, E0, t[1]);
+    for (int a = 0; a < 2; a++) node_triad(p, a, u + 6 * a + 3, E0, t[a]);
     ctn_jet_dot(l, x, x);
     double ln = ctn_jet_unit(r[0], x);
     if (!(ln > 0)) return 1;

@@ -18,7 +18,19 @@ typedef struct ctn_beam_props {
     double rhoIy, rhoIz;/* ... about the local y and z axes, rhoA Iy / A, rhoA Iz / A */
     unsigned rel;       /* end releases, CTN_RELEASE_* (bit 3 a + k: end a, local axis k);
                            a torsion release sets kt = 0 (beam3_model.c) */
+    unsigned spin;      /* bit a: node a's rotations are all free or all fixed, so the DOF
+                           map composes them (ctn_rot_update_compose): the kernel's rotation
+                           variables there are the spin dw of R = exp(dw) exp(psi) at dw = 0,
+                           its moments the true (spatial) moments; else (some fixed, some
+                           free: a plane model) the rotation vector psi itself, added */
 } ctn_beam_props;
+
+/* The spin flag of a node with fix flags `fix` (CTN_FIX_*): its rotations all free or all
+ * fixed (the rule the DOF map's update follows, assemble/rot_compose.c). */
+int ctn_beam_spin_node(unsigned fix);
+
+/* x = exp(psi) e (Rodrigues, any |psi|). */
+void ctn_beam_rotate(const double psi[3], const double e[3], double x[3]);
 
 /* The releases of bending (about local y or z, at either end): the kernel then takes
  * the condensed energy (beam3_release.c). */

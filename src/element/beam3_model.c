@@ -106,6 +106,8 @@ static void beam_setup(const ctn_model *m, size_t e, void *props)
     bending(E * s->Iy, L, phiy, &p->cy0, &p->cy1);
     bending(E * s->Iz, L, phiz, &p->cz0, &p->cz1);
     p->rel = (unsigned)el->par[2];
+    const int *nd = ctn_elem_nodes(m, e);
+    for (int a = 0; a < 2; a++) p->spin |= (unsigned)ctn_beam_spin_node(m->nodes.v[nd[a]].fix) << a;
     p->kt = p->rel & (CTN_RELEASE_RX1 | CTN_RELEASE_RX2) ? 0 : G * s->J / L;
     p->rhoA = ctn_model_section_mass(m, el->section);
     p->rhoJ = p->rhoA > 0 ? p->rhoA * (s->Iy + s->Iz) / s->A : 0;

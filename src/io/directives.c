@@ -483,6 +483,7 @@ static int d_buckling(ctn_line *l)
     int rc = ctn_parse_positional(l, 0, "buckling count=N");
     if (!rc && !ctn_parse_key(l, 1, "count")) return ctn_parse_missing(l, 1, NULL, "count", NULL);
     if (!rc) rc = key_int(l, "count", 1, 0x7fffffff, &o.count);
+    if (!rc) rc = key_int(l, "check", 0, 1, &o.check);
     if (!rc) rc = ctn_parse_leftovers(l, 1, "buckling");
     if (rc) return rc;
     o.line = l->line;

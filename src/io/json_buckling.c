@@ -18,6 +18,14 @@ void ctn_json_put_buckling(ctn_jw *j, const ctn_model *m, const ctn_solution *s)
     ctn_jw_number(j, "ndof", bs.ndof);
     ctn_jw_number(j, "h", bs.h);
     ctn_jw_number(j, "load_norm", bs.load_norm);
+    if (bs.nl_kind) {                            /* check=1 (buckling_check.c) */
+        ctn_jw_object(j, "nonlinear");
+        ctn_jw_string(j, "kind", bs.nl_kind == 1 ? "limit" : "southwell");
+        ctn_jw_number(j, "factor", bs.nl_factor);
+        ctn_jw_number(j, "imperfection", bs.nl_imperfection);
+        ctn_jw_number(j, "increments", bs.nl_increments);
+        ctn_jw_end(j);
+    }
     ctn_jw_end(j);
     ctn_jw_array(j, "buckling");
     for (size_t k = 0; k < ctn_solution_buckling_count(s); k++) {

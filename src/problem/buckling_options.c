@@ -19,6 +19,7 @@ int ctn_buckling_options_fault(const ctn_buckling_options *o, char *msg, size_t 
 {
     if (o->count < 0) return snprintf(msg, size, "buckling: count must be >= 1 (got %d)", o->count), 1;
     if (o->line < 0) return snprintf(msg, size, "buckling: line must be >= 0 (got %d)", o->line), 1;
+    if (o->check != 0 && o->check != 1) return snprintf(msg, size, "buckling: check must be 0 or 1 (got %d)", o->check), 1;
     return 0;
 }
 

@@ -88,10 +88,11 @@ static int setup(ctn_problem *p)
     if (p->ndof == 0) return CTN_OK;        /* statically determinate: nothing to factor */
     ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
     if ((rc = ctn_linsolve_create_threads(p->ctx, name, &pat, ctn_la_ordering_of(p->opt.ordering), p->opt.threads, &p->ls))) return rc;
-    int reuse = p->strategy->globalized && p->opt.reuse && !p->fl && !ctn_linsolve_type(p->ls)->indefinite;
+    if ((rc = ctn_spin_create(p))) return rc;
+    int reuse = p->strategy->globalized && p->opt.reuse && !p->fl && !p->sp && !ctn_linsolve_type(p->ls)->indefinite;
     if (reuse && !(p->cg = ctn_calloc(p->ctx, 4 * p->ndof, sizeof(double)))) return CTN_ERR_NOMEM;
     /* Pure Newton factorizes every tangent it assembles (but the converged state's) */
-    p->overlap = p->opt.method == CTN_METHOD_NEWTON && !p->opt.linesearch && !p->fl && p->opt.threads != 1 &&
+    p->overlap = p->opt.method == CTN_METHOD_NEWTON && !p->opt.linesearch && !p->fl && !p->sp && p->opt.threads != 1 &&
                  !ctn_linsolve_type(p->ls)->indefinite;
     return CTN_OK;
 }
@@ -175,6 +176,7 @@ void ctn_problem_destroy(ctn_problem **pp)
     ctn_asm_destroy(&p->a);
     ctn_linsolve_destroy(&p->ls);
     ctn_follow_destroy(&p->fl);
+    ctn_spin_destroy(&p->sp);
     double *v[] = { p->fint, p->fext, p->f0, p->f1, p->p0, p->p1, p->dsave, p->react, p->r, p->dd, p->w, p->v3, p->Kx,
                     p->dT0, p->dT1, p->dT, p->cg };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
@@ -315,7 +317,8 @@ int ctn_problem_linsolve(ctn_problem *p, const double *b, double *x)
 {
     ctn_problem_settle(p);
     double t0 = ctn_clock();
-    int rc = !p->ls ? CTN_OK : p->fl ? ctn_follow_solve(p, b, x) : ctn_linsolve_solve(p->ls, b, x);
+    int rc = !p->ls ? CTN_OK : p->sp ? ctn_spin_solve(p, b, x) : p->fl ? ctn_follow_solve(p, b, x)
+                                    : ctn_linsolve_solve(p->ls, b, x);
     p->sum->t_solve += ctn_clock() - t0;
     p->sum->solves++;
     return rc;

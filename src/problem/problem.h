@@ -34,6 +34,8 @@ typedef struct ctn_strategy_ops {
 
 /* Loads that follow the geometry (follow.c): hload on the deformed projection. */
 typedef struct ctn_follow ctn_follow;
+/* Moments on nodes of composed rotations (spin.c). */
+typedef struct ctn_spin ctn_spin;
 
 extern const ctn_strategy_ops ctn_strategy_auto, ctn_strategy_newton, ctn_strategy_arclength;
 /* The strategy of a method, NULL if none. */
@@ -69,6 +71,8 @@ struct ctn_problem {
                                   and succeeded: K was positive definite there */
     double shift;              /* of the last factorization */
     ctn_follow *fl;            /* loads that follow the geometry, NULL if none */
+    ctn_spin *sp;              /* moments on nodes of composed rotations, NULL if none:
+                                  the tangent is not symmetric there (spin.c) */
     unsigned char *in_chain;   /* ne: 1 for a two-node member with a free node that joins
                                   exactly two members (a cable's), the members a relaxation
                                   may free of compression; bars between joints are not */
@@ -199,6 +203,19 @@ const double *ctn_follow_loads(const ctn_follow *f);
 int ctn_follow_solve(ctn_problem *p, const double *b, double *x);
 /* y = (K + shift I - L) x: the operator GMRES solves with. */
 int ctn_follow_apply(ctn_problem *p, const double *x, double *y);
+
+/* Moments on nodes of composed rotations (spin.c). create: NULL p->sp when no node
+ * with three free composed rotations carries a moment (after the linear solver);
+ * solve: x = (K + shift I (- L) - [g]x / 2)^-1 b by GMRES preconditioned by the
+ * factorization, g the internal moments of the last residual. */
+int ctn_spin_create(ctn_problem *p);
+void ctn_spin_destroy(ctn_spin **s);
+int ctn_spin_solve(ctn_problem *p, const double *b, double *x);
+
+/* The right-hand side -g (ndof) of the stretch correction of a step dd (ndof) from d to
+ * dtrial (states) in the members of the families of finite rotations (stretch.c);
+ * 1 if there is any such member, else 0. */
+int ctn_problem_stretch_rhs(ctn_problem *p, const double *d, const double *dtrial, const double *dd, double *g);
 
 /* The tangent's values (p->Kx, mode 0: the materials' own laws) and p->fint at the state
  * d (state layout) of the solution's last step; CTN_ERR_INVALID, naming who, for a

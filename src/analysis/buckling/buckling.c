@@ -339,6 +339,8 @@ int ctn_problem_buckling(ctn_problem *p, ctn_solution *s, const ctn_buckling_opt
     }
     for (size_t k = 0; !rc && k < count; k++)
         describe(&w, pick[k].lambda, Z + w.n * k, &res->mode[k], res->shapes + 3 * p->m->nodes.n * k);
+    if (!rc && opt.check && count)           /* the non-linear check, from the first mode */
+        rc = ctn_buckling_nonlinear(p, s, w.d, w.fs, w.K0, Z, pick[0].lambda, opt.line, &sum);
     if (w.d && !rc) {                        /* the tangent at the solution again */
         ctn_asm_eval(p->a, w.d, 0, p->fint, p->Kx, NULL, NULL);
     }

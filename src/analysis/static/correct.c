@@ -85,7 +85,7 @@ static int trial(corrector *c, double alpha, int fresh, double *rn, double *pi, 
     if (!fresh) memcpy(c->d, e->dsave, e->ns * sizeof(double));
     ctn_problem_update(e, c->d, alpha, e->dd);
     int rc = ctn_problem_residual(e, c->d, 1, rn, pi, ok);
-    if (pi && e->fl) *pi = 0.5 * *rn * *rn;          /* no potential: the residual's merit */
+    if (pi && (e->fl || e->sp)) *pi = 0.5 * *rn * *rn;          /* no potential: the residual's merit */
     return rc;
 }
 
@@ -118,6 +118,39 @@ static double reference(const corrector *c)
     return r;
 }
 
+/* The step of a model of finite rotations (beams: the DOF map composes the rotations)
+ * with its stretch correction (stretch.c: a mechanism swung by straight-line steps
+ * stretches its members by the square of the turn): where the forces g of the stretch
+ * the step did not predict exceed the residual at its start (a swing, not Newton's
+ * quadratic end game), dc = (K + mu I)^-1 (-g) on the step's factorization, and
+ * d + dd + dc kept when its potential is the lower. c->d, *rn, *pi: the state kept and
+ * its residual. */
+static int second_order(corrector *c, double *rn, double *pi)
+{
+    ctn_problem *e = c->e;
+    int valid, rc;
+    double rn2, pi2;
+    if (e->a->map.rot_update != ctn_rot_update_compose) return CTN_OK;
+    if (!ctn_problem_stretch_rhs(e, e->dsave, c->d, e->dd, e->w)) return CTN_OK;
+    if (!(ctn_layout_norm(&e->eq, e->w) > c->rn)) return CTN_OK;   /* not the stretch's step */
+    if ((rc = ctn_problem_linsolve(e, e->w, e->r))) return rc;     /* dc, in r (recomputed) */
+    memcpy(e->react, c->d, e->ns * sizeof(double));      /* the trial state, kept */
+    if (isfinite(ctn_layout_norm(&e->eq, e->r))) {
+        ctn_problem_update(e, c->d, 1.0, e->r);
+        if ((rc = ctn_problem_residual(e, c->d, 1, &rn2, &pi2, &valid))) return rc;
+        if (e->fl || e->sp) pi2 = 0.5 * rn2 * rn2;          /* no potential: the merit */
+        if (valid && pi2 < *pi) {
+            *rn = rn2;
+            *pi = pi2;
+            return CTN_OK;
+        }
+    }
+    memcpy(c->d, e->react, e->ns * sizeof(double));       /* back to the trial */
+    if ((rc = ctn_problem_residual(e, c->d, 1, rn, pi, &valid))) return rc;
+    if (e->fl || e->sp) *pi = 0.5 * *rn * *rn;
+    return CTN_OK;
+}
+
 /* Levenberg-Marquardt step with the gain ratio rho = actual / predicted decrease of the
  * potential, predicted = (dd.r + mu |dd|^2) / 2. Accept if the potential falls below the
  * non-monotone reference (or, at round-off, if |r| falls while the potential does not
@@ -128,11 +161,12 @@ static int lm_step(corrector *c, double *alpha, double *rn, double *pi)
 {
     ctn_problem *e = c->e;
     double dd2 = ctn_layout_dot(&e->eq, e->dd, e->dd);
-    double pred = e->fl ? 0.5 * (c->rn * c->rn - c->mu * c->mu * dd2)       /* |r|^2 / 2 */
+    double pred = e->fl || e->sp ? 0.5 * (c->rn * c->rn - c->mu * c->mu * dd2)       /* |r|^2 / 2 */
                         : 0.5 * (ctn_layout_dot(&e->eq, e->r, e->dd) + c->mu * dd2);
     int ok, rc = trial(c, 1.0, 1, rn, pi, &ok);
     *alpha = 0;
     if (rc || !ok) return rc;
+    if ((rc = second_order(c, rn, pi))) return rc;
     double noise = 1e-12 * fabs(c->pi), rho = pred > 0 ? (c->pi - *pi) / pred : -1;
     if (*pi < reference(c) || (*rn <= c->rn && *pi <= c->pi + noise)) {
         /* A plateau: the model predicts no decrease and none came (a slack state under
@@ -241,7 +275,7 @@ static int correct(ctn_problem *e, ctn_solution *s, double *d, ctn_reason *reaso
     c.globalized = e->strategy->globalized;
     *reason = CTN_DIVERGED_NANORINF;
     int valid, rc = ctn_problem_residual(e, d, 1, &c.rn, c.globalized ? &c.pi : NULL, &valid);
-    if (c.globalized && e->fl) c.pi = 0.5 * c.rn * c.rn;
+    if (c.globalized && (e->fl || e->sp)) c.pi = 0.5 * c.rn * c.rn;
     if (!rc && valid && c.globalized) remember(&c, c.pi);
     if (rc || !valid) return rc;
     if ((rc = ctn_solution_push_residual(s, c.rn))) return rc;
