@@ -574,6 +574,13 @@ static const directive directives[] = {
     { "set", ctn_parse_set }, { "include", ctn_parse_include },
 };
 
+int ctn_parse_known(const char *word)
+{
+    for (size_t i = 0; i < sizeof directives / sizeof *directives; i++)
+        if (!strcmp(word, directives[i].name)) return 1;
+    return 0;
+}
+
 int ctn_parse_directive(ctn_line *l)
 {
     for (size_t i = 0; i < sizeof directives / sizeof *directives; i++)
