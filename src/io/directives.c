@@ -571,7 +571,7 @@ static const directive directives[] = {
     { "buckling", d_buckling },
     { "dynamics", ctn_parse_dynamics }, { "damping", ctn_parse_damping }, { "record", ctn_parse_record },
     { "function", ctn_parse_function }, { "remove", ctn_parse_remove },
-    { "set", ctn_parse_set }, { "include", ctn_parse_include },
+    { "set", ctn_parse_set }, { "include", ctn_parse_include }, { "net", ctn_parse_net },
 };
 
 int ctn_parse_known(const char *word)
