@@ -572,6 +572,7 @@ static const directive directives[] = {
     { "dynamics", ctn_parse_dynamics }, { "damping", ctn_parse_damping }, { "record", ctn_parse_record },
     { "function", ctn_parse_function }, { "remove", ctn_parse_remove },
     { "set", ctn_parse_set }, { "include", ctn_parse_include }, { "net", ctn_parse_net },
+    { "sagtension", ctn_parse_sagtension },
 };
 
 int ctn_parse_known(const char *word)

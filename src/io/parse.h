@@ -125,5 +125,6 @@ int ctn_parse_set(ctn_line *l);
 int ctn_parse_load_sel(ctn_line *l);     /* load set=NAME ... | load cable=A-B at=T ... */
 int ctn_parse_include(ctn_line *l);
 int ctn_parse_net(ctn_line *l);          /* directives_net.c */
+int ctn_parse_sagtension(ctn_line *l);   /* directives_chart.c */
 
 #endif

@@ -3,7 +3,8 @@
  * factors, history.csv when it has a dynamics analysis, and for a run of several steps
  * result_K.vtu for every step and
  * result.pvd listing them; for each load case and combination NAME, cases/NAME/ with its
- * nodes.csv, elements.csv and result.vtu. Each is streamed by its writer (io/writer.h) into a staged
+ * nodes.csv, elements.csv and result.vtu; sag_tension.csv for a model with a
+ * sag-tension chart. Each is streamed by its writer (io/writer.h) into a staged
  * temporary (io/atomic.h), synced; only when all are staged is any renamed onto its
  * target. */
 #include "io/atomic.h"
@@ -64,13 +65,13 @@ static job *plan(ctn_ctx *ctx, const ctn_solution *s, size_t *count)
 static job *plan_cases(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s, size_t *count)
 {
     static const ctn_writer_ops *const per[NCASE] = { &ctn_writer_nodes_csv, &ctn_writer_elements_csv, &ctn_writer_vtu };
-    size_t n0 = 0, nc = ctn_solution_case_count(s);
+    size_t n0 = 0, nc = ctn_solution_case_count(s), chart = ctn_model_chart_count(m) > 0;
     job *j0 = plan(ctx, s, &n0);
     if (!j0 || !nc) {
         *count = n0;
         return j0;
     }
-    job *j = ctn_calloc(ctx, n0 + NCASE * nc, sizeof *j);
+    job *j = ctn_calloc(ctx, n0 + NCASE * nc + chart, sizeof *j);
     if (j) memcpy(j, j0, n0 * sizeof *j);
     ctn_free(j0);
     if (!j) return NULL;
@@ -84,7 +85,13 @@ static job *plan_cases(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s, 
             t->sol = ctn_solution_case(s, i);
             snprintf(t->name, sizeof t->name, "%s/%s/%s", CASES_DIR, name, per[f]->name);
         }
-    *count = n0 + NCASE * nc;
+    if (chart) {                                    /* sag_tension.csv, last */
+        job *t = &j[n0 + NCASE * nc];
+        t->ops = &ctn_writer_chart_csv;
+        t->step = ctn_solution_step_count(s) - 1;
+        snprintf(t->name, sizeof t->name, "%s", t->ops->name);
+    }
+    *count = n0 + NCASE * nc + chart;
     return j;
 }
 

@@ -45,6 +45,7 @@ extern const ctn_writer_ops ctn_writer_buckling_csv;  /* buckling.csv: the buckl
 extern const ctn_writer_ops ctn_writer_history_csv;   /* history.csv: the dynamics analysis */
 extern const ctn_writer_ops ctn_writer_vtu;           /* result.vtu: one step (vtu.c) */
 extern const ctn_writer_ops ctn_writer_pvd;           /* result.pvd: the steps' .vtu files */
+extern const ctn_writer_ops ctn_writer_chart_csv;     /* sag_tension.csv: the sag-tension chart */
 
 /* The file of step k (0-based) of n in a result directory: "result_K.vtu", K = k + 1
  * written with as many digits as n has (zero-padded, so that names sort), in
