@@ -32,6 +32,8 @@ typedef struct job {
     size_t step;
     char name[CTN_VTU_NAME_MAX + 80];
     const ctn_solution *sol;
+    const ctn_solution *base;   /* a case's result.vtu: the run's solution, whose step */
+    size_t base_step;           /* base_step is the case's installed state; else NULL */
 } job;
 
 /* The set for solution s of n steps: NFIXED files, modes.csv when s has modes,
@@ -79,10 +81,13 @@ static job *plan_cases(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s, 
         for (size_t f = 0; f < NCASE; f++) {
             job *t = &j[n0 + NCASE * i + f];
             const char *name = "";
-            ctn_model_case_info(m, i, &name, NULL, NULL);
+            int from = 0;
+            ctn_model_case_info(m, i, &name, &from, NULL);
             t->ops = per[f];
             t->step = 0;
             t->sol = ctn_solution_case(s, i);
+            t->base = per[f] == &ctn_writer_vtu ? s : NULL;       /* drawn from its installed state */
+            t->base_step = (size_t)from;
             snprintf(t->name, sizeof t->name, "%s/%s/%s", CASES_DIR, name, per[f]->name);
         }
     if (chart) {                                    /* sag_tension.csv, last */
@@ -148,7 +153,8 @@ static int stage(ctn_ctx *ctx, const char *dir, const job *j, const ctn_model *m
     if (!rc) rc = ctn_atomic_open(ctx, path, f);
     if (rc) return rc;
     ctn_sink sink = ctn_atomic_sink(f);
-    rc = ctn_writer_run_step(ctx, j->ops, 1, j->step, &sink, m, j->sol ? j->sol : s);
+    rc = j->base ? ctn_writer_run_case(ctx, j->ops, 1, &sink, m, j->sol, j->base, j->base_step)
+                 : ctn_writer_run_step(ctx, j->ops, 1, j->step, &sink, m, j->sol ? j->sol : s);
     return rc ? rc : ctn_atomic_close(f);
 }
 

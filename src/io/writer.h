@@ -27,6 +27,10 @@ typedef struct ctn_writer {
                               writes; ctn_writer_run: the last */
     const ctn_pieces *pieces; /* set by the driver: where the nodes' results come from, a
                               piece at a time (piece.h; one process: ctn_pieces_local) */
+    const ctn_solution *base; /* set by ctn_writer_run_case for a case's files: the run's
+                              solution, whose step base_step is the case's installed
+                              state; NULL otherwise */
+    size_t base_step;
 } ctn_writer;
 
 typedef struct ctn_writer_ops {
@@ -57,6 +61,11 @@ void ctn_vtu_step_name(char *name, size_t k, size_t n);
  * solution's own (a distributed run's gathering source; tests). */
 int ctn_writer_run_pieces(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, size_t k, const ctn_pieces *pieces,
                           ctn_sink *sink, const ctn_model *m, const ctn_solution *s);
+/* ctn_writer_run_step for the file of a case (its solution s, step 0) whose installed
+ * state is step base_step of the run's solution base (result.vtu: the displacements
+ * from that state). */
+int ctn_writer_run_case(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, ctn_sink *sink, const ctn_model *m,
+                        const ctn_solution *s, const ctn_solution *base, size_t base_step);
 /* For begin: remember the model, open the buffered output over sink. */
 int ctn_writer_open(ctn_writer *w, const ctn_model *m, ctn_sink *sink);
 /* Record and return CTN_ERR_INVALID: an accessor refused an index (a solution of
