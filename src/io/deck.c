@@ -180,8 +180,15 @@ static int find_hoisted(ctn_deck *d, ctn_line *l)
 {
     ctn_idmap defs;
     memset(&defs, 0, sizeof defs);
-    int rc = CTN_OK, mesh_seen = 0, gravity_seen = 0, gen_seen = 0;
-    for (size_t i = 0; i < d->lines.n && !rc; i++) {
+    int rc = CTN_OK, mesh_seen = 0, gravity_seen = 0, gen_seen = 0, late = 0;
+    for (size_t i = 0; i < d->lines.n && !late; i++) {      /* a node line below an element's? */
+        const ctn_deck_line *x = &d->lines.v[i];
+        if (x->phase != PH_MESH || !strcmp(x->text, "gravity")) continue;
+        if (strcmp(x->text, "node")) mesh_seen = 1;
+        else late = mesh_seen;
+    }
+    mesh_seen = 0;
+    for (size_t i = 0; i < d->lines.n && !rc && late; i++) {
         ctn_deck_line *x = &d->lines.v[i];
         if (x->phase != PH_MESH || strcmp(x->text, "node")) continue;
         rebuild(l, x);

@@ -10,7 +10,9 @@
 #     no member reaches, held in x, y, z whatever fix= says), eps0= and its member set loaded by lineload,
 #     written before its section and material: the model
 #     written out by hand (nodes 21..32, members 1..7 by the rule of net_gen.h, the
-#     loads on the sets by ids), bit for bit in the JSON.
+#     loads on the sets by ids), bit for bit in the JSON;
+#   - `catena formfind` of a net with q=: exit 2 naming the net's line (its found nodes
+#     cannot be written back as one `net` line), no file written.
 # ctest-cost: 3
 # Prints "N passed, N failed"; exit 1 on any failure.
 set -u
@@ -102,5 +104,18 @@ M
 [ $rc -eq 0 ] || WHY+=("hand-written net: exit $rc: $(head -c 300 "$T/err")")
 cmp -s "$T/f.json" "$T/h.json" || WHY+=("the flat net's JSON differs from the hand-written model's")
 finish flat_vs_hand
+
+# 3. form finding a generated net: found, but not written back as a `net` line
+cat >"$T/ff.cable" <<'M'
+units kN m
+material m E=2e8
+section s material=m A=1e-4
+net roof hypar nx=4 ny=4 lx=10 ly=10 h=1 section=s q=10
+M
+"$BIN" formfind "$T/ff.cable" -o "$T/found.cable" >/dev/null 2>"$T/err"; rc=$?
+[ $rc -eq 2 ] || WHY+=("formfind of a net: exit $rc, expected 2")
+grep -q "ff.cable:4: formfind cannot write a net back as its \`net\` line" "$T/err" || WHY+=("formfind: $(head -c 300 "$T/err")")
+[ ! -e "$T/found.cable" ] || WHY+=("formfind of a net wrote a file")
+finish formfind_refused
 
 cli_summary
