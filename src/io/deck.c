@@ -37,11 +37,13 @@ static const phase_of phases[] = {
     { "group", PH_SETS, 0, 0 },       { "set", PH_SETS, 0, 0 },
 };
 
-static const phase_of *lookup(const char *word)
+enum { K_GRAVITY = 4, K_NODE = 5, K_BEAM = 9, K_CABLE = 12, K_NET = 13, K_GROUP = 14, K_NONE = 255 };  /* in phases[] */
+
+static unsigned char lookup(const char *word)
 {
     for (size_t i = 0; i < sizeof phases / sizeof *phases; i++)
-        if (!strcmp(word, phases[i].name)) return &phases[i];
-    return NULL;
+        if (!strcmp(word, phases[i].name)) return (unsigned char)i;
+    return K_NONE;
 }
 
 void ctn_deck_free(ctn_deck *d)
@@ -83,7 +85,7 @@ int ctn_deck_file(ctn_ctx *ctx, ctn_deck *d, const char *path, const char **out)
 int ctn_deck_add(ctn_line *l)
 {
     ctn_deck *d = l->deck;
-    const phase_of *p = lookup(l->tok[0]);
+    unsigned char kind = lookup(l->tok[0]);
     if (CTN_ARRAY_RESERVE(l->m->ctx, d->lines, 1)) return CTN_ERR_NOMEM;
     const char *last = l->tok[l->ntok - 1];
     ctn_deck_line *x = &d->lines.v[d->lines.n++];
@@ -91,8 +93,9 @@ int ctn_deck_add(ctn_line *l)
     x->len = (size_t)(last - l->tok[0]) + strlen(last);
     x->file = l->file;
     x->line = l->line;
-    x->phase = p ? p->phase : PH_REST;
+    x->phase = kind == K_NONE ? PH_REST : phases[kind].phase;
     x->hoist = 0;
+    x->kind = kind;
     return CTN_OK;
 }
 
@@ -167,9 +170,9 @@ static void mark_refs(ctn_deck *d, const ctn_idmap *defs, size_t i, const phase_
 }
 
 /* Whether a mesh line numbers nodes of its own after the largest id so far. */
-static int generates(const char *word)
+static int generates(unsigned char kind)
 {
-    return !strcmp(word, "cable") || !strcmp(word, "beam") || !strcmp(word, "net");
+    return kind == K_CABLE || kind == K_NET || kind == K_BEAM;
 }
 
 /* Marked to run first: the node lines above the first generator (cable, beam, net), the
@@ -183,14 +186,14 @@ static int find_hoisted(ctn_deck *d, ctn_line *l)
     int rc = CTN_OK, mesh_seen = 0, gravity_seen = 0, gen_seen = 0, late = 0;
     for (size_t i = 0; i < d->lines.n && !late; i++) {      /* a node line below an element's? */
         const ctn_deck_line *x = &d->lines.v[i];
-        if (x->phase != PH_MESH || !strcmp(x->text, "gravity")) continue;
-        if (strcmp(x->text, "node")) mesh_seen = 1;
+        if (x->phase != PH_MESH || x->kind == K_GRAVITY) continue;
+        if (x->kind != K_NODE) mesh_seen = 1;
         else late = mesh_seen;
     }
     mesh_seen = 0;
     for (size_t i = 0; i < d->lines.n && !rc && late; i++) {
         ctn_deck_line *x = &d->lines.v[i];
-        if (x->phase != PH_MESH || strcmp(x->text, "node")) continue;
+        if (x->kind != K_NODE) continue;
         rebuild(l, x);
         long long id = 0;
         if (l->ntok < 2 || !ctn_parse_integral(l->tok[1], &id) || id < 1 || id > 0x7fffffff) continue;
@@ -199,15 +202,15 @@ static int find_hoisted(ctn_deck *d, ctn_line *l)
     for (size_t i = 0; i < d->lines.n && !rc; i++) {
         ctn_deck_line *x = &d->lines.v[i];
         if (x->phase != PH_MESH) continue;
-        const phase_of *p = lookup(x->text);
-        if (!strcmp(x->text, "gravity")) {
+        const phase_of *p = &phases[x->kind];
+        if (x->kind == K_GRAVITY) {
             x->hoist = mesh_seen && !gravity_seen;
             gravity_seen = 1;
-        } else if (!strcmp(x->text, "node")) {
+        } else if (x->kind == K_NODE) {
             x->hoist |= !gen_seen;
         } else {
             mesh_seen = 1;
-            gen_seen |= generates(x->text);
+            gen_seen |= generates(x->kind);
             if (p->refs && defs.count) mark_refs(d, &defs, i, p, l);
         }
     }
@@ -222,7 +225,7 @@ static int run_mesh(ctn_deck *d, ctn_line *l, const char **origin)
     for (int pass = 0; pass < 2 && !rc; pass++)
         for (size_t i = 0; i < d->lines.n && !rc; i++) {
             const ctn_deck_line *x = &d->lines.v[i];
-            if (pass == 1 && x->phase == PH_SETS && !strcmp(x->text, "group")) rc = declare_group(l, x, origin);
+            if (pass == 1 && x->kind == K_GROUP) rc = declare_group(l, x, origin);
             if (x->phase != PH_MESH || x->hoist != (pass == 0)) continue;
             rc = run_line(l, x, origin);
         }

@@ -13,6 +13,7 @@ typedef struct ctn_deck_line {
     int line;
     unsigned char phase;    /* deck.c */
     unsigned char hoist;    /* runs at the start of its phase */
+    unsigned char kind;     /* its directive's entry in deck.c's table, 255 if none */
 } ctn_deck_line;
 
 struct ctn_deck {
