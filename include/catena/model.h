@@ -327,6 +327,11 @@ int ctn_model_add_combination(ctn_model *m, const char *name, const char *const 
  * its step) and kind (1: a combination). */
 size_t ctn_model_case_count(const ctn_model *m);
 int ctn_model_case_info(const ctn_model *m, size_t i, const char **name, int *from, int *combination);
+/* The sag-tension chart (`sagtension`, docs/format.md): its rows, and row r's case or
+ * combination (*entry, an index for ctn_model_case_info), its temperature change [K] and
+ * the case it adds to (*base NULL: none). */
+size_t ctn_model_chart_count(const ctn_model *m);
+int ctn_model_chart_row(const ctn_model *m, size_t r, size_t *entry, double *dT, const char **base);
 /* Term k of entry i (a combination): its case's name and factor. */
 int ctn_model_case_term(const ctn_model *m, size_t i, size_t k, const char **name, double *factor);
 size_t ctn_model_case_terms(const ctn_model *m, size_t i);

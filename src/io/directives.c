@@ -572,8 +572,16 @@ static const directive directives[] = {
     { "buckling", d_buckling },
     { "dynamics", ctn_parse_dynamics }, { "damping", ctn_parse_damping }, { "record", ctn_parse_record },
     { "function", ctn_parse_function }, { "remove", ctn_parse_remove },
-    { "set", ctn_parse_set }, { "include", ctn_parse_include },
+    { "set", ctn_parse_set }, { "include", ctn_parse_include }, { "net", ctn_parse_net },
+    { "sagtension", ctn_parse_sagtension },
 };
+
+int ctn_parse_known(const char *word)
+{
+    for (size_t i = 0; i < sizeof directives / sizeof *directives; i++)
+        if (!strcmp(word, directives[i].name)) return 1;
+    return 0;
+}
 
 int ctn_parse_directive(ctn_line *l)
 {

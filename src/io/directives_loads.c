@@ -102,7 +102,7 @@ int ctn_parse_ice(ctn_line *l)
     if (!(g0 > 0)) return ctn_parse_error(l, "ice: the weight of a density needs the model's units (give 'units FORCE LENGTH')");
     ctn_model_gravity(l->m, g);
     gn = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-    if (!(gn > 0)) return ctn_parse_error(l, "ice: its weight acts along gravity, and there is none (give gravity on an earlier line)");
+    if (!(gn > 0)) return ctn_parse_error(l, "ice: its weight acts along gravity, and there is none (give a gravity line)");
     double w = rho * g0 * 3.14159265358979323846 * t * (d + t), q[3];
     for (int k = 0; k < 3; k++) q[k] = w * g[k] / gn;
     return ctn_model_add_ice(l->m, l->tok[1], q, t);

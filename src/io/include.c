@@ -2,7 +2,7 @@
  * (docs/format.md). The path is relative to the including file's directory; a file that
  * includes itself, directly or through others, is an error naming the chain. */
 #define _XOPEN_SOURCE 700   /* realpath */
-#include "io/parse.h"
+#include "io/deck.h"
 
 #include <errno.h>
 #include <limits.h>
@@ -55,20 +55,17 @@ static int read_into(ctn_line *l, const char *path, ctn_incl *self)
     if (len) memcpy(text, data, len);
     text[len] = '\0';
     ctn_free(data);
+    const char *file = NULL;
+    if (ctn_deck_keep(ctx, l->deck, text) || ctn_deck_file(ctx, l->deck, path, &file)) return CTN_ERR_NOMEM;
     size_t skip = len >= 3 && !memcmp(text, "\xef\xbb\xbf", 3) ? 3 : 0;
     ctn_line saved = *l;
-    char origin[sizeof l->m->file];
-    snprintf(origin, sizeof origin, "%s", l->m->file);
-    l->file = path;
+    l->file = file;
     l->line = 1;
     l->incl = self;
-    ctn_model_set_origin(l->m, path, 0);
     int rc = ctn_parse_lines(l, text + skip, len - skip);
-    ctn_model_set_origin(l->m, origin, saved.line);
     l->file = saved.file;
     l->line = saved.line;
     l->incl = saved.incl;
-    ctn_free(text);
     return rc;
 }
 

@@ -586,6 +586,34 @@ static int json_step(void *p, const ctn_solution *s, size_t k)
     return jw->w.out.err;
 }
 
+/* "sag_tension": the rows of the sag-tension chart (`sagtension`): each row's case or
+ * combination, its temperature change, the case it adds to, and its cables as in
+ * "cases". */
+static void put_chart(json_writer *jw)
+{
+    ctn_jw *j = &jw->j;
+    const ctn_model *m = jw->w.m;
+    ctn_jw_array(j, "sag_tension");
+    for (size_t r = 0; r < ctn_model_chart_count(m) && !jw->w.out.err; r++) {
+        size_t i = 0;
+        double dT = 0;
+        const char *base = NULL, *name = NULL;
+        const ctn_solution *cs = NULL;
+        if (ctn_model_chart_row(m, r, &i, &dT, &base) || ctn_model_case_info(m, i, &name, NULL, NULL) ||
+            !(cs = ctn_solution_case(jw->s, i))) {
+            ctn_writer_mismatch(&jw->w);
+            break;
+        }
+        ctn_jw_object(j, NULL);
+        ctn_jw_string(j, "name", name);
+        ctn_jw_number(j, "dT", dT);
+        if (base) ctn_jw_string(j, "case", base);
+        put_state_cables(jw, cs, 0);
+        ctn_jw_end(j);
+    }
+    ctn_jw_end(j);
+}
+
 static int json_end(void *p)
 {
     json_writer *jw = p;
@@ -594,6 +622,7 @@ static int json_end(void *p)
         put_cases(jw, 0);
         put_cases(jw, 1);
         put_envelope(jw);
+        if (ctn_model_chart_count(jw->w.m)) put_chart(jw);
     }
     ctn_jw_end(&jw->j);
     return jw->w.out.err;

@@ -16,8 +16,11 @@ typedef struct ctn_incl {
     const struct ctn_incl *up;
 } ctn_incl;
 
+typedef struct ctn_deck ctn_deck;   /* the lines gathered before they run (deck.h) */
+
 typedef struct ctn_line {
     ctn_model *m;
+    ctn_deck *deck;               /* where the scanner puts the lines (reader.c) */
     const ctn_incl *incl;         /* the include chain; NULL in the top file */
     ctn_solve_options *opt;       /* where the `solve` line goes */
     const char *file;
@@ -74,9 +77,10 @@ int ctn_parse_scan_line(ctn_line *l, char *text, size_t len, size_t *pos);
 size_t ctn_read_line_end(const char *text, size_t start, size_t len, size_t *next);
 /* A whole file into memory (*data allocated, *len bytes; at most 2 GiB). */
 int ctn_read_all(ctn_ctx *ctx, const char *path, char **data, size_t *len);
-/* Scan the lines of text[0 .. len) in place and run their directives (scan.c), counting
- * lines on from l->line. The last line ends with a line break, or at len where
- * text[len] must be a NUL. */
+/* Scan the lines of text[0 .. len) in place into l->deck (scan.c), counting lines on
+ * from l->line: an unknown directive is an error at once, `include` reads its file's
+ * lines in its place; the deck runs them later (deck.c). The last line ends with a line
+ * break, or at len where text[len] must be a NUL; the text must live as long as the deck. */
 int ctn_parse_lines(ctn_line *l, char *text, size_t len);
 /* The length of the complete lines at the start of text[0 .. len): up to the last line
  * break that is known to end its line (a CR at len - 1 may be half a CRLF); 0 if none. */
@@ -84,6 +88,8 @@ size_t ctn_parse_complete(const char *text, size_t len);
 
 /* The directive handlers (directives.c). */
 int ctn_parse_directive(ctn_line *l);
+/* 1 if word names a directive. */
+int ctn_parse_known(const char *word);
 /* At most one of l0=, N0=, s0=, eps0= (from token `from`; without l0= when l0 is NULL):
  * the prestress into *kind and *value; *l0 is set when l0= is given. */
 int ctn_parse_prestress(ctn_line *l, int from, const char *what, double *l0, ctn_prestress *kind, double *value);
@@ -118,5 +124,7 @@ int ctn_parse_remove(ctn_line *l);
 int ctn_parse_set(ctn_line *l);
 int ctn_parse_load_sel(ctn_line *l);     /* load set=NAME ... | load cable=A-B at=T ... */
 int ctn_parse_include(ctn_line *l);
+int ctn_parse_net(ctn_line *l);          /* directives_net.c */
+int ctn_parse_sagtension(ctn_line *l);   /* directives_chart.c */
 
 #endif

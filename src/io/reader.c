@@ -1,7 +1,7 @@
-/* The .cable reader: the text from a string or, a chunk at a time, from a file, to the
- * scanner (scan.c: lines to tokens to directives). Numbers are parsed in the C locale
+/* The .cable reader: the text from a string or a file, whole, to the scanner (scan.c:
+ * lines to tokens to the deck), then the deck's directives run (deck.c). Numbers are parsed in the C locale
  * whatever the caller's locale is. */
-#include "io/parse.h"
+#include "io/deck.h"
 #include "catena/io.h"
 
 #include <errno.h>
@@ -26,61 +26,59 @@ static size_t bom(const char *text, size_t len)
     return len >= 3 && !memcmp(text, "\xef\xbb\xbf", 3) ? 3 : 0;   /* UTF-8 BOM */
 }
 
-/* A string: copied once (the scanner works in place). */
+/* A string: copied once (the scanner works in place), the copy kept by the deck. */
 static int feed_string(ctn_line *l, const source *src)
 {
     char *buf = ctn_malloc(l->m->ctx, src->len + 1, 1);
     if (!buf) return CTN_ERR_NOMEM;
     if (src->len) memcpy(buf, src->text, src->len);
     buf[src->len] = '\0';
+    if (ctn_deck_keep(l->m->ctx, l->deck, buf)) return CTN_ERR_NOMEM;
     size_t skip = bom(buf, src->len);
-    int rc = ctn_parse_lines(l, buf + skip, src->len - skip);
-    ctn_free(buf);
-    return rc;
+    return ctn_parse_lines(l, buf + skip, src->len - skip);
 }
 
-/* Fill buf[*n .. cap) from the file; *final when the file ended. */
-static int fill(ctn_ctx *ctx, const source *src, char *buf, size_t cap, size_t *n, size_t *total, int *final)
+/* Read a chunk into buf[*n .. cap) from the file; *final when the file ended. */
+static int fill(ctn_ctx *ctx, const source *src, char *buf, size_t cap, size_t *n, int *final)
 {
-    size_t k = fread(buf + *n, 1, cap - *n, src->f);
+    size_t want = cap - *n < CTN_READ_CHUNK ? cap - *n : CTN_READ_CHUNK;
+    size_t k = fread(buf + *n, 1, want, src->f);
     if (ferror(src->f)) return ctn_error(ctx, CTN_ERR_IO, "%s: read error (is it a directory?)", src->path);
     *n += k;
-    *total += k;
-    *final = *n < cap;
-    if (*total >= CTN_MAX_FILE) return ctn_error(ctx, CTN_ERR_IO, "%s: file larger than 2 GiB", src->path);
+    *final = k < want;
+    if (*n >= CTN_MAX_FILE) return ctn_error(ctx, CTN_ERR_IO, "%s: file larger than 2 GiB", src->path);
     return CTN_OK;
 }
 
-/* A file, a chunk at a time: the complete lines of the buffer are scanned, the partial
- * last one moves to the front; a line longer than the buffer doubles it. */
+/* A file, whole, a chunk at a time (the progress reported after each; the buffer sized
+ * for a regular file, else doubled as it fills), then scanned; the deck keeps it. */
 static int feed_file(ctn_line *l, const source *src)
 {
     ctn_ctx *ctx = l->m->ctx;
-    size_t cap = CTN_READ_CHUNK, n = 0, total = 0, skip = 0;
+    size_t cap = CTN_READ_CHUNK, n = 0;
     struct stat st;
     double size = !fstat(fileno(src->f), &st) && S_ISREG(st.st_mode) ? (double)st.st_size : 0;
+    if (size > 0 && size < (double)CTN_MAX_FILE) cap = (size_t)size + 1;   /* one read to the end */
     char *buf = ctn_malloc(ctx, cap + 1, 1);
     int rc = buf ? CTN_OK : CTN_ERR_NOMEM, final = 0;
-    for (int first = 1; !rc && !final; first = 0) {
-        if ((rc = fill(ctx, src, buf, cap, &n, &total, &final))) break;
-        ctn_progress(ctx, "reading", (double)total, size);
+    while (!rc && !final) {
+        if ((rc = fill(ctx, src, buf, cap, &n, &final))) break;
+        ctn_progress(ctx, "reading", (double)n, size);
         if ((rc = ctn_interrupted(ctx))) break;
-        if (first) skip = bom(buf, n);
-        buf[n] = '\0';
-        size_t done = final ? n : ctn_parse_complete(buf, n);
-        if (done > skip) rc = ctn_parse_lines(l, buf + skip, done - skip);
-        else done = skip;
-        memmove(buf, buf + done, n - done);
-        n -= done;
-        skip = 0;
-        if (!rc && n == cap) {                      /* one line fills the buffer */
+        if (!final && n == cap) {
             char *p = ctn_realloc(ctx, buf, 2 * cap + 1, 1);
             if (!p) rc = CTN_ERR_NOMEM;
             else buf = p, cap *= 2;
         }
     }
-    ctn_free(buf);
-    return rc;
+    if (rc) {
+        ctn_free(buf);
+        return rc;
+    }
+    buf[n] = '\0';
+    if (ctn_deck_keep(ctx, l->deck, buf)) return CTN_ERR_NOMEM;
+    size_t skip = bom(buf, n);
+    return ctn_parse_lines(l, buf + skip, n - skip);
 }
 
 /* A new model in *out from src, in the C locale, with the solve options in *opt. */
@@ -101,7 +99,12 @@ static int read_model(ctn_ctx *ctx, const char *name, const source *src, ctn_mod
         l.line = 1;
         locale_t c = newlocale(LC_ALL_MASK, "C", (locale_t)0);
         locale_t old = c ? uselocale(c) : (locale_t)0;
+        ctn_deck deck;
+        memset(&deck, 0, sizeof deck);
+        l.deck = &deck;
         rc = src->f ? feed_file(&l, src) : feed_string(&l, src);
+        if (!rc) rc = ctn_deck_run(&deck, &l);
+        ctn_deck_free(&deck);
         if (c) {
             uselocale(old);
             freelocale(c);

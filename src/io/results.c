@@ -3,7 +3,8 @@
  * factors, history.csv when it has a dynamics analysis, and for a run of several steps
  * result_K.vtu for every step and
  * result.pvd listing them; for each load case and combination NAME, cases/NAME/ with its
- * nodes.csv, elements.csv and result.vtu; a dynamics analysis's VTU series (dynamics/frame_K.vtu,
+ * nodes.csv, elements.csv and result.vtu; sag_tension.csv for a model with a
+ * sag-tension chart; a dynamics analysis's VTU series (dynamics/frame_K.vtu,
  * dynamics.pvd) when it kept frames. Each is streamed by its writer (io/writer.h) into a staged
  * temporary (io/atomic.h), synced; only when all are staged is any renamed onto its
  * target. */
@@ -34,6 +35,8 @@ typedef struct job {
     const ctn_solution *sol;
     int kind;            /* JOB_WRITER (ops), JOB_FRAME (frame `step` of the dynamics'
                             VTU series), JOB_FRAMES_PVD (their collection) */
+    const ctn_solution *base;   /* a case's result.vtu: the run's solution, whose step */
+    size_t base_step;           /* base_step is the case's installed state; else NULL */
 } job;
 
 enum { JOB_WRITER = 0, JOB_FRAME = 1, JOB_FRAMES_PVD = 2 };
@@ -69,13 +72,13 @@ static job *plan(ctn_ctx *ctx, const ctn_solution *s, size_t *count)
 static job *plan_cases(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s, size_t *count)
 {
     static const ctn_writer_ops *const per[NCASE] = { &ctn_writer_nodes_csv, &ctn_writer_elements_csv, &ctn_writer_vtu };
-    size_t n0 = 0, nc = ctn_solution_case_count(s);
+    size_t n0 = 0, nc = ctn_solution_case_count(s), chart = ctn_model_chart_count(m) > 0;
     job *j0 = plan(ctx, s, &n0);
     if (!j0 || !nc) {
         *count = n0;
         return j0;
     }
-    job *j = ctn_calloc(ctx, n0 + NCASE * nc, sizeof *j);
+    job *j = ctn_calloc(ctx, n0 + NCASE * nc + chart, sizeof *j);
     if (j) memcpy(j, j0, n0 * sizeof *j);
     ctn_free(j0);
     if (!j) return NULL;
@@ -83,13 +86,22 @@ static job *plan_cases(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s, 
         for (size_t f = 0; f < NCASE; f++) {
             job *t = &j[n0 + NCASE * i + f];
             const char *name = "";
-            ctn_model_case_info(m, i, &name, NULL, NULL);
+            int from = 0;
+            ctn_model_case_info(m, i, &name, &from, NULL);
             t->ops = per[f];
             t->step = 0;
             t->sol = ctn_solution_case(s, i);
+            t->base = per[f] == &ctn_writer_vtu ? s : NULL;       /* drawn from its installed state */
+            t->base_step = (size_t)from;
             snprintf(t->name, sizeof t->name, "%s/%s/%s", CASES_DIR, name, per[f]->name);
         }
-    *count = n0 + NCASE * nc;
+    if (chart) {                                    /* sag_tension.csv, last */
+        job *t = &j[n0 + NCASE * nc];
+        t->ops = &ctn_writer_chart_csv;
+        t->step = ctn_solution_step_count(s) - 1;
+        snprintf(t->name, sizeof t->name, "%s", t->ops->name);
+    }
+    *count = n0 + NCASE * nc + chart;
     return j;
 }
 
@@ -173,6 +185,7 @@ static int stage(ctn_ctx *ctx, const char *dir, const job *j, const ctn_model *m
     ctn_sink sink = ctn_atomic_sink(f);
     if (j->kind == JOB_FRAME) rc = ctn_write_frame_vtu(ctx, j->step, &sink, m, s);
     else if (j->kind == JOB_FRAMES_PVD) rc = ctn_write_frames_pvd(ctx, &sink, m, s);
+    else if (j->base) rc = ctn_writer_run_case(ctx, j->ops, 1, &sink, m, j->sol, j->base, j->base_step);
     else rc = ctn_writer_run_step(ctx, j->ops, 1, j->step, &sink, m, j->sol ? j->sol : s);
     return rc ? rc : ctn_atomic_close(f);
 }

@@ -1,8 +1,9 @@
-/* The .cable scanner: lines into tokens in place, in one pass over the bytes, and each
- * line's directive run. Lines end in LF, CRLF or a lone CR; '#' starts a comment. */
-#include "io/parse.h"
+/* The .cable scanner: lines into tokens in place, in one pass over the bytes, each
+ * line into the deck (deck.c), which runs them once the model is read. Lines end in LF, CRLF or a lone CR; '#' starts a comment. */
+#include "io/deck.h"
 
 #include <stdio.h>
+#include <string.h>
 
 /* Classes of the bytes. */
 enum { TOK, BLANK, BREAK, HASH, NUL };
@@ -47,24 +48,31 @@ int ctn_parse_scan_line(ctn_line *l, char *text, size_t len, size_t *pos)
     return CTN_OK;
 }
 
-/* Run the directive of a line with tokens; a failed allocation is located at the line. */
-static int run_directive(ctn_line *l)
+/* A line with tokens: `include` reads its file now (its lines join the deck here), an
+ * unknown directive is an error at once (in the file's order), any other line joins the
+ * deck. */
+static int gather(ctn_line *l)
 {
-    l->m->line = l->line;                           /* definitions record their line */
-    int rc = ctn_parse_directive(l);
-    if (rc == CTN_ERR_NOMEM) {
-        char msg[CTN_MSG_MAX];
-        snprintf(msg, sizeof msg, "%s", ctn_ctx_message(l->m->ctx));
-        ctn_error_at(l->m->ctx, rc, l->file, l->line, "%s", msg);
+    char b[64];
+    if (!strcmp(l->tok[0], "include")) {
+        l->m->line = l->line;
+        return ctn_parse_include(l);
     }
-    return rc;
+    if (!ctn_parse_known(l->tok[0]))
+        return ctn_parse_error(l, "unknown directive '%s'", ctn_parse_show(l->tok[0], b, sizeof b));
+    return ctn_deck_add(l);
 }
 
 int ctn_parse_lines(ctn_line *l, char *text, size_t len)
 {
     for (size_t pos = 0; pos < len; l->line++) {
         int rc = ctn_parse_scan_line(l, text, len, &pos);
-        if (!rc && l->ntok) rc = run_directive(l);
+        if (!rc && l->ntok) rc = gather(l);
+        if (rc == CTN_ERR_NOMEM) {
+            char msg[CTN_MSG_MAX];
+            snprintf(msg, sizeof msg, "%s", ctn_ctx_message(l->m->ctx));
+            ctn_error_at(l->m->ctx, rc, l->file, l->line, "%s", msg);
+        }
         if (rc) return rc;
     }
     l->m->line = 0;

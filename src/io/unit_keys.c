@@ -23,6 +23,7 @@ static const key_dim dims[] = {
     { "'d'", 0, 1, 0 },               { "'density'", 1, -4, 2 },     { "'rho'", 1, -4, 2 },
     { "'pressure'", 1, -2, 0 },       { "'mass'", 1, -1, 2 },        { "'mass' per length", 1, -2, 2 },
     { "'fy'", 1, -2, 0 },        { "'Wy'", 0, 3, 0 },         { "'Wz'", 0, 3, 0 },
+    { "'lx'", 0, 1, 0 },         { "'ly'", 0, 1, 0 },         { "'h'", 0, 1, 0 },
 };
 
 int ctn_parse_unit_dim(const char *what, int *f, int *l, int *t)

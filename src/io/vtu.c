@@ -3,7 +3,10 @@
  *
  *   points      the nodes in model order (result.json's "nodes"), at their reference
  *               coordinates; the point data hold the displacements (ParaView's "Warp
- *               By Vector" draws the deformed shape)
+ *               By Vector" draws the deformed shape). A load case's file
+ *               (ctn_writer_run_case): the points at the case's installed state (the
+ *               reference coordinates plus its displacements), `displacement` from it
+ *               (the JSON's ux_from), `displacement_total` from the reference geometry
  *   cells       the elements in model order (result.json's "elements"): a line (VTK
  *               type 3) through the two nodes of a two-node element, a polyline (4)
  *               through the nodes of a longer one
@@ -24,6 +27,7 @@ typedef struct vtu_data {
     const ctn_solution *s;
     size_t k;                       /* the step (0-based) */
     ctn_step_result st;             /* its displacements, reactions, load factor */
+    const double *base;             /* a case's installed state's displacements, or NULL */
 } vtu_data;
 
 typedef enum vtu_where { VTU_POINT, VTU_CELL } vtu_where;
@@ -42,7 +46,18 @@ typedef struct vtu_field {
     int (*get)(const vtu_data *d, size_t j, size_t i, double *v);
 } vtu_field;
 
+/* displacement: from the reference geometry, or for a case from its installed state */
 static int point_displacement(const vtu_data *d, size_t j, size_t i, double *v)
+{
+    (void)j;
+    for (int c = 0; c < 3; c++) v[c] = d->st.d[3 * i + (size_t)c] - (d->base ? d->base[3 * i + (size_t)c] : 0.0);
+    return CTN_OK;
+}
+
+/* displacement_total: a case's, from the reference geometry (beside `displacement`). */
+static size_t has_base(const vtu_data *d) { return d->base != NULL; }
+
+static int point_total(const vtu_data *d, size_t j, size_t i, double *v)
 {
     (void)j;
     for (int c = 0; c < 3; c++) v[c] = d->st.d[3 * i + (size_t)c];
@@ -143,6 +158,7 @@ static int point_buckling(const vtu_data *d, size_t j, size_t i, double *v)
 /* The arrays, one entry each. */
 static const vtu_field fields[] = {
     { "displacement", VTU_POINT, 3, 0, NULL, 0, point_displacement },
+    { "displacement_total", VTU_POINT, 3, 0, has_base, 0, point_total },
     { "reaction", VTU_POINT, 3, 0, NULL, 0, point_reaction },
     { "rotation", VTU_POINT, 3, 0, has_rotations, 0, point_rotation },
     { "moment", VTU_POINT, 3, 0, has_rotations, 0, point_moment },
@@ -219,8 +235,9 @@ static int put_data(ctn_writer *w, const vtu_data *d, vtu_where where, size_t n)
     return w->out.err;
 }
 
-/* <Points>: the reference coordinates. */
-int ctn_vtu_put_points(ctn_writer *w, size_t nn)
+/* <Points>: the reference coordinates, plus base (a case's installed displacements)
+ * unless NULL. */
+int ctn_vtu_put_points(ctn_writer *w, const double *base, size_t nn)
 {
     ctn_wbuf *b = &w->out;
     ctn_wbuf_puts(b, "      <Points>\n");
@@ -229,7 +246,7 @@ int ctn_vtu_put_points(ctn_writer *w, size_t nn)
         ctn_node_info p;
         if (ctn_model_node(w->m, i, &p)) return ctn_writer_mismatch(w);
         for (int c = 0; c < 3; c++) {
-            ctn_wbuf_g17(b, p.X[c]);
+            ctn_wbuf_g17(b, p.X[c] + (base ? base[3 * i + (size_t)c] : 0.0));
             ctn_wbuf_putc(b, c < 2 ? ' ' : '\n');
         }
     }
@@ -290,9 +307,12 @@ static int vtu_step(void *p, const ctn_solution *s, size_t k)
 {
     ctn_writer *w = p;
     if (k != w->step) return CTN_OK;
-    vtu_data d = { w->m, s, k, { 0 } };
+    vtu_data d = { w->m, s, k, { 0 }, NULL };
     size_t nn = ctn_model_node_count(w->m), ne = ctn_model_element_count(w->m);
+    ctn_step_result installed;
     if (ctn_solution_step(s, k, &d.st)) return ctn_writer_mismatch(w);
+    if (w->base && ctn_solution_step(w->base, w->base_step, &installed)) return ctn_writer_mismatch(w);
+    if (w->base) d.base = installed.d;
     ctn_wbuf *b = &w->out;
     ctn_wbuf_puts(b, "    <FieldData>\n");
     ctn_wbuf_puts(b, "      <DataArray type=\"Float64\" Name=\"load_factor\" NumberOfTuples=\"1\" format=\"ascii\">");
@@ -304,7 +324,7 @@ static int vtu_step(void *p, const ctn_solution *s, size_t k)
     ctn_wbuf_puts(b, "\">\n");
     int rc = put_data(w, &d, VTU_POINT, nn);
     if (!rc) rc = put_data(w, &d, VTU_CELL, ne);
-    if (!rc) rc = ctn_vtu_put_points(w, nn);
+    if (!rc) rc = ctn_vtu_put_points(w, d.base, nn);
     if (!rc) rc = ctn_vtu_put_cells(w, ne);
     ctn_wbuf_puts(b, "    </Piece>\n");
     return rc ? rc : b->err;

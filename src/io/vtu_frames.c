@@ -63,7 +63,7 @@ static int put_frame(ctn_writer *w, const ctn_dyn_frame *f)
     ctn_wbuf_puts(b, "      </PointData>\n      <CellData>\n");
     put_array(b, "force", f->force, ne, 1);
     ctn_wbuf_puts(b, "      </CellData>\n");
-    int rc = ctn_vtu_put_points(w, nn);
+    int rc = ctn_vtu_put_points(w, NULL, nn);
     if (!rc) rc = ctn_vtu_put_cells(w, ne);
     ctn_wbuf_puts(b, "    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n");
     return rc ? rc : b->err;

@@ -32,8 +32,9 @@ int ctn_writer_run_step(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, siz
     return ctn_writer_run_pieces(ctx, ops, pretty, k, &ctn_pieces_local, sink, m, s);
 }
 
-int ctn_writer_run_pieces(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, size_t k, const ctn_pieces *pieces,
-                          ctn_sink *sink, const ctn_model *m, const ctn_solution *s)
+/* The driver: step k of s (one-step writers), the installed state base, base_step (or NULL). */
+static int run(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, size_t k, const ctn_pieces *pieces,
+               ctn_sink *sink, const ctn_model *m, const ctn_solution *s, const ctn_solution *base, size_t base_step)
 {
     size_t n = ctn_solution_step_count(s);
     if (!n) return ctn_error(ctx, CTN_ERR_INVALID, "%s: the solution has no step", ops->name);
@@ -44,12 +45,28 @@ int ctn_writer_run_pieces(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, s
     w->pretty = pretty;
     w->step = k;
     w->pieces = pieces;
+    w->base = base;
+    w->base_step = base_step;
     int rc = ops->begin(w, m, sink);
     for (size_t i = 0; i < n && !rc; i++) rc = ops->step(w, s, i);
     if (!rc) rc = ops->end(w);
     int rc_close = ctn_wbuf_close(&w->out);
     ctn_free(w);
     return rc ? rc : rc_close;
+}
+
+int ctn_writer_run_pieces(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, size_t k, const ctn_pieces *pieces,
+                          ctn_sink *sink, const ctn_model *m, const ctn_solution *s)
+{
+    return run(ctx, ops, pretty, k, pieces, sink, m, s, NULL, 0);
+}
+
+int ctn_writer_run_case(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, ctn_sink *sink, const ctn_model *m,
+                        const ctn_solution *s, const ctn_solution *base, size_t base_step)
+{
+    if (!base || base_step >= ctn_solution_step_count(base))
+        return ctn_error(ctx, CTN_ERR_INVALID, "%s: no installed state %zu", ops->name, base_step + 1);
+    return run(ctx, ops, pretty, 0, &ctn_pieces_local, sink, m, s, base, base_step);
 }
 
 static int all_finite(const double *v, size_t n)

@@ -27,6 +27,10 @@ typedef struct ctn_writer {
                               writes; ctn_writer_run: the last */
     const ctn_pieces *pieces; /* set by the driver: where the nodes' results come from, a
                               piece at a time (piece.h; one process: ctn_pieces_local) */
+    const ctn_solution *base; /* set by ctn_writer_run_case for a case's files: the run's
+                              solution, whose step base_step is the case's installed
+                              state; NULL otherwise */
+    size_t base_step;
 } ctn_writer;
 
 typedef struct ctn_writer_ops {
@@ -45,6 +49,7 @@ extern const ctn_writer_ops ctn_writer_buckling_csv;  /* buckling.csv: the buckl
 extern const ctn_writer_ops ctn_writer_history_csv;   /* history.csv: the dynamics analysis */
 extern const ctn_writer_ops ctn_writer_vtu;           /* result.vtu: one step (vtu.c) */
 extern const ctn_writer_ops ctn_writer_pvd;           /* result.pvd: the steps' .vtu files */
+extern const ctn_writer_ops ctn_writer_chart_csv;     /* sag_tension.csv: the sag-tension chart */
 
 /* The file of step k (0-based) of n in a result directory: "result_K.vtu", K = k + 1
  * written with as many digits as n has (zero-padded, so that names sort), in
@@ -52,8 +57,9 @@ extern const ctn_writer_ops ctn_writer_pvd;           /* result.pvd: the steps' 
 #define CTN_VTU_NAME_MAX 48
 void ctn_vtu_step_name(char *name, size_t k, size_t n);
 
-/* The <Points> (reference coordinates) and <Cells> of a .vtu piece (vtu.c). */
-int ctn_vtu_put_points(ctn_writer *w, size_t nn);
+/* The <Points> (reference coordinates, displaced by base unless NULL) and <Cells> of a
+ * .vtu piece (vtu.c). */
+int ctn_vtu_put_points(ctn_writer *w, const double *base, size_t nn);
 int ctn_vtu_put_cells(ctn_writer *w, size_t ne);
 
 /* The dynamics analysis's VTU series (vtu_frames.c): the name of frame k of n in a result
@@ -72,6 +78,11 @@ int ctn_frames_remove_stale(ctn_ctx *ctx, const char *dir, size_t n);
  * solution's own (a distributed run's gathering source; tests). */
 int ctn_writer_run_pieces(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, size_t k, const ctn_pieces *pieces,
                           ctn_sink *sink, const ctn_model *m, const ctn_solution *s);
+/* ctn_writer_run_step for the file of a case (its solution s, step 0) whose installed
+ * state is step base_step of the run's solution base (result.vtu: the displacements
+ * from that state). */
+int ctn_writer_run_case(ctn_ctx *ctx, const ctn_writer_ops *ops, int pretty, ctn_sink *sink, const ctn_model *m,
+                        const ctn_solution *s, const ctn_solution *base, size_t base_step);
 /* For begin: remember the model, open the buffered output over sink. */
 int ctn_writer_open(ctn_writer *w, const ctn_model *m, ctn_sink *sink);
 /* Record and return CTN_ERR_INVALID: an accessor refused an index (a solution of

@@ -93,7 +93,7 @@ int ctn_model_add_cable(ctn_model *m, int a, int b, const char *section,
     spec = &given;
     if ((rc = check_spec(m, spec, chord))) return rc;
     if (ctn_arc_make(A, B, m->gravity, spec->shape == CTN_SHAPE_ARC ? spec->length : chord, &f))
-        return ctn_model_error(m, CTN_ERR_MODEL, "cable: shape=arc needs a gravity direction not parallel to the chord (set gravity before the cable, or use shape=straight)");
+        return ctn_model_error(m, CTN_ERR_MODEL, "cable: shape=arc needs a gravity direction not parallel to the chord (give a gravity line, or use shape=straight)");
     if (m->max_node_id > 0x7fffffff - spec->n || m->max_element_id > 0x7fffffff - spec->n)
         return ctn_model_error(m, CTN_ERR_MODEL, "cable: generated ids would overflow");
     long lim = ctn_ctx_model_limit(m->ctx);

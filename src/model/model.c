@@ -58,6 +58,7 @@ void ctn_model_destroy(ctn_model **m)
     ctn_free(p->fns.v);
     ctn_free(p->dloads.v);
     ctn_free(p->removals.v);
+    ctn_free(p->chart.v);
     ctn_idmap_free(&p->node_ids);
     ctn_idmap_free(&p->element_ids);
     ctn_free(p);

@@ -139,6 +139,15 @@ typedef struct ctn_combo {
     int line;
 } ctn_combo;
 
+/* A row of the sag-tension chart (`sagtension`, directives_chart.c): the case or
+ * combination solved at temperature change dT, alone (base -1) or with case `base`. */
+typedef struct ctn_chart_row {
+    int combination; /* 1: index is a combination's; 0: a case's */
+    int index;
+    double dT;       /* [K] */
+    int base;        /* case index, or -1 */
+} ctn_chart_row;
+
 /* Which load records a solve takes: every record of tag 0 .. upto (the totals of model
  * step k: upto = k + 1), and the records of the n extra tags times their factors (a case:
  * its own tag, factor 1; a combination: its cases'). */
@@ -283,6 +292,7 @@ struct ctn_model {
     CTN_ARRAY(ctn_fn) fns;          /* functions of time (dynamics) */
     CTN_ARRAY(ctn_dload) dloads;    /* forces and support motions that follow them */
     CTN_ARRAY(ctn_removal) removals; /* elements removed in time, in order */
+    CTN_ARRAY(ctn_chart_row) chart; /* the sag-tension chart's rows, in order */
 };
 
 /* Make room for one more item in a CTN_ARRAY; 0 or CTN_ERR_NOMEM. */

@@ -120,8 +120,7 @@ int ctn_model_convert(ctn_model *m, const char *unit, int f, int l, int t, doubl
         return 1;
     }
     if (!(m->fconv > 0)) {
-        snprintf(msg, size, "a value with a unit ('%.40s') needs the model's units: give 'units FORCE LENGTH' on an "
-                 "earlier line", unit);
+        snprintf(msg, size, "a value with a unit ('%.40s') needs the model's units: give a line 'units FORCE LENGTH'", unit);
         return 1;
     }
     double x = *v * si / (pow(m->fconv, f) * pow(m->lconv, l));

@@ -156,6 +156,9 @@ static int write_line(ff_writer *w, const char *raw, char *scratch)
     if (!strcmp(d, "node")) return write_node(w, raw);
     if (!strcmp(d, "element") || !strcmp(d, "spring")) return write_member(w);
     if (!strcmp(d, "cable")) return write_cable(w, raw);
+    if (!strcmp(d, "net"))                          /* its nodes moved: not one line any more */
+        return ctn_error(w->ctx, CTN_ERR_MODEL, "%s:%d: formfind cannot write a net back as its `net` line: give the net as "
+                         "node and element lines (python3 bench/hypar_net.py writes one)", w->m->file, w->line.line);
     ctn_wbuf_puts(w->out, raw);
     ctn_wbuf_putc(w->out, '\n');
     return CTN_OK;

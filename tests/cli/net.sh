@@ -1,0 +1,121 @@
+#!/usr/bin/env bash
+# tests/cli/net.sh CATENA: the `net` generator (docs/format.md "net"):
+#   - a 6 x 6 hypar net (tension-only strands prestressed to N0 = 10 kN, 0.5 kN on every
+#     interior node through the set roof.inner) against the same net written out by
+#     bench/hypar_net.py 6 (its own ids, coordinates z = 10 (x^2 - y^2) / 50^2, element
+#     order and l0 from a bisection on the Green-Lagrange strain): the same node ids,
+#     element ids and connectivity, coordinates, displacements and forces to 1e-10
+#     (relative, + 1e-10);
+#   - a flat 3 x 2 net after an explicit node 20, given origin=, fix=xyz (the corners, which
+#     no member reaches, held in x, y, z whatever fix= says), eps0= and its member set loaded by lineload,
+#     written before its section and material: the model
+#     written out by hand (nodes 21..32, members 1..7 by the rule of net_gen.h, the
+#     loads on the sets by ids), bit for bit in the JSON;
+#   - `catena formfind` of a net with q=: exit 2 naming the net's line (its found nodes
+#     cannot be written back as one `net` line), no file written.
+# ctest-cost: 3
+# Prints "N passed, N failed"; exit 1 on any failure.
+set -u
+
+. "$(dirname "$0")/lib/common.sh"
+cli_init net "${1:-}"
+PY=/usr/bin/python3
+[ -x "$PY" ] || PY=python3
+
+# 1. hypar against bench/hypar_net.py
+"$PY" bench/hypar_net.py 6 >"$T/py.cable"
+cat >"$T/net.cable" <<'M'
+units kN m
+material strand E=1.6e8 tension-only
+section s material=strand A=1.5e-4
+net roof hypar nx=6 ny=6 lx=100 ly=100 h=10 section=s N0=10
+load set=roof.inner fz=-0.5
+M
+"$BIN" solve "$T/net.cable" --json >"$T/n.json" 2>"$T/err"; rc=$?
+[ $rc -eq 0 ] || WHY+=("net: exit $rc: $(head -c 200 "$T/err")")
+"$BIN" solve "$T/py.cable" --json >"$T/p.json" 2>"$T/err"; rc=$?
+[ $rc -eq 0 ] || WHY+=("python's net: exit $rc: $(head -c 200 "$T/err")")
+"$PY" - "$T/n.json" "$T/p.json" <<'PY' || WHY+=("the generated hypar differs from bench/hypar_net.py's")
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:3])
+worst = 0.0
+def cmp(x, y, path):
+    global worst
+    if isinstance(x, dict):
+        assert set(x) == set(y), (path, set(x) ^ set(y))
+        for k in x: cmp(x[k], y[k], path + "/" + k)
+    elif isinstance(x, list):
+        assert len(x) == len(y), path
+        for u, v in zip(x, y): cmp(u, v, path)
+    elif isinstance(x, (int, float)) and not isinstance(x, bool):
+        assert not isinstance(x, int) or not path.endswith(("/id", "/nodes")) or x == y, (path, x, y)
+        worst = max(worst, abs(x - y) / (1e-10 + abs(y)) if abs(x - y) > 1e-10 else 0)
+    else:
+        assert x == y, (path, x, y)
+for key in ("nodes", "elements", "reactions"):
+    cmp(a[key], b[key], key)
+assert len(a["nodes"]) == 49 and len(a["elements"]) == 60, (len(a["nodes"]), len(a["elements"]))
+assert worst <= 1e-10, worst
+print("hypar: worst relative difference %.3g" % worst)
+PY
+finish hypar_vs_python
+
+# 2. flat net against the model written by hand
+cat >"$T/flat.cable" <<'M'
+node 20 0 0 5 fix=xyz
+lineload roof qz=-0.01
+load set=roof.inner fz=-0.2
+net roof flat nx=3 ny=2 lx=9 ly=4 origin=10,20,5 fix=xyz section=s eps0=1e-3
+section s material=m A=1e-4
+material m E=2e8
+units kN m
+M
+cat >"$T/hand.cable" <<'M'
+units kN m
+material m E=2e8
+section s material=m A=1e-4
+node 20 0 0 5 fix=xyz
+node 21 5.5 18 5 fix=xyz
+node 22 5.5 20 5 fix=xyz
+node 23 5.5 22 5 fix=xyz
+node 24 8.5 18 5 fix=xyz
+node 25 8.5 20 5
+node 26 8.5 22 5 fix=xyz
+node 27 11.5 18 5 fix=xyz
+node 28 11.5 20 5
+node 29 11.5 22 5 fix=xyz
+node 30 14.5 18 5 fix=xyz
+node 31 14.5 20 5 fix=xyz
+node 32 14.5 22 5 fix=xyz
+element 1 22 25 section=s eps0=1e-3
+element 2 24 25 section=s eps0=1e-3
+element 3 25 28 section=s eps0=1e-3
+element 4 25 26 section=s eps0=1e-3
+element 5 27 28 section=s eps0=1e-3
+element 6 28 31 section=s eps0=1e-3
+element 7 28 29 section=s eps0=1e-3
+lineload all qz=-0.01
+load 25 0 0 -0.2
+load 28 0 0 -0.2
+M
+"$BIN" solve "$T/flat.cable" --json >"$T/f.json" 2>"$T/err"; rc=$?
+[ $rc -eq 0 ] || WHY+=("flat net: exit $rc: $(head -c 300 "$T/err")")
+"$BIN" solve "$T/hand.cable" --json >"$T/h.json" 2>"$T/err"; rc=$?
+[ $rc -eq 0 ] || WHY+=("hand-written net: exit $rc: $(head -c 300 "$T/err")")
+cmp -s "$T/f.json" "$T/h.json" || WHY+=("the flat net's JSON differs from the hand-written model's")
+finish flat_vs_hand
+
+# 3. form finding a generated net: found, but not written back as a `net` line
+cat >"$T/ff.cable" <<'M'
+units kN m
+material m E=2e8
+section s material=m A=1e-4
+net roof hypar nx=4 ny=4 lx=10 ly=10 h=1 section=s q=10
+M
+"$BIN" formfind "$T/ff.cable" -o "$T/found.cable" >/dev/null 2>"$T/err"; rc=$?
+[ $rc -eq 2 ] || WHY+=("formfind of a net: exit $rc, expected 2")
+grep -q "ff.cable:4: formfind cannot write a net back as its \`net\` line" "$T/err" || WHY+=("formfind: $(head -c 300 "$T/err")")
+[ ! -e "$T/found.cable" ] || WHY+=("formfind of a net wrote a file")
+finish formfind_refused
+
+cli_summary
