@@ -14,11 +14,15 @@
 #            E' A / l0 = E A / L.  Mass per unstressed length m' = m / (1 - eps0) (OpenSees'
 #            rho is per drawn length L).
 #   inp      CalculiX 2.20: T3D2 trusses (expanded to bricks, nu = 0: uniaxial), NLGEOM:
-#            St. Venant-Kirchhoff, N = E A (l/L) (eGL + eps0), eGL = ((l/L)^2 - 1)/2, the
-#            prestrain as a cooling of -eps0/alpha with alpha = 1e-5 (as bench/nets.sh).
-#   catena-ccx catena's model of exactly that law: Green-Lagrange, N = E' A lam (lam^2 - 1)/2,
-#            lam = l/l0, with l0 = L sqrt(1 - 2 eps0) (eps0' = eps0/(1 - 2 eps0)) and
-#            E' = E (1 - 2 eps0)^1.5.
+#            St. Venant-Kirchhoff, the prestrain as a cooling of -eps0/alpha with alpha =
+#            1e-5 (as bench/nets.sh). CalculiX splits the stretch: l/L = lam_e (1 - eps0)
+#            (a free bar so cooled contracts by exactly eps0 L: measured, 2.000000e-3 of
+#            1 m) and the elastic part takes St. Venant-Kirchhoff's law on the reference
+#            area: N = E A lam_e (lam_e^2 - 1)/2 (found: it is the law that makes the K = 50
+#            and K = 100 nets agree to 1e-5; E (1 - eps0)^3 or E (1 - eps0) leave 2e-3).
+#   catena-ccx catena's model of that law: Green-Lagrange, N = E' A lam (lam^2 - 1)/2,
+#            lam = l/l0, with l0 = L (1 - eps0) (eps0' = (1/(1 - eps0)^2 - 1)/2) and
+#            E' = E (1 - eps0)^2.
 #
 # Options (tcl, inp):
 #   --probe-node ID   the node whose displacement is printed (tcl) / written (inp)
@@ -113,7 +117,7 @@ def catena(fmt):
     if fmt == "catena-os":
         Ef, ep, law, mf = 1 - e0, e0 / (1 - e0), " strain=engineering", 1 / (1 - e0)
     else:
-        Ef, ep, law, mf = (1 - 2 * e0) ** 1.5, e0 / (1 - 2 * e0), "", 1 / math.sqrt(1 - 2 * e0)
+        Ef, ep, law, mf = (1 - e0) ** 2, (1 / (1 - e0) ** 2 - 1) / 2, "", 1 / (1 - e0)
     W("units kN m\n")
     for m, E in mats.items():
         W("material %s E=%.17g%s\n" % (m, E * Ef, law))
