@@ -145,7 +145,7 @@ def tcl():
     ndm = a.ndm
     if ndm == 2 and any("z" not in f for (_, f, _) in nodes.values()):
         sys.exit("cable2peer: --ndm 2 needs every node held in z")
-    W("# written by bench/peers/cable2peer.py tcl\nwipe\nmodel basic -ndm %d -ndf %d\n" % (ndm, ndm))
+    W("# written by bench/peers/cable2peer.py tcl (a fresh interpreter: no wipe)\nmodel basic -ndm %d -ndf %d\n" % (ndm, ndm))
     rows = []
     for i in order:
         x, fix, ms = nodes[i]

@@ -57,7 +57,7 @@ elif fmt == "catena":
     W("beam 1 1 2 section=sq orient=0,0,1 n=%d\n" % n)
     W("load 2 0 0 %.17g\n" % -P)
 elif fmt == "tcl":
-    W("wipe\nmodel basic -ndm 3 -ndf 6\n")
+    W("model basic -ndm 3 -ndf 6\n")
     W("".join("node %d %.17g 0 0\n" % (i + 1, L * i / n) for i in range(n + 1)))
     W("fix 1 1 1 1 1 1 1\ngeomTransf Corotational 1 0 0 1\n")   # local z = global z (vecxz)
     W("".join("element elasticBeamColumn %d %d %d %.17g %.17g %.17g %.17g %.17g %.17g 1\n"

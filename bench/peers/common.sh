@@ -25,10 +25,11 @@ catena_run() {
 }
 
 # opensees_run SCRIPT: run it from its directory, print the answer line (with iterations)
+# and this one run's wall and CPU seconds (GNU time; a first look, not the timing)
 opensees_run() {
-    (cd "$(dirname "$1")" && "$OPENSEES" "$(basename "$1")" > "$1.log" 2>&1) \
+    (cd "$(dirname "$1")" && /usr/bin/time -f "%e %U %S" -o "$1.time" "$OPENSEES" "$(basename "$1")" > "$1.log" 2>&1) \
         || { echo "OpenSees failed: $1.log" >&2; return 1; }
-    ans opensees "$1.log"
+    echo "$(ans opensees "$1.log") $(awk '{ printf "once: wall=%s cpu=%.2f", $1, $2 + $3 }' "$1.time")"
 }
 
 # ccx_run JOB (JOB.inp in its directory): print the answer line and the increments and
