@@ -5,7 +5,9 @@
 # (elasticBeamColumn, Corotational transformation, 10 LoadControl steps, full Newton,
 # SYSTEM default BandGeneral) and CalculiX (B31, NLGEOM) when CCX_MAX >= N (default 100),
 # each against the inextensible elastica (shooting) and catena against each peer:
-# tip displacement and clamp reaction. catena is run with its defaults and, as OpenSees,
+# tip displacement and clamp reaction (catena vs OpenSees to 1e-5: two different
+# corotational elements, each within 2.4e-5 of the elastica at N = 100, differ by their
+# discretization errors). catena is run with its defaults and, as OpenSees,
 # with `solve steps=10 method=newton linear_solver=cholmod-ldl` (docs/format.md: "Large
 # rotations: load in several steps").
 #   bash bench/peers/beam.sh 100
@@ -31,7 +33,7 @@ cant tcl "$n" "$k" "$system" > "$d/os.tcl"
 o=$(opensees_run "$d/os.tcl") && {
     echo "OpenSees $system: $o"
     agree 1e-4 OpenSees "$o" elastica "$e"
-    [ -n "${c:-}" ] && agree 1e-6 catena "$(echo "$c" | sed 's/ N=[^ ]*/ N=0/')" OpenSees "$o"
+    [ -n "${c:-}" ] && agree 1e-5 catena "$(echo "$c" | sed 's/ N=[^ ]*/ N=0/')" OpenSees "$o"
 }
 if [ "$n" -le "${CCX_MAX:-100}" ]; then
     cant inp "$n" "$k" > "$d/beam.inp"

@@ -67,7 +67,7 @@ elif fmt == "tcl":
     W("integrator LoadControl 0.1\nanalysis Static\nset its 0\nset ok 0\n")
     W("for {set k 0} {$k < 10} {incr k} {\n  set ok [analyze 1]\n  if {$ok != 0} break\n  incr its [testIter]\n}\n")
     W("reactions\nset t %d\n" % (n + 1))
-    W('puts [format "peer iterations=%%d ok=%%d u=%%.12e,%%.12e,%%.12e N=0 R=%%.12e,%%.12e,%%.12e" $its $ok '
+    W('puts [format "peer iterations=%d ok=%d u=%.12e,%.12e,%.12e N=0 R=%.12e,%.12e,%.12e" $its $ok '
       '[nodeDisp $t 1] [nodeDisp $t 2] [nodeDisp $t 3] [nodeReaction 1 1] [nodeReaction 1 2] [nodeReaction 1 3]]\n')
 elif fmt == "inp":
     W("*NODE, NSET=NALL\n")
