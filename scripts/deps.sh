@@ -12,6 +12,9 @@ pkgs="gcc binutils make cmake pkg-config libsuitesparse-dev libopenblas0-openmp 
 # PETSc 3.18 with MUMPS, OpenMPI 4.1, found by CMake (optional there: without them
 # catena builds as the serial program; CTN_DEPS_MPI=0 leaves them out).
 [ "${CTN_DEPS_MPI:-1}" = 1 ] && pkgs="$pkgs petsc-dev slepc-dev libopenmpi-dev openmpi-bin"
+# calculix-ccx: CalculiX 2.20, the peer of the benchmarks (bench/nets.sh, bench/peers/);
+# no build or test uses it.
+pkgs="$pkgs calculix-ccx"
 # CTN_DEPS_VTK=1: also VTK's Python reader (76 packages), which tests/cli/vtu.sh then
 # uses besides its plain XML reader to read result.vtu back.
 [ "${CTN_DEPS_VTK:-0}" = 1 ] && pkgs="$pkgs python3-vtk9"
