@@ -75,6 +75,8 @@ static PyMethodDef mod_methods[] = {
       "read(path, interruptible) -> Model: read a .cable file (ctn_read_file)." },
     { "read_string", pyctn_read_string, METH_VARARGS,
       "read_string(name, text, interruptible) -> Model: read .cable text; name stands for the file in messages." },
+    { "new_model", pyctn_new_model, METH_VARARGS,
+      "new_model(name) -> Model: an empty model to build (read_more, add_nodes, add_elements)." },
     { "formfind", pyctn_formfind, METH_VARARGS,
       "formfind(name, text, out, tol, maxit, interruptible) -> report: find the shape, write it to out." },
     { "catenary", pyctn_catenary, METH_VARARGS, "catenary(l, h, w, S, x) -> dict (ctn_catenary_solve)" },
