@@ -137,7 +137,7 @@ static void solve_same(ctn_ctx *ctx)
             ctn_element_state p, q;
             ctn_solution_element(sf, e, &p);
             ctn_solution_element(sa, e, &q);
-            CHECK(!memcmp(&p.N, &q.N, sizeof p.N) && p.N > 0);
+            CHECK(!memcmp(&p.force, &q.force, sizeof p.force) && p.force > 0);
         }
     }
     ctn_solution_destroy(&sf);
