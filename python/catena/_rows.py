@@ -96,7 +96,8 @@ class Nodes:
         if len(self.ids) != len(self.X):
             raise ValueError(f"nodes: {len(self.ids)} ids for {len(self.X)} positions")
         self.fix, self.mass = fix, mass
-        self.fixw = _fix_words(fix, len(self.ids))          # checks fix's length
+        if fix is not None and not isinstance(fix, str) and np.ndim(fix) != 2 and len(fix) != len(self.ids):
+            raise ValueError(f"fix: {len(fix)} entries for {len(self.ids)} nodes")
 
     def __len__(self):
         return len(self.ids)
@@ -105,7 +106,7 @@ class Nodes:
         ms = [""] * len(self.ids) if self.mass is None else \
             [f" mass={_num(v)}" for v in np.broadcast_to(self.mass, self.ids.shape).tolist()]
         return [f"node {i} {x!r} {y!r} {z!r}{f}{s}" for i, (x, y, z), f, s in
-                zip(self.ids.tolist(), self.X.tolist(), self.fixw, ms)]
+                zip(self.ids.tolist(), self.X.tolist(), _fix_words(self.fix, len(self.ids)), ms)]
 
     def add_to(self, c, name, line):
         ids, X = _ids(self.ids), _reals(self.X, self.X.shape)
@@ -151,18 +152,24 @@ class Elements:
         self.ids = np.asarray(ids).reshape(-1)
         self.conn = np.asarray(conn).reshape(len(self.ids), -1)
         self.keys = {k: v for k, v in keys.items() if v is not None}
-        self.cols = []
+        self.words = {}                                  # the one-value keys, checked now
         for k, v in self.keys.items():
             if isinstance(v, (str, int, float, np.number)):
-                self.cols.append([f" {k}={word(k, v)}"] * len(self.ids))
-            else:
-                self.cols.append([f" {k}={_num(x)}" for x in np.broadcast_to(np.asarray(v), self.ids.shape).tolist()])
+                self.words[k] = word(k, v)
+            elif np.asarray(v).dtype.kind not in "iuf" or np.asarray(v).ndim > 1:
+                raise TypeError(f"{k}=: a number or an array of numbers (one per element) was expected")
 
     def __len__(self):
         return len(self.ids)
 
     def lines(self):
-        rest = ["".join(t) for t in zip(*self.cols)] if self.cols else [""] * len(self.ids)
+        cols = []
+        for k, v in self.keys.items():
+            if k in self.words:
+                cols.append([f" {k}={self.words[k]}"] * len(self.ids))
+            else:
+                cols.append([f" {k}={_num(x)}" for x in np.broadcast_to(np.asarray(v), self.ids.shape).tolist()])
+        rest = ["".join(t) for t in zip(*cols)] if cols else [""] * len(self.ids)
         return [f"{self.family} {i} " + " ".join(map(str, c)) + r
                 for i, c, r in zip(self.ids.tolist(), self.conn.tolist(), rest)]
 

@@ -74,8 +74,7 @@ def test_row_errors_are_the_readers(case):
         elements.conn = elements.conn.copy()
         elements.conn[4, 1] = 999
     elif case == "undefined_section":
-        elements.keys["section"] = "wire"
-        elements.cols = [[" section=wire"] * len(elements), elements.cols[1]]
+        elements.keys["section"] = elements.words["section"] = "wire"
     elif case == "dup_element":
         elements.ids = elements.ids.copy()
         elements.ids[5] = elements.ids[1]
@@ -85,7 +84,6 @@ def test_row_errors_are_the_readers(case):
     elif case == "bad_fix":
         nodes.fix = nodes.fix.copy()
         nodes.fix[2] = "xq"
-        nodes.fixw[2] = " fix=xq"
     elif case == "l0_negative":
         m.elements([100], [[1, 2]], section="rope", l0=np.array([-1.0]))
     want = reader_error(m)
