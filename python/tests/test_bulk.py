@@ -100,3 +100,15 @@ def test_bulk_build_is_not_a_text_round_trip():
         if not isinstance(part, str):
             part.lines = None                                # would fail if called
     assert m.solve().converged and m._bulk == 3
+
+
+def test_use_cli_heap_changes_no_result():
+    """catena.use_cli_heap() (process-wide: in a child process) leaves every number as it is."""
+    import subprocess
+    import sys
+    from conftest import PAPER
+    code = ("import sys, catena; ok = catena.use_cli_heap(); "
+            "sys.stdout.write(str(ok) + '\\n' + catena.read(sys.argv[1]).solve().to_json())")
+    r = subprocess.run([sys.executable, "-c", code, str(PAPER[2])], capture_output=True, text=True, check=True)
+    ok, text = r.stdout.split("\n", 1)
+    assert ok == "True" and text == catena.read(PAPER[2]).solve().to_json()
