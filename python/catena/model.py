@@ -58,9 +58,11 @@ class Model:
     moment, hload, displace, step, group, temperature, modes, options (the `solve`
     line); add(directive, *args, **keys) writes any line. Arguments are numbers, words
     and keyword values as in the file; array arguments (nodes, elements, loads) take
-    numpy arrays and write one line per row. The model is compiled (read by the C
-    reader, which checks it line by line) when it is first used; a ModelError then names
-    the line of to_cable()'s text (and .path the model's name).
+    numpy arrays and stand for one line per row in to_cable(). The model is compiled
+    when it is first used: its text lines by the C reader, its array blocks in bulk by
+    the C API (ctn_model_add_nodes, ctn_model_add_elements: no text made for them), each
+    checked as the reader checks a line; a ModelError then names the line of
+    to_cable()'s text (and .path the model's name).
 
     Solve options (solve(**options)): tol, dtol, maxit, method ("auto", "newton",
     "arclength"), ordering ("auto", "natural", "amd", "metis"), linesearch, reuse,
