@@ -32,6 +32,16 @@ int ctn_read_file(ctn_ctx *ctx, const char *path, ctn_model **out, ctn_solve_opt
  * messages in place of a file name. */
 int ctn_read_string(ctn_ctx *ctx, const char *name, const char *text, size_t len,
                     ctn_model **out, ctn_solve_options *opt);
+/* More .cable text read into an existing model m, as if it followed the lines m was
+ * built from: its lines are numbered from first_line (>= 1) in messages naming `name`
+ * (NULL: "<string>"), and the `solve` line's options go to *opt (NULL: dropped; give the
+ * same opt to every call, initialised once by ctn_solve_options_default). With
+ * ctn_model_add_nodes and ctn_model_add_elements between the calls, a program builds a
+ * model partly from text and partly from arrays, numbered as the one file they make
+ * (a model built so and that file read by ctn_read_string are the same). On failure the
+ * context names the bad line; m keeps the lines before it and should be discarded. */
+int ctn_read_string_into(ctn_model *m, const char *name, int first_line, const char *text, size_t len,
+                         ctn_solve_options *opt);
 /* ctn_read_file / ctn_read_string without the options. */
 int ctn_model_read_file(ctn_ctx *ctx, const char *path, ctn_model **out);
 int ctn_model_read_string(ctn_ctx *ctx, const char *name, const char *text, size_t len,

@@ -255,6 +255,38 @@ int ctn_model_add_cable(ctn_model *m, int a, int b, const char *section,
 #define CTN_BEAM_MAX_N 100000
 #define CTN_BEAM_GEN_ID 1000000
 int ctn_model_add_beam(ctn_model *m, const ctn_element_spec *spec, int n);
+/* Nodes and elements from arrays, in bulk: row i is checked and added as the
+ * one-at-a-time call (ctn_model_add_node, ctn_model_add_element_spec) checks and adds it,
+ * with its messages; when the model has an origin line (ctn_model_set_origin with
+ * line > 0, as the reader sets it), row i is taken as line `line + i` of that file (its
+ * messages name it, "file:line: duplicate node id 7 (defined on line 3)", and the record
+ * keeps it), so that n rows read as the n lines of a file would. Storage for all rows is
+ * reserved first. On failure the context names the first bad row; the rows before it
+ * stay in the model (as a file's lines before a bad one), which should be discarded.
+ *
+ * n nodes: ids[i], coordinates X[3 i .. 3 i + 2], fixed DOFs fix[i] (CTN_FIX_*; fix NULL:
+ * all free). */
+int ctn_model_add_nodes(ctn_model *m, size_t n, const int *ids, const double *X, const unsigned *fix);
+/* The columns of ctn_model_add_elements: n rows; element i takes id ids[i] and the
+ * spec's nnodes node ids nodes[nnodes i .. nnodes i + nnodes - 1]; each optional column
+ * (NULL: the spec's value for every row) gives row i its own value of that spec field.
+ * Versioned as the specs are (size first; ctn_element_rows_init). */
+typedef struct ctn_element_rows {
+    size_t size;                     /* sizeof(ctn_element_rows) (set by the init) */
+    size_t n;                        /* number of rows */
+    const int *ids;                  /* n element ids */
+    const int *nodes;                /* n * spec->nnodes user node ids */
+    const double *l0;                /* spec.l0 per row, or NULL */
+    const double *prestress_value;   /* spec.prestress_value per row (N0, s0 or eps0 as
+                                        spec.prestress says), or NULL */
+    const double *k;                 /* spec.k per row (springs), or NULL */
+    const double *q;                 /* spec.q per row (form finding), or NULL */
+    const double *force;             /* spec.force per row (form finding), or NULL */
+} ctn_element_rows;
+void ctn_element_rows_init(ctn_element_rows *r);
+/* rows->n elements of spec's family and keys (spec->id and spec->nodes are ignored: the
+ * rows give them), as ctn_model_add_element_spec would add them one by one. */
+int ctn_model_add_elements(ctn_model *m, const ctn_element_spec *spec, const ctn_element_rows *rows);
 /* Concentrated force F at a node (summed with earlier loads on that node). Belongs
  * to the current step (see ctn_model_add_step). */
 int ctn_model_add_load(ctn_model *m, int node, const double F[3]);

@@ -7,18 +7,10 @@ import os
 import tempfile
 import threading
 
-from . import _catena, errors
+from . import _catena, _rows, errors
+from ._rows import _num
 from ._np import np
 from .solution import Solution
-
-
-def _num(x):
-    """A number as the .cable reader reads it back to the same double (shortest repr)."""
-    if isinstance(x, (bool, np.bool_)):
-        raise TypeError("a number was expected, not a bool")
-    if isinstance(x, (int, np.integer)):
-        return str(int(x))
-    return repr(float(x))
 
 
 def _value(key, v):
@@ -47,22 +39,6 @@ def _positional(args):
     return "".join(" " + (_value("argument", a) if isinstance(a, str) else _num(a)) for a in args)
 
 
-def _fix_words(fix, n):
-    """A fix= word per node: one string for all, a sequence of strings, or a bool array
-    (n, 3) of fixed translations."""
-    if fix is None:
-        return [""] * n
-    if isinstance(fix, str):
-        return [f" fix={fix}" if fix else ""] * n
-    arr = np.asarray(fix)
-    if arr.dtype == bool and arr.shape == (n, 3):
-        letters = np.array(["x", "y", "z"])
-        return [(" fix=" + "".join(letters[row])) if row.any() else "" for row in arr]
-    if len(arr) != n:
-        raise ValueError(f"fix: {len(arr)} entries for {n} nodes")
-    return [f" fix={f}" if f else "" for f in arr.tolist()]
-
-
 class Model:
     """A catena model.
 
@@ -82,9 +58,11 @@ class Model:
     moment, hload, displace, step, group, temperature, modes, options (the `solve`
     line); add(directive, *args, **keys) writes any line. Arguments are numbers, words
     and keyword values as in the file; array arguments (nodes, elements, loads) take
-    numpy arrays and write one line per row. The model is compiled (read by the C
-    reader, which checks it line by line) when it is first used; a ModelError then names
-    the line of to_cable()'s text (and .path the model's name).
+    numpy arrays and stand for one line per row in to_cable(). The model is compiled
+    when it is first used: its text lines by the C reader, its array blocks in bulk by
+    the C API (ctn_model_add_nodes, ctn_model_add_elements: no text made for them), each
+    checked as the reader checks a line; a ModelError then names the line of
+    to_cable()'s text (and .path the model's name).
 
     Solve options (solve(**options)): tol, dtol, maxit, method ("auto", "newton",
     "arclength"), ordering ("auto", "natural", "amd", "metis"), linesearch, reuse,
@@ -139,6 +117,13 @@ class Model:
         self._tables = None
         return self
 
+    def _rows(self, block):
+        """Append a block of rows from arrays (_rows.Nodes, Elements, Loads): one line per
+        row in to_cable(), added to the library in bulk when the model is compiled."""
+        self.add("#")
+        self._lines[-1] = block
+        return self
+
     def units(self, force, length):
         return self.add("units", force, length)
 
@@ -158,17 +143,7 @@ class Model:
     def nodes(self, ids, X, fix=None, mass=None) -> "Model":
         """Nodes from arrays: ids (n,), X (n, 3); fix one word for all ("xyz"), a word per
         node, or a bool array (n, 3); mass None, a number or an array (n,)."""
-        X = np.asarray(X, dtype=float).reshape(-1, 3)
-        ids = np.asarray(ids).reshape(-1)
-        if len(ids) != len(X):
-            raise ValueError(f"nodes: {len(ids)} ids for {len(X)} positions")
-        fx = _fix_words(fix, len(ids))
-        ms = [""] * len(ids) if mass is None else [f" mass={_num(v)}" for v in np.broadcast_to(mass, ids.shape).tolist()]
-        rows = X.tolist()
-        self.add("#", "nodes")
-        self._lines[-1:] = [f"node {i} {x!r} {y!r} {z!r}{f}{s}" for i, (x, y, z), f, s in
-                            zip(ids.tolist(), rows, fx, ms)]
-        return self
+        return self._rows(_rows.Nodes(ids, X, fix, mass))
 
     def element(self, id, n1, n2, family="element", **keys):
         return self.add(family, id, n1, n2, **keys)
@@ -177,22 +152,7 @@ class Model:
         """Elements from arrays: ids (ne,), conn (ne, 2) node ids; family "element" (a cable
         element), "spring", "rspring", "catenary"; keys each one value for all (section=,
         k=, group=) or an array with a value per element (l0=, N0=, s0=, eps0=, k= ...)."""
-        ids = np.asarray(ids).reshape(-1)
-        conn = np.asarray(conn).reshape(len(ids), -1)
-        cols = []
-        for k, v in keys.items():
-            if v is None:
-                continue
-            if isinstance(v, (str, int, float, np.number)):
-                word = f" {k}={_value(k, v)}"
-                cols.append([word] * len(ids))
-            else:
-                cols.append([f" {k}={_num(x)}" for x in np.broadcast_to(np.asarray(v), ids.shape).tolist()])
-        rest = ["".join(t) for t in zip(*cols)] if cols else [""] * len(ids)
-        self.add("#", family)
-        self._lines[-1:] = [f"{family} {i} " + " ".join(map(str, c)) + r
-                            for i, c, r in zip(ids.tolist(), conn.tolist(), rest)]
-        return self
+        return self._rows(_rows.Elements(family, ids, conn, keys, _value))
 
     def cable(self, n1, n2, section, n, **keys):
         """cable NODE1 NODE2 section= n= length=|H=|sag=|tension= [shape= start= guess= N0=
@@ -204,11 +164,7 @@ class Model:
 
     def loads(self, nodes, F):
         """Loads from arrays: nodes (k,) ids, F (k, 3)."""
-        nodes = np.asarray(nodes).reshape(-1)
-        F = np.broadcast_to(np.asarray(F, dtype=float), (len(nodes), 3))
-        self.add("#", "loads")
-        self._lines[-1:] = [f"load {i} {a!r} {b!r} {c!r}" for i, (a, b, c) in zip(nodes.tolist(), F.tolist())]
-        return self
+        return self._rows(_rows.Loads(nodes, F))
 
     def moment(self, node, mx, my, mz):
         return self.add("moment", node, mx, my, mz)
@@ -252,7 +208,13 @@ class Model:
         if self._lines is None:
             with open(self.path, encoding="utf-8", errors="surrogateescape") as f:
                 return f.read()
-        return "\n".join(self._lines) + "\n"
+        out = []
+        for part in self._lines:
+            if isinstance(part, str):
+                out.append(part)
+            else:
+                out.extend(part.lines())
+        return "\n".join(out) + "\n"
 
     def write(self, path: str | os.PathLike) -> None:
         """Write the model as a .cable file (temporary beside it, then renamed)."""
@@ -270,9 +232,34 @@ class Model:
             raise
 
     def _compile(self):
-        if self._c is None:
-            self._c = errors.call(_catena.read_string, self.name, self.to_cable(), _main_thread(), path=self.name)
-        return self._c
+        """The C model: the text's lines through the reader, the blocks of rows from arrays
+        in bulk (their text only where the bulk route would not give the reader's
+        answer), each numbered by its first line in to_cable()."""
+        if self._c is not None:
+            return self._c
+        name, irq = self.name, _main_thread()
+        c = errors.call(_catena.new_model, name, path=name)
+        line, text, self._bulk = 1, [], 0
+
+        def flush(text, line):
+            if text:
+                errors.call(c.read_more, name, line, "\n".join(text) + "\n", irq, path=name)
+            return line + len(text)
+
+        for part in self._lines:
+            if isinstance(part, str):
+                text.append(part)
+                continue
+            line = flush(text, line)
+            text = []
+            if errors.call(part.add_to, c, name, line, path=name):
+                self._bulk += 1                          # blocks that went in bulk (tests)
+            else:
+                flush(part.lines(), line)
+            line += len(part)
+        flush(text, line)
+        self._c = c
+        return c
 
     # ---- solving ------------------------------------------------------------------------
     def solve(self, check: bool = False, **options) -> Solution:

@@ -4,7 +4,7 @@
 
 #include <string.h>
 
-static pyctn_model *model_alloc(PyObject *module)
+pyctn_model *pyctn_model_alloc(PyObject *module)
 {
     pyctn_state *st = pyctn_state_of(module);
     pyctn_model *self = PyObject_GC_New(pyctn_model, st->model_type);
@@ -22,8 +22,7 @@ static pyctn_model *model_alloc(PyObject *module)
     return self;
 }
 
-/* Take the model's lock, waiting with the GIL released. */
-static void model_lock(pyctn_model *self)
+void pyctn_model_lock(pyctn_model *self)
 {
     if (PyThread_acquire_lock(self->lock, NOWAIT_LOCK)) return;
     Py_BEGIN_ALLOW_THREADS
@@ -34,7 +33,7 @@ static void model_lock(pyctn_model *self)
 /* read(path, interruptible) and read_string(name, text, interruptible). */
 static PyObject *read_any(PyObject *module, const char *name, const char *text, Py_ssize_t len, int irq_on)
 {
-    pyctn_model *self = model_alloc(module);
+    pyctn_model *self = pyctn_model_alloc(module);
     if (!self) return NULL;
     pyctn_irq q;
     int rc;
@@ -79,7 +78,7 @@ static PyObject *model_solve(PyObject *op, PyObject *args)
     PyObject *dict;
     int irq_on = 0;
     if (!PyArg_ParseTuple(args, "O!|p", &PyDict_Type, &dict, &irq_on)) return NULL;
-    model_lock(self);
+    pyctn_model_lock(self);
     ctn_solve_options opt = self->opt;
     ctn_solution *s = NULL;
     if (pyctn_options_parse(st, dict, self->ctx, &opt)) {
@@ -211,6 +210,11 @@ static PyMethodDef model_methods[] = {
     { "counts", model_counts, METH_NOARGS, "counts() -> (nodes, elements)" },
     { "nodes", model_nodes, METH_NOARGS, "nodes() -> (ids, X, fix)" },
     { "elements", model_elements, METH_NOARGS, "elements() -> (ids, ends, l0, A, E, w, family, family_names)" },
+    { "read_more", pyctn_model_read_more, METH_VARARGS, "read_more(name, first_line, text, interruptible): more .cable text" },
+    { "add_nodes", pyctn_model_add_nodes, METH_VARARGS, "add_nodes(name, first_line, ids, X, fix, mass): node rows" },
+    { "add_loads", pyctn_model_add_loads, METH_VARARGS, "add_loads(name, first_line, nodes, F): load rows" },
+    { "add_elements", pyctn_model_add_elements, METH_VARARGS,
+      "add_elements(name, first_line, type, ids, conn, nnodes, section, group, kind, l0, value, k, q, force): element rows" },
     { NULL, NULL, 0, NULL }
 };
 

@@ -65,6 +65,7 @@ static PyObject *mod_version(PyObject *self, PyObject *noargs)
 PyObject *pyctn_read(PyObject *module, PyObject *args);
 PyObject *pyctn_read_string(PyObject *module, PyObject *args);
 PyObject *pyctn_formfind(PyObject *module, PyObject *args);
+PyObject *pyctn_use_cli_heap(PyObject *module, PyObject *noargs);
 PyObject *pyctn_catenary(PyObject *module, PyObject *args);
 PyObject *pyctn_ecatenary(PyObject *module, PyObject *args);
 PyObject *pyctn_parabola(PyObject *module, PyObject *args);
@@ -75,6 +76,10 @@ static PyMethodDef mod_methods[] = {
       "read(path, interruptible) -> Model: read a .cable file (ctn_read_file)." },
     { "read_string", pyctn_read_string, METH_VARARGS,
       "read_string(name, text, interruptible) -> Model: read .cable text; name stands for the file in messages." },
+    { "use_cli_heap", pyctn_use_cli_heap, METH_NOARGS,
+      "use_cli_heap() -> bool: the catena command's process-wide heap settings (see catena.use_cli_heap)." },
+    { "new_model", pyctn_new_model, METH_VARARGS,
+      "new_model(name) -> Model: an empty model to build (read_more, add_nodes, add_elements)." },
     { "formfind", pyctn_formfind, METH_VARARGS,
       "formfind(name, text, out, tol, maxit, interruptible) -> report: find the shape, write it to out." },
     { "catenary", pyctn_catenary, METH_VARARGS, "catenary(l, h, w, S, x) -> dict (ctn_catenary_solve)" },

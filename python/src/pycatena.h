@@ -47,6 +47,18 @@ typedef struct pyctn_model {
     PyObject *module;         /* for the state (types, error) */
 } pyctn_model;
 
+/* A new Model object with its context (no model yet); NULL with an exception set. */
+pyctn_model *pyctn_model_alloc(PyObject *module);
+/* Take the model's lock, waiting with the GIL released. */
+void pyctn_model_lock(pyctn_model *self);
+/* Building a model in pieces (build.c): new_model(name) of the module; the Model's
+ * read_more, add_nodes and add_elements methods. */
+PyObject *pyctn_new_model(PyObject *module, PyObject *args);
+PyObject *pyctn_model_read_more(PyObject *op, PyObject *args);
+PyObject *pyctn_model_add_nodes(PyObject *op, PyObject *args);
+PyObject *pyctn_model_add_elements(PyObject *op, PyObject *args);
+PyObject *pyctn_model_add_loads(PyObject *op, PyObject *args);
+
 typedef struct pyctn_solution {
     PyObject_HEAD
     pyctn_model *model;       /* a reference: the model outlives its solution */

@@ -81,7 +81,32 @@ static int feed_file(ctn_line *l, const source *src)
     return ctn_parse_lines(l, buf + skip, n - skip);
 }
 
-/* A new model in *out from src, in the C locale, with the solve options in *opt. */
+/* The lines of src into m, numbered from first_line, in the C locale; the `solve` line
+ * into *opt. */
+static int read_into(ctn_model *m, const char *name, int first_line, const source *src, ctn_solve_options *opt)
+{
+    ctn_line l;
+    memset(&l, 0, sizeof l);
+    l.m = m;
+    l.opt = opt;
+    l.file = name;
+    l.line = first_line;
+    locale_t c = newlocale(LC_ALL_MASK, "C", (locale_t)0);
+    locale_t old = c ? uselocale(c) : (locale_t)0;
+    ctn_deck deck;                    /* read whole, then run definitions first (deck.h) */
+    memset(&deck, 0, sizeof deck);
+    l.deck = &deck;
+    int rc = src->f ? feed_file(&l, src) : feed_string(&l, src);
+    if (!rc) rc = ctn_deck_run(&deck, &l);
+    ctn_deck_free(&deck);
+    if (c) {
+        uselocale(old);
+        freelocale(c);
+    }
+    return rc;
+}
+
+/* A new model in *out from src, with the solve options in *opt. */
 static int read_model(ctn_ctx *ctx, const char *name, const source *src, ctn_model **out,
                       ctn_solve_options *opt)
 {
@@ -90,29 +115,22 @@ static int read_model(ctn_ctx *ctx, const char *name, const source *src, ctn_mod
     ctn_model *m = NULL;
     int rc = ctn_model_create(ctx, &m);
     if (!rc) rc = ctn_model_set_origin(m, name, 0);
-    if (!rc) {
-        ctn_line l;
-        memset(&l, 0, sizeof l);
-        l.m = m;
-        l.opt = opt ? opt : &own;
-        l.file = name;
-        l.line = 1;
-        locale_t c = newlocale(LC_ALL_MASK, "C", (locale_t)0);
-        locale_t old = c ? uselocale(c) : (locale_t)0;
-        ctn_deck deck;
-        memset(&deck, 0, sizeof deck);
-        l.deck = &deck;
-        rc = src->f ? feed_file(&l, src) : feed_string(&l, src);
-        if (!rc) rc = ctn_deck_run(&deck, &l);
-        ctn_deck_free(&deck);
-        if (c) {
-            uselocale(old);
-            freelocale(c);
-        }
-    }
+    if (!rc) rc = read_into(m, name, 1, src, opt ? opt : &own);
     if (rc) ctn_model_destroy(&m);
     *out = m;
     return rc;
+}
+
+int ctn_read_string_into(ctn_model *m, const char *name, int first_line, const char *text, size_t len,
+                         ctn_solve_options *opt)
+{
+    if (!m || (!text && len) || first_line < 1) return CTN_ERR_INVALID;
+    ctn_solve_options own;
+    if (!opt) ctn_solve_options_default(opt = &own);
+    name = name ? name : "<string>";
+    source src = { text, len, NULL, NULL };
+    int rc = ctn_model_set_origin(m, name, 0);
+    return rc ? rc : read_into(m, name, first_line, &src, opt);
 }
 
 int ctn_read_string(ctn_ctx *ctx, const char *name, const char *text, size_t len,

@@ -9,7 +9,9 @@
 #   - the pytest suite python/tests/ (Debian's python3-pytest) with the first of those
 #     pythons that has pytest: the paper's four cables against `catena solve --json` bit
 #     for bit, errors with file:line (the corpus of tests/errors/), models from arrays
-#     written to .cable and read back, threads, Ctrl-C, modes, steps, the examples.
+#     written to .cable and read back, built in bulk (test_bulk.py), threads, Ctrl-C,
+#     modes, steps, the examples; to_dataframe() and plot() when pandas / matplotlib
+#     are installed (optional: skipped without them).
 # A sanitizer build (CTN_SANITIZE, CTN_FUZZ) is skipped: its libcatena.a needs the
 # sanitizer runtime loaded first, which a Python process does not have.
 # ctest-cost: 90
