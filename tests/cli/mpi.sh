@@ -15,6 +15,8 @@
 #   petsc_options   --petsc -ksp_type cg -pc_type jacobi ... and linear_solver=petsc-cg;
 #   batch           `catena batch` of three models on 2 ranks: each result.json the
 #                   serial solve's bytes;
+#   killed_rank     rank 1 of 2 killed (kill -9) mid-solve: mpirun's exit code non-zero,
+#                   its message naming the rank and the signal, -o DIR left empty;
 #   module          PETSc and MPI live in libcatena_mpi.so (src/dist/plugin.h): the
 #                   command maps none of their libraries, a `petsc` solver asked for
 #                   outside an MPI job is refused naming mpirun, and the module found
@@ -135,6 +137,37 @@ for m in s250.8777 net elastic_support; do
 done
 grep -q "^batch: 3 models over 2 ranks" "$T/out" || WHY+=("batch: $(head -c 200 "$T/out")")
 finish batch
+
+# a rank killed mid-solve: the hypar net K = 120 (43k DOFs, seconds on 2 ranks), rank 1
+# killed (SIGKILL) once rank 0 has printed the Newton table's head; mpirun ends the job
+# with a non-zero code naming the rank and the signal; -o DIR holds nothing (no result
+# set, no staged temporary: rank 0 writes only after the solve)
+python3 bench/hypar_net.py 120 --issue10 >"$T/net120.cable"
+"${MPIRUN[@]}" -n 2 "$BIN" solve "$T/net120.cable" -o "$T/killed" >"$T/k.out" 2>"$T/k.err" &
+mp=$!
+victim=
+for _ in $(seq 600); do                       # up to 60 s for the solve to start
+    grep -q "^Newton" "$T/k.out" 2>/dev/null && break
+    kill -0 "$mp" 2>/dev/null || break
+    sleep 0.1
+done
+for p in $(pgrep -P "$mp" 2>/dev/null); do
+    tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx OMPI_COMM_WORLD_RANK=1 && victim=$p
+done
+if [ -n "$victim" ] && grep -q "^Newton" "$T/k.out"; then
+    kill -9 "$victim"
+    wait "$mp"
+    code=$?
+    [ "$code" != 0 ] || WHY+=("killed_rank: mpirun exited 0")
+    grep -q "rank 1 .*exited on signal 9" "$T/k.err" || WHY+=("killed_rank: no message naming rank 1 and signal 9: $(head -c 300 "$T/k.err")")
+    grep -q "^converged" "$T/k.out" && WHY+=("killed_rank: the solve finished before the kill (too small a model)")
+    [ -z "$(ls -A "$T/killed" 2>/dev/null)" ] || WHY+=("killed_rank: -o DIR holds $(ls -A "$T/killed" | head -5 | tr '\n' ' ')")
+else
+    kill "$mp" 2>/dev/null
+    wait "$mp"
+    WHY+=("killed_rank: the solve did not start (rank 1: '${victim}'): $(head -c 300 "$T/k.err")")
+fi
+finish killed_rank
 
 # the MPI module: loaded only for a job
 libs=$(ldd "$BIN" 2>/dev/null)
