@@ -15,6 +15,8 @@
 #   petsc_options   --petsc -ksp_type cg -pc_type jacobi ... and linear_solver=petsc-cg;
 #   batch           `catena batch` of three models on 2 ranks: each result.json the
 #                   serial solve's bytes;
+#   slepc_modes     modes on SLEPc (Krylov-Schur, shift-invert on MUMPS) on 2 ranks:
+#                   lowest and nearest an interior shift, against the serial ARPACK;
 #   killed_rank     rank 1 of 2 killed (kill -9) mid-solve: mpirun's exit code non-zero,
 #                   its message naming the rank and the signal, -o DIR left empty;
 #   module          PETSc and MPI live in libcatena_mpi.so (src/dist/plugin.h): the
@@ -26,7 +28,7 @@
 # are resolved to 1e-6 by any solver, the round-off floor) and the mode shapes of
 # tests/models/modes/slack_node.cable (a node held by slack members: zero modes whose
 # subspace the other shapes are not unique against).
-# ctest-cost: 90
+# ctest-cost: 110
 set -u
 
 . "$(dirname "$0")/lib/common.sh"
@@ -137,6 +139,20 @@ for m in s250.8777 net elastic_support; do
 done
 grep -q "^batch: 3 models over 2 ranks" "$T/out" || WHY+=("batch: $(head -c 200 "$T/out")")
 finish batch
+
+# modes on SLEPc (Krylov-Schur, shift-invert on MUMPS) on 2 ranks: the footbridge's (beams
+# and catenary stays), the 12 lowest of a hypar net K = 24 with mass, and 8 nearest an
+# interior shift of 3 Hz; the same modes as the serial ARPACK run to 1e-8 (frequencies
+# and shapes), and the JSON's modal solver "slepc"
+MASS=0.0012 MODES=12 python3 bench/hypar_net.py 24 "" >"$T/n24.cable"
+sed 's/^modes count=12$/modes count=8 shift=3/' "$T/n24.cable" >"$T/n24s.cable"
+grep -q "^modes count=8 shift=3$" "$T/n24s.cable" || WHY+=("slepc_modes: no shifted model")
+for m in examples/structures/footbridge.cable "$T/n24.cable" "$T/n24s.cable"; do
+    serial "$m"
+    check_ranks "$m" 0 2
+    grep -q '"solver":	"slepc"' "$T/par.json" || WHY+=("slepc_modes: $m: modal solver $(grep '"solver"' "$T/par.json")")
+done
+finish slepc_modes
 
 # a rank killed mid-solve: the hypar net K = 120 (43k DOFs, seconds on 2 ranks), rank 1
 # killed (SIGKILL) once rank 0 has printed the Newton table's head; mpirun ends the job
