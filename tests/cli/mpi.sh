@@ -11,12 +11,15 @@
 #   models_1_3      a beam model and arc-length from a singular start on 1 and 3 ranks;
 #   bad_input       a malformed model on 2 ranks: one message, naming file:line, and
 #                   every rank exits 2 (mpirun's exit code is the largest);
-#   output_dir      -o DIR on 2 ranks: the result set written once, equal to the serial;
+#   output_dir      -o DIR on 2 ranks: the result set written once, equal to the serial,
+#                   and the VTU pieces result_r0.vtu, result_r1.vtu with result.pvtu
+#                   (tests/cli/lib/pvtu_check.py: ParaView's XML, the pieces = result.vtu);
 #   petsc_options   --petsc -ksp_type cg -pc_type jacobi ... and linear_solver=petsc-cg;
 #   batch           `catena batch` of three models on 2 ranks: each result.json the
 #                   serial solve's bytes;
 #   slepc_modes     modes on SLEPc (Krylov-Schur, shift-invert on MUMPS) on 2 ranks:
 #                   lowest and nearest an interior shift, against the serial ARPACK;
+#   vtu_pieces      -o DIR on 3 ranks with mode shapes: three pieces and the .pvtu;
 #   killed_rank     rank 1 of 2 killed (kill -9) mid-solve: mpirun's exit code non-zero,
 #                   its message naming the rank and the signal, -o DIR left empty;
 #   module          PETSc and MPI live in libcatena_mpi.so (src/dist/plugin.h): the
@@ -28,7 +31,7 @@
 # are resolved to 1e-6 by any solver, the round-off floor) and the mode shapes of
 # tests/models/modes/slack_node.cable (a node held by slack members: zero modes whose
 # subspace the other shapes are not unique against).
-# ctest-cost: 110
+# ctest-cost: 120
 set -u
 
 . "$(dirname "$0")/lib/common.sh"
@@ -107,7 +110,8 @@ for f in nodes.csv elements.csv; do
 done
 python3 tests/cli/lib/mpi_compare.py "$T/ser/result.json" "$T/par/result.json" 2 >"$T/cmp" 2>&1 ||
     WHY+=("output_dir: result.json: $(head -c 300 "$T/cmp")")
-[ "$(ls "$T/par" | wc -l)" = "$(ls "$T/ser" | wc -l)" ] || WHY+=("output_dir: $(ls "$T/par") against $(ls "$T/ser")")
+[ "$(ls "$T/par" | wc -l)" = "$(($(ls "$T/ser" | wc -l) + 3))" ] || WHY+=("output_dir: $(ls "$T/par") against $(ls "$T/ser") + 3 pieces")
+out=$(python3 tests/cli/lib/pvtu_check.py "$T/par" 2 "$T/par/result.vtu" 2>&1) || WHY+=("output_dir: pieces: $out")
 finish output_dir
 
 # PETSc options passed through, and the iterative solver by name
@@ -153,6 +157,13 @@ for m in examples/structures/footbridge.cable "$T/n24.cable" "$T/n24s.cable"; do
     grep -q '"solver":	"slepc"' "$T/par.json" || WHY+=("slepc_modes: $m: modal solver $(grep '"solver"' "$T/par.json")")
 done
 finish slepc_modes
+
+# VTU pieces on 3 ranks: the hypar net with its 12 mode shapes (numbered point arrays),
+# result.pvtu and result_r0..2.vtu against the run's own result.vtu (pvtu_check.py)
+"${MPIRUN[@]}" -n 3 "$BIN" solve "$T/n24.cable" -q -o "$T/pieces" >"$T/out" 2>&1 || WHY+=("vtu_pieces: exit $?: $(head -c 300 "$T/out")")
+out=$(python3 tests/cli/lib/pvtu_check.py "$T/pieces" 3 "$T/pieces/result.vtu" 2>&1) || WHY+=("vtu_pieces: $out")
+grep -q 'Name="mode_12"' "$T/pieces/result.pvtu" || WHY+=("vtu_pieces: no mode_12 in result.pvtu")
+finish vtu_pieces
 
 # a rank killed mid-solve: the hypar net K = 120 (43k DOFs, seconds on 2 ranks), rank 1
 # killed (SIGKILL) once rank 0 has printed the Newton table's head; mpirun ends the job
