@@ -59,7 +59,8 @@ static int emit(ctn_ctx *ctx, const ctn_model_args *a, const ctn_model *m, const
         return CTN_EXIT_NOCONV;
     }
     ctn_app_progress_phase(progress, "writing");
-    int rc = a->outdir && ctn_app_mpi_rank() == 0 ? ctn_write_results(ctx, a->outdir, m, s) : CTN_OK;
+    /* rank 0 writes the set; in a job of several ranks every rank its VTU piece */
+    int rc = a->outdir && (ctn_app_mpi_rank() == 0 || ctn_app_mpi_size() > 1) ? ctn_write_results(ctx, a->outdir, m, s) : CTN_OK;
     ctn_app_progress_done(progress);
     ctn_ctx_set_progress(ctx, NULL, NULL);          /* stdout may share the terminal */
     if (!rc && a->json) {

@@ -44,6 +44,7 @@ void ctn_print_modes(FILE *out, const ctn_model *m, const ctn_solution *s)
     if (ms.solver == CTN_EIGEN_ARPACK && ms.block_solves > 0)
         fprintf(out, "eigen-solver: arpack, after the block solver did not converge in %d block solves\n", ms.block_solves);
     else if (ms.solver == CTN_EIGEN_ARPACK) fprintf(out, "eigen-solver: arpack (one vector per solve)\n");
+    else if (ms.solver == CTN_EIGEN_SLEPC) fprintf(out, "eigen-solver: SLEPc Krylov-Schur, shift-invert on MUMPS\n");
     else fprintf(out, "eigen-solver: block Lanczos, blocks of %d, %d block solves\n", ms.block_size, ms.block_solves);
     fprintf(out, "modal time: %.3f s (tangent and mass %.3f s, factorization %.3f s, solves %.3f s), CPU %.3f s "
                  "(solves %.3f s)\n", ms.t_total, ms.t_assemble, ms.t_factor, ms.t_solve, ms.t_cpu, ms.t_solve_cpu);

@@ -77,9 +77,11 @@ typedef enum ctn_eigen_solver {
                                 multi-right-hand-side solve with the factor (fewer passes
                                 over the factor), full re-orthogonalization by BLAS-3 */
     CTN_EIGEN_ARPACK = 1,    /* ARPACK's implicitly restarted Lanczos, one vector per solve */
-    CTN_EIGEN_AUTO = 2       /* ARPACK below CTN_EIGEN_BLOCK_DOFS free DOFs, block Lanczos
+    CTN_EIGEN_AUTO = 2,      /* ARPACK below CTN_EIGEN_BLOCK_DOFS free DOFs, block Lanczos
                                 from there (measured: ARPACK as fast or faster on the nets
                                 up to 29k DOFs, block 1.6x faster at 478k) */
+    CTN_EIGEN_SLEPC = 3      /* reported, not asked for: SLEPc's Krylov-Schur, shift-invert
+                                on MUMPS, over the ranks of an MPI job (docs/parallel.md) */
 } ctn_eigen_solver;
 #define CTN_EIGEN_BLOCK_DOFS 100000
 

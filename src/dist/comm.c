@@ -32,7 +32,7 @@ static int serial_ghosts(void *impl, const ctn_layout *lay, double *v)
     return CTN_OK;                               /* one process owns everything */
 }
 
-static const ctn_comm_ops serial_ops = { "serial", serial_rank, serial_size, serial_allreduce, serial_ghosts, NULL };
+static const ctn_comm_ops serial_ops = { "serial", serial_rank, serial_size, serial_allreduce, serial_ghosts, NULL, NULL };
 
 const ctn_comm ctn_comm_serial = { &serial_ops, NULL };
 

@@ -15,6 +15,8 @@ typedef enum ctn_reduce_op { CTN_REDUCE_SUM = 0, CTN_REDUCE_MAX = 1, CTN_REDUCE_
 
 typedef struct ctn_layout ctn_layout;
 struct ctn_linsolve_ops;
+struct ctn_pattern;
+struct ctn_eigen_info;
 
 typedef struct ctn_comm_ops {
     const char *name;                                  /* "serial", "mpi" */
@@ -28,6 +30,13 @@ typedef struct ctn_comm_ops {
     /* the linear solvers that run over this communicator's processes (NULL-terminated;
      * NULL: none beyond the registry's, linalg/linsolve.c) */
     const struct ctn_linsolve_ops *const *solvers;
+    /* Optional (NULL: the library's eigen-solvers, linalg/eigen/eigen.h): the nev
+     * (1 <= nev < n) eigenpairs of K x = lambda M x nearest sigma, solved over this
+     * communicator's processes (K and M on the replicated pattern p, in its order):
+     * lambda ascending, *vecs a new n x (nev + 1) array (ctn_free), the first nev
+     * columns the eigenvectors, the same on every process. The MPI module's: SLEPc. */
+    int (*eigen)(void *impl, ctn_ctx *ctx, const struct ctn_pattern *p, const double *Kx, const double *Mx,
+                 int nev, double sigma, double *lambda, double **vecs, struct ctn_eigen_info *info);
 } ctn_comm_ops;
 
 typedef struct ctn_comm {

@@ -28,7 +28,7 @@ static void put_modal(ctn_jw *j, const ctn_modal_summary *ms)
     ctn_jw_number(j, "factorizations", ms->factorizations);
     ctn_jw_number(j, "solves", ms->solves);
     ctn_jw_number(j, "max_residual", ms->max_residual);
-    ctn_jw_string(j, "solver", ms->solver == CTN_EIGEN_ARPACK ? "arpack" : "block");
+    ctn_jw_string(j, "solver", ms->solver == CTN_EIGEN_ARPACK ? "arpack" : ms->solver == CTN_EIGEN_SLEPC ? "slepc" : "block");
     ctn_jw_number(j, "block_size", ms->block_size);
     ctn_jw_number(j, "block_solves", ms->block_solves);
     ctn_jw_number(j, "max_floor", ms->max_floor);

@@ -7,9 +7,13 @@
  * sag-tension chart; a dynamics analysis's VTU series (dynamics/frame_K.vtu,
  * dynamics.pvd) when it kept frames. Each is streamed by its writer (io/writer.h) into a staged
  * temporary (io/atomic.h), synced; only when all are staged is any renamed onto its
- * target. */
+ * target. In an MPI job of N > 1 ranks (the context's communicator) every rank also
+ * writes its VTU piece, result_rR.vtu, and rank 0 result.pvtu (io/vtu.h) beside the set;
+ * the ranks agree (a reduction) that all staged before any renames, so a failure on one
+ * leaves no file of the set on any. */
 #include "io/atomic.h"
-#include "io/writer.h"
+#include "io/vtu.h"
+#include "dist/comm.h"
 #include "catena/analysis.h"
 #include "catena/io.h"
 #include "core/ctx.h"
@@ -130,6 +134,44 @@ static job *plan_frames(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s,
     return j;
 }
 
+/* The files of this rank: rank 0 the set, and in a job of several ranks each rank its
+ * VTU piece and rank 0 result.pvtu (both of the last step). */
+static job *plan_rank(ctn_ctx *ctx, const ctn_model *m, const ctn_solution *s, int rank, int size, size_t *count)
+{
+    size_t n0 = 0, extra = rank == 0 ? 2 : 1, last = ctn_solution_step_count(s) - 1;
+    job *j0 = rank == 0 ? plan_frames(ctx, m, s, &n0) : NULL;
+    *count = n0;
+    if (size == 1 || (rank == 0 && !j0)) return j0;
+    job *j = ctn_calloc(ctx, n0 + extra, sizeof *j);
+    if (j && n0) memcpy(j, j0, n0 * sizeof *j);
+    ctn_free(j0);
+    if (!j) return NULL;
+    j[n0].ops = &ctn_writer_vtu_piece;
+    j[n0].step = last;
+    ctn_vtu_piece_name(j[n0].name, rank);
+    if (rank == 0) {
+        j[n0 + 1].ops = &ctn_writer_pvtu;
+        j[n0 + 1].step = last;
+        snprintf(j[n0 + 1].name, sizeof j[n0 + 1].name, "%s", ctn_writer_pvtu.name);
+    }
+    *count = n0 + extra;
+    return j;
+}
+
+/* rc, or an error when another rank of the job failed (every rank calls it: a
+ * reduction of the failures). */
+static int agree(ctn_ctx *ctx, const char *dir, int rc)
+{
+    const ctn_comm *c = ctn_ctx_comm(ctx);
+    double failed = rc != CTN_OK;
+    if (ctn_comm_size(c) == 1) return rc;
+    if (c->ops->allreduce(c->impl, &failed, 1, CTN_REDUCE_MAX) && !rc)
+        return ctn_error(ctx, CTN_ERR_IO, "%s: the ranks could not agree on the result set", dir);
+    if (!rc && failed > 0)
+        rc = ctn_error(ctx, CTN_ERR_IO, "%s: another rank could not stage its part of the result set", dir);
+    return rc;
+}
+
 static int make_dir(ctn_ctx *ctx, const char *path)
 {
     if (mkdir(path, 0755) && errno != EEXIST)
@@ -243,11 +285,12 @@ static int stage_all(ctn_ctx *ctx, const char *dir, const job *jobs, size_t n, c
 /* Every file is staged before any replaces an older one, so a failure leaves the
  * previous set (or nothing) in place, never a mix. */
 static int write_set(ctn_ctx *ctx, const char *dir, const job *jobs, size_t n, const ctn_model *m,
-                     const ctn_solution *s, ctn_atomic_file *f)
+                     const ctn_solution *s, ctn_atomic_file *f, int rc)
 {
-    int rc = check_targets(ctx, dir, jobs, n);
+    if (!rc) rc = check_targets(ctx, dir, jobs, n);
     for (size_t i = 0; i < n; i++) f[i] = (ctn_atomic_file)CTN_ATOMIC_FILE_INIT;
     if (!rc) rc = stage_all(ctx, dir, jobs, n, m, s, f);
+    rc = agree(ctx, dir, rc);
     for (size_t i = 0; i < n; i++) {
         if (!rc) rc = ctn_atomic_commit(&f[i]);
         else ctn_atomic_abort(&f[i]);
@@ -269,18 +312,26 @@ int ctn_write_results(ctn_ctx *ctx, const char *dir, const ctn_model *m,
                       const ctn_solution *s)
 {
     if (!dir || !m || !s) return ctn_error(ctx, CTN_ERR_INVALID, "ctn_write_results: bad arguments");
+    const ctn_comm *c = ctn_ctx_comm(ctx);
+    int rank = ctn_comm_rank(c), size = ctn_comm_size(c);
     int rc = ctn_result_check(ctx, m, s);
-    if (rc) return rc;
-    if ((rc = make_dir(ctx, dir)) || (rc = make_case_dirs(ctx, dir, m, s))) return rc;
+    if (rc && size == 1) return rc;
+    if (!rc) rc = make_dir(ctx, dir);
+    if (!rc && rank == 0) rc = make_case_dirs(ctx, dir, m, s);
     char frames[4096];
     size_t n = 0, nf = ctn_solution_frame_count(s);
-    if (nf && !(rc = target(ctx, dir, CTN_FRAMES_DIR, frames, sizeof frames))) rc = make_dir(ctx, frames);
-    if (rc) return rc;
-    job *jobs = plan_frames(ctx, m, s, &n);
+    if (!rc && rank == 0 && nf && !(rc = target(ctx, dir, CTN_FRAMES_DIR, frames, sizeof frames)))
+        rc = make_dir(ctx, frames);
+    job *jobs = rc ? NULL : plan_rank(ctx, m, s, rank, size, &n);
     ctn_atomic_file *f = jobs ? ctn_calloc(ctx, n, sizeof *f) : NULL;
-    rc = f ? write_set(ctx, dir, jobs, n, m, s, f) : CTN_ERR_NOMEM;
-    if (!rc && ctn_solution_step_count(s) == 1) rc = remove_stale(ctx, dir);
-    if (!rc) rc = ctn_frames_remove_stale(ctx, dir, nf);
+    if (!rc && !f) rc = CTN_ERR_NOMEM;
+    if (size == 1 && rc) {
+        ctn_free(jobs);
+        return rc;
+    }
+    rc = write_set(ctx, dir, jobs, f ? n : 0, m, s, f, rc);      /* every rank: agree() */
+    if (!rc && rank == 0 && ctn_solution_step_count(s) == 1) rc = remove_stale(ctx, dir);
+    if (!rc && rank == 0) rc = ctn_frames_remove_stale(ctx, dir, nf);
     ctn_free(f);
     ctn_free(jobs);
     return rc;

@@ -16,7 +16,7 @@
  * components, and a function giving the values of one point or cell. An entry may stand
  * for no array (a value the model does not know) or for several, numbered NAME_1,
  * NAME_2, ... (e.g. one array per vibration mode). To add an array, add one entry. */
-#include "io/writer.h"
+#include "io/vtu.h"
 #include "catena/analysis.h"
 
 #include <stdio.h>
@@ -28,6 +28,7 @@ typedef struct vtu_data {
     size_t k;                       /* the step (0-based) */
     ctn_step_result st;             /* its displacements, reactions, load factor */
     const double *base;             /* a case's installed state's displacements, or NULL */
+    const ctn_vtu_subset *sub;      /* the piece written (NULL: every node and element) */
 } vtu_data;
 
 typedef enum vtu_where { VTU_POINT, VTU_CELL } vtu_where;
@@ -200,13 +201,20 @@ static void array_open(ctn_wbuf *b, const char *type, const char *name, size_t j
 static void array_close(ctn_wbuf *b) { ctn_wbuf_puts(b, "        </DataArray>\n"); }
 
 /* Array j of field f over its n points or cells, one tuple per line. */
+/* The model's index of point or cell i of the piece written. */
+static size_t global_index(const vtu_data *d, vtu_where where, size_t i)
+{
+    if (!d->sub) return i;
+    return where == VTU_POINT ? d->sub->points[i] : d->sub->e0 + i;
+}
+
 static int put_array(ctn_writer *w, const vtu_data *d, const vtu_field *f, size_t j, size_t n)
 {
     ctn_wbuf *b = &w->out;
     array_open(b, f->integer ? "Int32" : "Float64", f->name, j, f->numbered, f->ncomp);
     for (size_t i = 0; i < n && !b->err; i++) {
         double v[3];
-        if (f->get(d, j, i, v)) return ctn_writer_mismatch(w);
+        if (f->get(d, j, global_index(d, f->where, i), v)) return ctn_writer_mismatch(w);
         for (int c = 0; c < f->ncomp; c++) {
             if (c) ctn_wbuf_putc(b, ' ');
             if (f->integer) ctn_wbuf_int(b, (long long)v[c]);
@@ -235,18 +243,19 @@ static int put_data(ctn_writer *w, const vtu_data *d, vtu_where where, size_t n)
     return w->out.err;
 }
 
-/* <Points>: the reference coordinates, plus base (a case's installed displacements)
+/* <Points>: the reference coordinates, plus d->base (a case's installed displacements)
  * unless NULL. */
-int ctn_vtu_put_points(ctn_writer *w, const double *base, size_t nn)
+static int put_points(ctn_writer *w, const vtu_data *d, size_t nn)
 {
     ctn_wbuf *b = &w->out;
     ctn_wbuf_puts(b, "      <Points>\n");
     array_open(b, "Float64", "coordinates", 0, 0, 3);
     for (size_t i = 0; i < nn && !b->err; i++) {
         ctn_node_info p;
-        if (ctn_model_node(w->m, i, &p)) return ctn_writer_mismatch(w);
+        size_t g = global_index(d, VTU_POINT, i);
+        if (ctn_model_node(w->m, g, &p)) return ctn_writer_mismatch(w);
         for (int c = 0; c < 3; c++) {
-            ctn_wbuf_g17(b, p.X[c] + (base ? base[3 * i + (size_t)c] : 0.0));
+            ctn_wbuf_g17(b, p.X[c] + (d->base ? d->base[3 * g + (size_t)c] : 0.0));
             ctn_wbuf_putc(b, c < 2 ? ' ' : '\n');
         }
     }
@@ -258,30 +267,32 @@ int ctn_vtu_put_points(ctn_writer *w, const double *base, size_t nn)
 /* <Cells>: connectivity (node indices), offsets (the end of each cell's run) and types
  * (3 line, 4 polyline). A curved element drawn by sample points would add its points
  * after the nodes and be a polyline through them. */
-int ctn_vtu_put_cells(ctn_writer *w, size_t ne)
+static int put_cells(ctn_writer *w, const vtu_data *d, size_t ne)
 {
     ctn_wbuf *b = &w->out;
     ctn_element_info e;
     long long end = 0;
+    size_t e0 = d->sub ? d->sub->e0 : 0;
     ctn_wbuf_puts(b, "      <Cells>\n");
     array_open(b, "Int64", "connectivity", 0, 0, 1);
     for (size_t i = 0; i < ne && !b->err; i++) {
-        if (ctn_model_element(w->m, i, &e)) return ctn_writer_mismatch(w);
-        for (int k = 0; k < e.nnodes; k++) put_int(b, e.nodes[k], k + 1 < e.nnodes ? ' ' : '\n');
+        if (ctn_model_element(w->m, e0 + i, &e)) return ctn_writer_mismatch(w);
+        for (int k = 0; k < e.nnodes; k++)
+            put_int(b, d->sub ? (long long)d->sub->local[e.nodes[k]] : (long long)e.nodes[k], k + 1 < e.nnodes ? ' ' : '\n');
     }
     array_close(b);
     array_open(b, "Int64", "offsets", 0, 0, 1);
-    for (size_t i = 0; i < ne && !b->err && !ctn_model_element(w->m, i, &e); i++) put_int(b, end += e.nnodes, '\n');
+    for (size_t i = 0; i < ne && !b->err && !ctn_model_element(w->m, e0 + i, &e); i++) put_int(b, end += e.nnodes, '\n');
     array_close(b);
     array_open(b, "UInt8", "types", 0, 0, 1);
-    for (size_t i = 0; i < ne && !b->err && !ctn_model_element(w->m, i, &e); i++) put_int(b, e.nnodes == 2 ? 3 : 4, '\n');
+    for (size_t i = 0; i < ne && !b->err && !ctn_model_element(w->m, e0 + i, &e); i++) put_int(b, e.nnodes == 2 ? 3 : 4, '\n');
     array_close(b);
     ctn_wbuf_puts(b, "      </Cells>\n");
     return b->err;
 }
 
 /* begin: open the output and print text; end: print text. */
-static int begin_with(void *p, const ctn_model *m, ctn_sink *sink, const char *text)
+int ctn_vtu_begin_with(void *p, const ctn_model *m, ctn_sink *sink, const char *text)
 {
     ctn_writer *w = p;
     int rc = ctn_writer_open(w, m, sink);
@@ -289,26 +300,38 @@ static int begin_with(void *p, const ctn_model *m, ctn_sink *sink, const char *t
     return rc ? rc : w->out.err;
 }
 
-static int end_with(void *p, const char *text)
+int ctn_vtu_end_with(void *p, const char *text)
 {
     ctn_writer *w = p;
     ctn_wbuf_puts(&w->out, text);
     return w->out.err;
 }
 
-static int vtu_begin(void *p, const ctn_model *m, ctn_sink *sink)
+int ctn_vtu_begin(void *p, const ctn_model *m, ctn_sink *sink)
 {
-    return begin_with(p, m, sink, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
+    return ctn_vtu_begin_with(p, m, sink, "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" "
                                   "byte_order=\"LittleEndian\" header_type=\"UInt64\">\n  <UnstructuredGrid>\n");
 }
 
-/* The piece of the writer's step: field data, point data, cell data, points, cells. */
-static int vtu_step(void *p, const ctn_solution *s, size_t k)
+int ctn_vtu_put_points(ctn_writer *w, const double *base, size_t nn)
 {
-    ctn_writer *w = p;
-    if (k != w->step) return CTN_OK;
-    vtu_data d = { w->m, s, k, { 0 }, NULL };
-    size_t nn = ctn_model_node_count(w->m), ne = ctn_model_element_count(w->m);
+    vtu_data d = { w->m, NULL, 0, { 0 }, base, NULL };
+    return put_points(w, &d, nn);
+}
+
+int ctn_vtu_put_cells(ctn_writer *w, size_t ne)
+{
+    vtu_data d = { w->m, NULL, 0, { 0 }, NULL, NULL };
+    return put_cells(w, &d, ne);
+}
+
+/* The piece of step k: field data, point data, cell data, points, cells; sub NULL: the
+ * whole model. */
+int ctn_vtu_put_piece(ctn_writer *w, const ctn_solution *s, size_t k, const ctn_vtu_subset *sub)
+{
+    vtu_data d = { w->m, s, k, { 0 }, NULL, sub };
+    size_t nn = sub ? sub->npoints : ctn_model_node_count(w->m);
+    size_t ne = sub ? sub->e1 - sub->e0 : ctn_model_element_count(w->m);
     ctn_step_result installed;
     if (ctn_solution_step(s, k, &d.st)) return ctn_writer_mismatch(w);
     if (w->base && ctn_solution_step(w->base, w->base_step, &installed)) return ctn_writer_mismatch(w);
@@ -324,16 +347,52 @@ static int vtu_step(void *p, const ctn_solution *s, size_t k)
     ctn_wbuf_puts(b, "\">\n");
     int rc = put_data(w, &d, VTU_POINT, nn);
     if (!rc) rc = put_data(w, &d, VTU_CELL, ne);
-    if (!rc) rc = ctn_vtu_put_points(w, d.base, nn);
-    if (!rc) rc = ctn_vtu_put_cells(w, ne);
+    if (!rc) rc = put_points(w, &d, nn);
+    if (!rc) rc = put_cells(w, &d, ne);
     ctn_wbuf_puts(b, "    </Piece>\n");
     return rc ? rc : b->err;
 }
 
-static int vtu_end(void *p) { return end_with(p, "  </UnstructuredGrid>\n</VTKFile>\n"); }
+/* <PPointData> and <PCellData> of a .pvtu: the arrays a piece of step k holds. */
+int ctn_vtu_put_parrays(ctn_writer *w, const ctn_solution *s, size_t k)
+{
+    vtu_data d = { w->m, s, k, { 0 }, NULL, NULL };
+    ctn_wbuf *b = &w->out;
+    for (int where = VTU_POINT; where <= VTU_CELL; where++) {
+        ctn_wbuf_puts(b, where == VTU_POINT ? "    <PPointData>\n" : "    <PCellData>\n");
+        for (size_t f = 0; f < NFIELDS; f++) {
+            if ((int)fields[f].where != where) continue;
+            size_t count = fields[f].count ? fields[f].count(&d) : 1;
+            if (!fields[f].numbered && count > 1) count = 1;
+            for (size_t j = 0; j < count; j++) {
+                ctn_wbuf_puts(b, "      <PDataArray type=\"");
+                ctn_wbuf_puts(b, fields[f].integer ? "Int32" : "Float64");
+                ctn_wbuf_puts(b, "\" Name=\"");
+                ctn_wbuf_puts(b, fields[f].name);
+                if (fields[f].numbered) {
+                    ctn_wbuf_putc(b, '_');
+                    ctn_wbuf_int(b, (long long)j + 1);
+                }
+                ctn_wbuf_puts(b, "\" NumberOfComponents=\"");
+                ctn_wbuf_int(b, fields[f].ncomp);
+                ctn_wbuf_puts(b, "\"/>\n");
+            }
+        }
+        ctn_wbuf_puts(b, where == VTU_POINT ? "    </PPointData>\n" : "    </PCellData>\n");
+    }
+    return b->err;
+}
 
-const ctn_writer_ops ctn_writer_vtu = { .name = "result.vtu", .size = sizeof(ctn_writer), .begin = vtu_begin,
-                                        .step = vtu_step, .end = vtu_end };
+static int vtu_step(void *p, const ctn_solution *s, size_t k)
+{
+    ctn_writer *w = p;
+    return k == w->step ? ctn_vtu_put_piece(w, s, k, NULL) : CTN_OK;
+}
+
+int ctn_vtu_end(void *p) { return ctn_vtu_end_with(p, "  </UnstructuredGrid>\n</VTKFile>\n"); }
+
+const ctn_writer_ops ctn_writer_vtu = { .name = "result.vtu", .size = sizeof(ctn_writer), .begin = ctn_vtu_begin,
+                                        .step = vtu_step, .end = ctn_vtu_end };
 
 /* ---- result.pvd: the collection of the steps' files, for ParaView's time slider ---- */
 
@@ -346,7 +405,7 @@ void ctn_vtu_step_name(char *name, size_t k, size_t n)
 
 static int pvd_begin(void *p, const ctn_model *m, ctn_sink *sink)
 {
-    return begin_with(p, m, sink, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" "
+    return ctn_vtu_begin_with(p, m, sink, "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" "
                                   "byte_order=\"LittleEndian\">\n  <Collection>\n");
 }
 
@@ -364,7 +423,7 @@ static int pvd_step(void *p, const ctn_solution *s, size_t k)
     return w->out.err;
 }
 
-static int pvd_end(void *p) { return end_with(p, "  </Collection>\n</VTKFile>\n"); }
+static int pvd_end(void *p) { return ctn_vtu_end_with(p, "  </Collection>\n</VTKFile>\n"); }
 
 const ctn_writer_ops ctn_writer_pvd = { .name = "result.pvd", .size = sizeof(ctn_writer), .begin = pvd_begin,
                                         .step = pvd_step, .end = pvd_end };

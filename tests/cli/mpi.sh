@@ -11,10 +11,17 @@
 #   models_1_3      a beam model and arc-length from a singular start on 1 and 3 ranks;
 #   bad_input       a malformed model on 2 ranks: one message, naming file:line, and
 #                   every rank exits 2 (mpirun's exit code is the largest);
-#   output_dir      -o DIR on 2 ranks: the result set written once, equal to the serial;
+#   output_dir      -o DIR on 2 ranks: the result set written once, equal to the serial,
+#                   and the VTU pieces result_r0.vtu, result_r1.vtu with result.pvtu
+#                   (tests/cli/lib/pvtu_check.py: ParaView's XML, the pieces = result.vtu);
 #   petsc_options   --petsc -ksp_type cg -pc_type jacobi ... and linear_solver=petsc-cg;
 #   batch           `catena batch` of three models on 2 ranks: each result.json the
 #                   serial solve's bytes;
+#   slepc_modes     modes on SLEPc (Krylov-Schur, shift-invert on MUMPS) on 2 and 3 ranks:
+#                   lowest and nearest an interior shift, against the serial ARPACK;
+#   vtu_pieces      -o DIR on 3 ranks with mode shapes: three pieces and the .pvtu;
+#   killed_rank     rank 1 of 2 killed (kill -9) mid-solve: mpirun's exit code non-zero,
+#                   its message naming the rank and the signal, -o DIR left empty;
 #   module          PETSc and MPI live in libcatena_mpi.so (src/dist/plugin.h): the
 #                   command maps none of their libraries, a `petsc` solver asked for
 #                   outside an MPI job is refused naming mpirun, and the module found
@@ -24,7 +31,7 @@
 # are resolved to 1e-6 by any solver, the round-off floor) and the mode shapes of
 # tests/models/modes/slack_node.cable (a node held by slack members: zero modes whose
 # subspace the other shapes are not unique against).
-# ctest-cost: 90
+# ctest-cost: 120
 set -u
 
 . "$(dirname "$0")/lib/common.sh"
@@ -104,7 +111,8 @@ for f in nodes.csv elements.csv; do
 done
 python3 tests/cli/lib/mpi_compare.py "$T/ser/result.json" "$T/par/result.json" 2 >"$T/cmp" 2>&1 ||
     WHY+=("output_dir: result.json: $(head -c 300 "$T/cmp")")
-[ "$(ls "$T/par" | wc -l)" = "$(ls "$T/ser" | wc -l)" ] || WHY+=("output_dir: $(ls "$T/par") against $(ls "$T/ser")")
+[ "$(ls "$T/par" | wc -l)" = "$(($(ls "$T/ser" | wc -l) + 3))" ] || WHY+=("output_dir: $(ls "$T/par") against $(ls "$T/ser") + 3 pieces")
+out=$(python3 tests/cli/lib/pvtu_check.py "$T/par" 2 "$T/par/result.vtu" 2>&1) || WHY+=("output_dir: pieces: $out")
 finish output_dir
 
 # PETSc options passed through, and the iterative solver by name
@@ -136,6 +144,63 @@ for m in s250.8777 net elastic_support; do
 done
 grep -q "^batch: 3 models over 2 ranks" "$T/out" || WHY+=("batch: $(head -c 200 "$T/out")")
 finish batch
+
+# modes on SLEPc (Krylov-Schur, shift-invert on MUMPS): the footbridge's (beams and
+# catenary stays) and 8 nearest an interior shift of 3 Hz of a hypar net K = 24 with mass
+# on 2 ranks, the 12 lowest of that net on 3; the same modes as the serial ARPACK run to 1e-8 (frequencies
+# and shapes), and the JSON's modal solver "slepc"
+MASS=0.0012 MODES=12 python3 bench/hypar_net.py 24 "" >"$T/n24.cable"
+sed 's/^modes count=12$/modes count=8 shift=3/' "$T/n24.cable" >"$T/n24s.cable"
+grep -q "^modes count=8 shift=3$" "$T/n24s.cable" || WHY+=("slepc_modes: no shifted model")
+for m in examples/structures/footbridge.cable "$T/n24s.cable"; do
+    serial "$m"
+    check_ranks "$m" 0 2
+    grep -q '"solver":	"slepc"' "$T/par.json" || WHY+=("slepc_modes: $m: modal solver $(grep '"solver"' "$T/par.json")")
+done
+# the 12 lowest on 3 ranks, in the same run as vtu_pieces (-o with --json)
+serial "$T/n24.cable"
+"${MPIRUN[@]}" -n 3 "$BIN" solve "$T/n24.cable" --json -o "$T/pieces" >"$T/par.json" 2>"$T/par.err" ||
+    WHY+=("slepc_modes: n24 on 3 ranks: exit $?: $(head -c 300 "$T/par.err")")
+out=$(python3 tests/cli/lib/mpi_compare.py "$T/serial.json" "$T/par.json" 3 2>&1) || WHY+=("slepc_modes: n24 on 3 ranks: $out")
+grep -q '"solver":	"slepc"' "$T/par.json" || WHY+=("slepc_modes: n24: modal solver $(grep '"solver"' "$T/par.json")")
+finish slepc_modes
+
+# VTU pieces on 3 ranks (the run above): the hypar net with its 12 mode shapes (numbered
+# point arrays), result.pvtu and result_r0..2.vtu against the run's own result.vtu
+out=$(python3 tests/cli/lib/pvtu_check.py "$T/pieces" 3 "$T/pieces/result.vtu" 2>&1) || WHY+=("vtu_pieces: $out")
+grep -q 'Name="mode_12"' "$T/pieces/result.pvtu" || WHY+=("vtu_pieces: no mode_12 in result.pvtu")
+finish vtu_pieces
+
+# a rank killed mid-solve: the hypar net K = 120 (43k DOFs, seconds on 2 ranks), rank 1
+# killed (SIGKILL) once rank 0 has printed the Newton table's head; mpirun ends the job
+# with a non-zero code naming the rank and the signal; -o DIR holds nothing (no result
+# set, no staged temporary: rank 0 writes only after the solve)
+python3 bench/hypar_net.py 120 --issue10 >"$T/net120.cable"
+"${MPIRUN[@]}" -n 2 "$BIN" solve "$T/net120.cable" -o "$T/killed" >"$T/k.out" 2>"$T/k.err" &
+mp=$!
+victim=
+for _ in $(seq 600); do                       # up to 60 s for the solve to start
+    grep -q "^Newton" "$T/k.out" 2>/dev/null && break
+    kill -0 "$mp" 2>/dev/null || break
+    sleep 0.1
+done
+for p in $(pgrep -P "$mp" 2>/dev/null); do
+    tr '\0' '\n' <"/proc/$p/environ" 2>/dev/null | grep -qx OMPI_COMM_WORLD_RANK=1 && victim=$p
+done
+if [ -n "$victim" ] && grep -q "^Newton" "$T/k.out"; then
+    kill -9 "$victim"
+    wait "$mp"
+    code=$?
+    [ "$code" != 0 ] || WHY+=("killed_rank: mpirun exited 0")
+    grep -q "rank 1 .*exited on signal 9" "$T/k.err" || WHY+=("killed_rank: no message naming rank 1 and signal 9: $(head -c 300 "$T/k.err")")
+    grep -q "^converged" "$T/k.out" && WHY+=("killed_rank: the solve finished before the kill (too small a model)")
+    [ -z "$(ls -A "$T/killed" 2>/dev/null)" ] || WHY+=("killed_rank: -o DIR holds $(ls -A "$T/killed" | head -5 | tr '\n' ' ')")
+else
+    kill "$mp" 2>/dev/null
+    wait "$mp"
+    WHY+=("killed_rank: the solve did not start (rank 1: '${victim}'): $(head -c 300 "$T/k.err")")
+fi
+finish killed_rank
 
 # the MPI module: loaded only for a job
 libs=$(ldd "$BIN" 2>/dev/null)

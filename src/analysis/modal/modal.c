@@ -6,6 +6,7 @@
 #include "linalg/pcg.h"
 #include "analysis/analysis.h"
 #include "analysis/modal/modal.h"
+#include "dist/comm.h"
 #include "problem/la_options.h"
 
 #include <math.h>
@@ -238,6 +239,47 @@ static void complement(ctn_modal *md, double *V, int have, double *lambda)
     lambda[have] = ctn_layout_dot(&md->p->eq, x, Mx);
 }
 
+/* The context's communicator solves the eigenproblem itself (SLEPc under MPI:
+ * dist/comm.h's eigen op) when it has an eigen-solver and fewer modes than DOFs are
+ * asked for (a Krylov space of n vectors holds no more than n - 1 restarts' worth). */
+static int on_comm(const ctn_modal *md)
+{
+    return ctn_ctx_comm(md->p->ctx)->ops->eigen && (size_t)md->opt->count < md->p->ndof;
+}
+
+/* The shift of the communicator's solver: as factor_shifted's (0 where the stability
+ * check found K_T positive definite at this state), the factorization its own. */
+static void comm_shift(ctn_modal *md, const ctn_solution *s)
+{
+    const ctn_problem *p = md->p;
+    if (md->opt->shift == 0 && p->factored_at == s && p->ls && !ctn_linsolve_type(p->ls)->indefinite) md->sigma = 0;
+}
+
+/* The eigenpairs by the communicator's solver, each vector scaled to phi' M phi = 1. */
+static int eigenpairs_comm(ctn_modal *md, double *lambda, double **V)
+{
+    ctn_problem *p = md->p;
+    const ctn_comm *c = ctn_ctx_comm(p->ctx);
+    ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
+    ctn_eigen_info info;
+    memset(&info, 0, sizeof info);
+    double t0 = ctn_clock(), c0 = ctn_cpu_clock();
+    int rc = c->ops->eigen(c->impl, p->ctx, &pat, p->Kx, md->Mx, md->opt->count, md->sigma, lambda, V, &info);
+    md->sum.solver = CTN_EIGEN_SLEPC;
+    md->sum.factorizations = 1;
+    md->sum.solves = info.ops;
+    md->sum.lanczos_restarts = info.restarts;
+    md->sum.t_solve += ctn_clock() - t0;
+    md->sum.t_solve_cpu += ctn_cpu_clock() - c0;
+    for (int k = 0; !rc && k < md->opt->count; k++) {
+        double *v = *V + p->ndof * (size_t)k;
+        ctn_modal_mass(md, v, md->w0);
+        double nrm = sqrt(ctn_layout_dot(&p->eq, v, md->w0));
+        for (size_t i = 0; nrm > 0 && i < p->ndof; i++) v[i] /= nrm;
+    }
+    return rc;
+}
+
 /* The eigenpairs: V (n x ncv, the first count columns the modes), lambda ascending.
  * ARPACK finds at most n - 1 (the last one is then the complement); block Lanczos all. */
 static int eigenpairs(ctn_modal *md, double *lambda, double **V)
@@ -337,8 +379,13 @@ int ctn_problem_modes(ctn_problem *p, ctn_solution *s, const ctn_modal_options *
     ctn_modes *res = NULL;
     int rc = modal_alloc(&md);
     if (!rc) rc = prepare(&md, s);
-    if (!rc) rc = factor_shifted(&md, s);
-    if (!rc) rc = eigenpairs(&md, md.lambda, &V);
+    if (!rc && on_comm(&md)) {
+        comm_shift(&md, s);
+        rc = eigenpairs_comm(&md, md.lambda, &V);
+    } else {
+        if (!rc) rc = factor_shifted(&md, s);
+        if (!rc) rc = eigenpairs(&md, md.lambda, &V);
+    }
     if (!rc && !(res = ctn_modes_create(p->ctx, (size_t)opt->count, p->m->nodes.n))) rc = CTN_ERR_NOMEM;
     if (!rc) {
         md.sum.sigma = md.sigma;

@@ -7,6 +7,9 @@
 
 #include "core/ctx.h"
 #include "plugin/mpi/petsc/petsc.h"
+#ifdef CTN_HAVE_SLEPC
+#include "plugin/mpi/slepc/slepc_eigen.h"
+#endif
 
 #include <math.h>
 
@@ -67,7 +70,19 @@ static const ctn_linsolve_ops *const mpi_solvers[] = {
     &ctn_petsc_mumps_ops, &ctn_petsc_ldl_ops, &ctn_petsc_cg_ops, &ctn_petsc_inertia_ops, NULL,
 };
 
-const ctn_comm_ops ctn_comm_mpi_ops = { "mpi", mpi_rank, mpi_size, mpi_allreduce, mpi_ghosts, mpi_solvers };
+#ifdef CTN_HAVE_SLEPC
+/* the modal analysis's eigenproblem: SLEPc over this communicator's processes */
+static int mpi_eigen(void *impl, ctn_ctx *ctx, const ctn_pattern *p, const double *Kx, const double *Mx, int nev,
+                     double sigma, double *lambda, double **vecs, ctn_eigen_info *info)
+{
+    return ctn_slepc_eigen(((mpi_comm *)impl)->comm, ctx, p, Kx, Mx, nev, sigma, lambda, vecs, info);
+}
+#define CTN_MPI_EIGEN mpi_eigen
+#else
+#define CTN_MPI_EIGEN NULL
+#endif
+
+const ctn_comm_ops ctn_comm_mpi_ops = { "mpi", mpi_rank, mpi_size, mpi_allreduce, mpi_ghosts, mpi_solvers, CTN_MPI_EIGEN };
 
 MPI_Comm ctn_comm_mpi_handle(const ctn_comm *c)
 {

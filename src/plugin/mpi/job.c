@@ -5,12 +5,19 @@
 
 #include <petscsys.h>
 #include <stdio.h>
+#ifdef CTN_HAVE_SLEPC
+#include <slepcsys.h>
+#endif
 
 int ctn_mpi_job_init(int argc, char **argv, char *msg, size_t size)
 {
     PetscOptionsSetValue(NULL, "-no_signal_handler", NULL);
     PetscOptionsSetValue(NULL, "-options_left", "0");
+#ifdef CTN_HAVE_SLEPC
+    if (SlepcInitialize(&argc, &argv, NULL, NULL)) {     /* PETSc's too */
+#else
     if (PetscInitialize(&argc, &argv, NULL, NULL)) {
+#endif
         snprintf(msg, size, "PETSc could not be initialised");
         return CTN_ERR_IO;
     }
@@ -20,6 +27,10 @@ int ctn_mpi_job_init(int argc, char **argv, char *msg, size_t size)
 void ctn_mpi_job_finalize(void)
 {
     PetscBool init = PETSC_FALSE;
+#ifdef CTN_HAVE_SLEPC
+    SlepcInitialized(&init);
+    if (init) SlepcFinalize();                           /* PETSc's too */
+#endif
     PetscInitialized(&init);
     if (init) PetscFinalize();
 }

@@ -20,7 +20,9 @@ HOW = {"iterations", "residual_history", "increment_history", "factorizations", 
        "reused_factorizations", "ordering", "factor_nonzeros", "factor_flops", "blas", "threads",
        "solve_threads", "ranks", "linear_solver", "iteration_log",
        "residual", "max_residual",   # an eigenpair's residual: round-off of its solver
-       "worst_element"}              # the first of equal utilisations (symmetric nets)
+       "worst_element",              # the first of equal utilisations (symmetric nets)
+       "solver", "lanczos_restarts", "block_size", "block_solves", "max_floor",
+       "reused_factor"}              # the modal analysis's eigen-solver (SLEPc under MPI)
 TOL = 1e-10
 MODE_TOL = 1e-8
 
