@@ -47,15 +47,6 @@ def sanitized():
     return re.search(r"^CTN_(SANITIZE|FUZZ):BOOL=ON", cache, re.M) is not None
 
 
-def suitesparse_include():
-    """CHOLMOD's header directory as CMake found it (SuiteSparse_config.h: use_cli_heap)."""
-    try:
-        m = re.search(r"^CHOLMOD_INCLUDE_DIR:PATH=(.*)$", (BUILD / "CMakeCache.txt").read_text(), re.M)
-    except OSError:
-        m = None
-    return m.group(1) if m else "/usr/include/suitesparse"
-
-
 if not LIB.exists():
     raise SystemExit(f"catena: {LIB} not found: build the library first (`make` in {ROOT}), "
                      "or set CATENA_BUILD to the CMake build directory")
@@ -68,7 +59,7 @@ HEADERS = [str(p) for p in (ROOT / "include").rglob("*.h")] + [str(p) for p in (
 ext = Extension(
     "catena._catena",
     sources=SOURCES,
-    include_dirs=[str(ROOT / "include"), str(BUILD / "include"), suitesparse_include()],
+    include_dirs=[str(ROOT / "include"), str(BUILD / "include")],
     extra_objects=[str(LIB)],
     extra_compile_args=["-std=c11", "-Wall", "-Wextra", "-Werror", "-Wno-missing-field-initializers",
                         "-Wno-cast-function-type"],

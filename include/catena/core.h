@@ -111,6 +111,15 @@ long ctn_ctx_alloc_count(const ctn_ctx *ctx);
  * command does; the library never changes a process-wide allocator). */
 void ctn_mem_huge(void *p, size_t bytes);
 
+/* The catena command's memory settings, for a program that asks for them (the library
+ * never calls this itself): glibc's heap for every block and never trimmed (mallopt
+ * M_MMAP_MAX 0, M_TRIM_THRESHOLD -1), SuiteSparse's allocator advised for transparent
+ * huge pages, and the heap's address range reserved once and advised (not under
+ * AddressSanitizer or valgrind). PROCESS-WIDE and permanent: every module of the process
+ * is affected and nothing undoes it. 1 if the settings were applied, 0 where the
+ * platform has none (nothing changed). */
+int ctn_process_heap(void);
+
 CTN_API_END
 #ifdef __cplusplus
 }
