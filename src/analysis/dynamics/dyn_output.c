@@ -121,8 +121,10 @@ int ctn_dyn_output_begin(ctn_dyn *dy)
     return CTN_OK;
 }
 
-/* y += P x over the fixed DOFs of element e (P packed, x the state layout). */
-static void packed_fixed(ctn_dyn *dy, size_t e, const double *P, double scale, const double *x, double *y)
+/* P x over element e's rows of one kind (P packed, x the state layout), times scale:
+ * free = 0: the fixed DOFs' rows, added to y (the state layout); free = 1: the free
+ * DOFs' rows, added to y (the equations' layout). */
+static void packed_rows(ctn_dyn *dy, size_t e, const double *P, double scale, const double *x, double *y, int free)
 {
     const ctn_asm *a = dy->p->a;
     const ctn_asm_block *b = ctn_asm_block_of(a, e);
@@ -131,11 +133,17 @@ static void packed_fixed(ctn_dyn *dy, size_t e, const double *P, double scale, c
     size_t *idx = dy->sup_idx;
     for (int i = 0; i < n; i++) idx[i] = ctn_dofmap_node(&a->map, (size_t)nodes[i / nd]) + (size_t)(i % nd);
     for (int i = 0; i < n; i++) {
-        if (a->map.eq[idx[i]] >= 0) continue;
+        int q = a->map.eq[idx[i]];
+        if ((q >= 0) != free) continue;
         double s = 0;
         for (int j = 0; j < n; j++) s += P[i <= j ? ctn_packed_index(n, i, j) : ctn_packed_index(n, j, i)] * x[idx[j]];
-        y[idx[i]] += scale * s;
+        y[free ? (size_t)q : idx[i]] += scale * s;
     }
+}
+
+static void packed_fixed(ctn_dyn *dy, size_t e, const double *P, double scale, const double *x, double *y)
+{
+    packed_rows(dy, e, P, scale, x, y, 0);
 }
 
 /* The elements' internal forces at the fixed DOFs into react, their axial forces into
@@ -253,22 +261,10 @@ static void motion_rates(ctn_dyn *dy, double t0, double t1, double wa, double wv
     }
 }
 
-/* y (ndof) = the free rows of P x (P element e's packed block, x the state layout). */
+/* y (ndof) += the free rows of P x (P element e's packed block, x the state layout). */
 static void packed_free(ctn_dyn *dy, size_t e, const double *P, double scale, const double *x, double *y)
 {
-    const ctn_asm *a = dy->p->a;
-    const ctn_asm_block *b = ctn_asm_block_of(a, e);
-    const int *nodes = ctn_elem_nodes(a->m, e);
-    int n = b->nedof, nd = b->ops->ndof_node;
-    size_t *idx = dy->sup_idx;
-    for (int i = 0; i < n; i++) idx[i] = ctn_dofmap_node(&a->map, (size_t)nodes[i / nd]) + (size_t)(i % nd);
-    for (int i = 0; i < n; i++) {
-        int q = a->map.eq[idx[i]];
-        if (q < 0) continue;
-        double s = 0;
-        for (int j = 0; j < n; j++) s += P[i <= j ? ctn_packed_index(n, i, j) : ctn_packed_index(n, j, i)] * x[idx[j]];
-        y[q] += scale * s;
-    }
+    packed_rows(dy, e, P, scale, x, y, 1);
 }
 
 void ctn_dyn_support_force(ctn_dyn *dy, double t0, double t1, double wa, double wv)
