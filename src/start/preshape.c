@@ -10,6 +10,7 @@
 #include "model/arc.h"
 #include "model/cable_start.h"
 #include "problem/problem.h"
+#include "start/hang.h"
 
 #include <math.h>
 #include <string.h>
@@ -97,14 +98,53 @@ static void place(const ctn_problem *e, double *d, int node, const double *dn)
         if (!(e->m->nodes.v[node].fix & (1u << k))) x[k] = dn[k];
 }
 
-/* A dangling chain (an anchor, then free nodes to a tip) hangs, whatever its start,
- * along the resultant of its loads: a pendulum. Place it there, each member stretched by
- * CTN_PRESHAPE_STRAIN, so Newton starts next to the hanging state instead of swinging
- * the whole chain through a large rigid rotation. 1 if placed. */
+/* A dangling chain (an anchor, then free nodes to a tip) hangs, whatever its start, in
+ * the equilibrium of a funicular from its anchor (hang.c: each member along the force
+ * it carries, stretched by it; a tip held in some directions reaches its held
+ * coordinates by the reaction found there): place it there, so Newton starts at the
+ * hanging state instead of swinging the whole chain through a large rigid rotation.
+ * Where the funicular fails (the held tip out of reach, a member without force), the
+ * chain is tried on the line along the resultant of its loads, each member stretched by
+ * CTN_PRESHAPE_STRAIN (a pendulum; exact when only the tip is loaded). 1 if placed. */
+static int place_funicular(const ctn_problem *e, const chains *c, size_t n, int flip, const double *loads, double *d)
+{
+    size_t ne = n - 1;
+    double *buf = ctn_malloc(e->ctx, 8 * ne, sizeof(double));
+    if (!buf) return 0;
+    double *l0 = buf, *k = buf + ne, *f = buf + 2 * ne, *x = buf + 5 * ne, S = 0;
+    ctn_hang h = { ne, l0, k, CTN_PRESHAPE_STRAIN, f, { 0, 0, 0 }, 0, { 0, 0, 0 } };
+    for (size_t i = 1; i < n; i++) {
+        size_t j = flip ? n - 1 - i : i;
+        int node = c->nodes[j], el = c->elems[flip ? j : j - 1];
+        const ctn_asm_block *b = ctn_asm_block_of(e->a, (size_t)el);
+        l0[i - 1] = rest_length(e, el);
+        k[i - 1] = b->ops->stiffness ? b->ops->stiffness(ctn_asm_props(e->a, (size_t)el)) : 0;
+        if (!(isfinite(k[i - 1]) && k[i - 1] > 0)) k[i - 1] = 0;
+        for (int q = 0; q < 3; q++) f[3 * (i - 1) + (size_t)q] = loads[3 * (size_t)node + (size_t)q];
+        S += l0[i - 1];
+    }
+    int tipn = c->nodes[flip ? 0 : n - 1], ok;
+    current(e, d, c->nodes[flip ? n - 1 : 0], h.a);
+    current(e, d, tipn, h.target);
+    h.held = e->m->nodes.v[tipn].fix & 7u;
+    ok = ctn_hang_place(&h, x);
+    for (int pass = 0; ok && pass < 2; pass++)    /* check every node's place, then move */
+        for (size_t i = 1; ok && i < n; i++) {
+            int node = c->nodes[flip ? n - 1 - i : i];
+            double dn[3];
+            for (int q = 0; q < 3; q++) dn[q] = x[3 * (i - 1) + (size_t)q] - e->m->nodes.v[node].X[q];
+            if (pass == 0 && node != tipn && !admits(e, node, dn, S)) ok = 0;   /* held elsewhere */
+            if (pass == 1) place(e, d, node, dn);
+        }
+    ctn_free(buf);
+    return ok;
+}
+
 static int place_dangling(const ctn_problem *e, const chains *c, size_t n, const double *loads, double *d)
 {
     int flip = tip(e, c, c->nodes[0]);
     if (n < 2 || !(flip || tip(e, c, c->nodes[n - 1]))) return 0;
+    if (place_funicular(e, c, n, flip, loads, d)) return 1;
     double R[3] = { 0, 0, 0 }, a[3], rn = 0;
     for (size_t i = 1; i < n; i++) {
         int node = c->nodes[flip ? n - 1 - i : i];

@@ -168,7 +168,11 @@ static int lm_step(corrector *c, double *alpha, double *rn, double *pi)
     if (rc || !ok) return rc;
     if ((rc = second_order(c, rn, pi))) return rc;
     double noise = 1e-12 * fabs(c->pi), rho = pred > 0 ? (c->pi - *pi) / pred : -1;
-    if (*pi < reference(c) || (*rn <= c->rn && *pi <= c->pi + noise)) {
+    /* Accepted: the potential falls below the reference; or, at round-off, |r| falls
+     * while the potential does not rise, or the step lands within the residual test
+     * (a start already in equilibrium, whose steps are round-off noise). */
+    if (*pi < reference(c) || (*rn <= c->rn && *pi <= c->pi + noise) ||
+        (*rn <= e->opt.tol * c->fref && *pi <= c->pi + noise)) {
         /* A plateau: the model predicts no decrease and none came (a slack state under
          * loads without a potential, where the merit |r|^2 / 2 cannot fall until members
          * take up their slack): the step did no harm and says nothing, so it may grow as
