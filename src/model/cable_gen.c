@@ -90,6 +90,13 @@ int ctn_model_add_cable(ctn_model *m, int a, int b, const char *section,
     ctn_cable_spec given = *spec;
     int rc = ctn_cable_target_check(m, "cable", spec, section, A, B, chord, &given.length);
     if (rc) return rc;
+    /* An end not held in all three directions is free to move: its place is a guess,
+     * and a cable shorter than the chord to it (a pendant rope whose free end the user
+     * put beyond its reach) is laid on the chord instead of refused; the solve finds
+     * where it hangs (a dangling chain starts on its funicular). */
+    if (given.shape == CTN_SHAPE_ARC && given.length < chord &&
+        ((m->nodes.v[ia].fix & 7u) != 7u || (m->nodes.v[ib].fix & 7u) != 7u))
+        given.shape = CTN_SHAPE_STRAIGHT;
     spec = &given;
     if ((rc = check_spec(m, spec, chord))) return rc;
     if (ctn_arc_make(A, B, m->gravity, spec->shape == CTN_SHAPE_ARC ? spec->length : chord, &f))
