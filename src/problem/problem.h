@@ -198,6 +198,9 @@ void ctn_follow_step(ctn_problem *p, size_t k);
 void ctn_follow_sel(ctn_problem *p, const ctn_loadsel *sel);
 void ctn_follow_set_t(ctn_problem *p, double t);
 const double *ctn_follow_forces(ctn_problem *p, const double *d);
+/* The loads of selection sel at state d into out (state layout; zero without follower
+ * loads), the follower's own state unchanged (the start heuristics). */
+void ctn_follow_forces_sel(const ctn_problem *p, const double *d, const ctn_loadsel *sel, double *out);
 /* The loads of the last ctn_follow_forces (state layout). */
 const double *ctn_follow_loads(const ctn_follow *f);
 int ctn_follow_solve(ctn_problem *p, const double *b, double *x);

@@ -106,7 +106,8 @@ static void place(const ctn_problem *e, double *d, int node, const double *dn)
  * Where the funicular fails (the held tip out of reach, a member without force), the
  * chain is tried on the line along the resultant of its loads, each member stretched by
  * CTN_PRESHAPE_STRAIN (a pendulum; exact when only the tip is loaded). 1 if placed. */
-static int place_funicular(const ctn_problem *e, const chains *c, size_t n, int flip, const double *loads, double *d)
+static int place_funicular(const ctn_problem *e, const chains *c, size_t n, int flip, const double *loads,
+                           const double *fh, double *d)
 {
     size_t ne = n - 1;
     double *buf = ctn_malloc(e->ctx, 8 * ne, sizeof(double));
@@ -120,7 +121,9 @@ static int place_funicular(const ctn_problem *e, const chains *c, size_t n, int 
         l0[i - 1] = rest_length(e, el);
         k[i - 1] = b->ops->stiffness ? b->ops->stiffness(ctn_asm_props(e->a, (size_t)el)) : 0;
         if (!(isfinite(k[i - 1]) && k[i - 1] > 0)) k[i - 1] = 0;
-        for (int q = 0; q < 3; q++) f[3 * (i - 1) + (size_t)q] = loads[3 * (size_t)node + (size_t)q];
+        size_t sn = ctn_dofmap_node(&e->a->map, (size_t)node);
+        for (int q = 0; q < 3; q++)
+            f[3 * (i - 1) + (size_t)q] = loads[3 * (size_t)node + (size_t)q] + (fh ? fh[sn + (size_t)q] : 0);
         S += l0[i - 1];
     }
     int tipn = c->nodes[flip ? 0 : n - 1], ok;
@@ -140,11 +143,42 @@ static int place_funicular(const ctn_problem *e, const chains *c, size_t n, int 
     return ok;
 }
 
+/* Loads that follow the geometry (a wind's drag on the chord's projection, an hload on the
+ * deformed one) of the first step: the funicular is placed again under the dead loads and
+ * those at its last place, until no node moves by more than CTN_FOLLOW_MOVE of the
+ * chain's length (a fixed point: a pendant rope swung by a wind across it, whose drag
+ * falls as it swings), at most CTN_FOLLOW_PLACES times. The last place is kept. */
+#define CTN_FOLLOW_PLACES 100
+#define CTN_FOLLOW_MOVE 1e-10
+static void follow_funicular(const ctn_problem *e, const chains *c, size_t n, int flip, const double *loads, double *d)
+{
+    double *fh = ctn_malloc(e->ctx, e->ns, sizeof(double)), *x = ctn_malloc(e->ctx, 3 * n, sizeof(double)), S = 0;
+    ctn_loadsel first = ctn_loadsel_step(0);
+    for (size_t i = 0; i + 1 < n; i++) S += rest_length(e, c->elems[i]);
+    for (int it = 0; fh && x && it < CTN_FOLLOW_PLACES; it++) {
+        double move = 0;
+        for (size_t i = 0; i < n; i++) current(e, d, c->nodes[i], x + 3 * i);
+        ctn_follow_forces_sel(e, d, &first, fh);
+        if (!place_funicular(e, c, n, flip, loads, fh, d)) break;
+        for (size_t i = 0; i < n; i++) {
+            double y[3];
+            current(e, d, c->nodes[i], y);
+            for (int k = 0; k < 3; k++) move = fmax(move, fabs(y[k] - x[3 * i + (size_t)k]));
+        }
+        if (move <= CTN_FOLLOW_MOVE * S) break;
+    }
+    ctn_free(fh);
+    ctn_free(x);
+}
+
 static int place_dangling(const ctn_problem *e, const chains *c, size_t n, const double *loads, double *d)
 {
     int flip = tip(e, c, c->nodes[0]);
     if (n < 2 || !(flip || tip(e, c, c->nodes[n - 1]))) return 0;
-    if (place_funicular(e, c, n, flip, loads, d)) return 1;
+    if (place_funicular(e, c, n, flip, loads, NULL, d)) {
+        if (e->fl) follow_funicular(e, c, n, flip, loads, d);
+        return 1;
+    }
     double R[3] = { 0, 0, 0 }, a[3], rn = 0;
     for (size_t i = 1; i < n; i++) {
         int node = c->nodes[flip ? n - 1 - i : i];

@@ -224,32 +224,45 @@ void ctn_follow_set_t(ctn_problem *p, double t)
     for (size_t s = 0; s < f->n; s++) f->qt[s] = f->qa[s] + t * (f->qb[s] - f->qa[s]);
 }
 
+/* Segment s's load P = q |h| / 2 at each of its nodes along its direction, added to out
+ * (state layout) at state d; its h / |h| into hhat when not NULL. */
+static void segment_load(const ctn_problem *p, const struct ctn_follow *f, size_t s, double q, const double *d,
+                         double *out, double *hhat)
+{
+    const ctn_model *m = p->m;
+    size_t sa = ctn_dofmap_node(&p->a->map, (size_t)f->a[s]), sb = ctn_dofmap_node(&p->a->map, (size_t)f->b[s]);
+    const double *Xa = m->nodes.v[f->a[s]].X, *Xb = m->nodes.v[f->b[s]].X;
+    double h[3], along = 0, hn = 0;
+    for (int k = 0; k < 3; k++) {
+        h[k] = (Xb[k] - Xa[k]) + (d[sb + (size_t)k] - d[sa + (size_t)k]);
+        along += h[k] * f->dir[3 * s + (size_t)k];
+    }
+    for (int k = 0; k < 3; k++) {
+        h[k] -= along * f->dir[3 * s + (size_t)k];
+        hn += h[k] * h[k];
+    }
+    hn = sqrt(hn);
+    double P = 0.5 * q * hn;
+    for (int k = 0; k < 3; k++) {
+        if (hhat) hhat[k] = hn > 0 ? h[k] / hn : 0.0;
+        out[sa + (size_t)k] += P * f->dir[3 * s + (size_t)k];
+        out[sb + (size_t)k] += P * f->dir[3 * s + (size_t)k];
+    }
+}
+
 const double *ctn_follow_forces(ctn_problem *p, const double *d)
 {
     struct ctn_follow *f = p->fl;
-    const ctn_model *m = p->m;
     memset(f->fh, 0, p->ns * sizeof(double));
-    for (size_t s = 0; s < f->n; s++) {
-        size_t sa = ctn_dofmap_node(&p->a->map, (size_t)f->a[s]), sb = ctn_dofmap_node(&p->a->map, (size_t)f->b[s]);
-        const double *Xa = m->nodes.v[f->a[s]].X, *Xb = m->nodes.v[f->b[s]].X;
-        double h[3], along = 0, hn = 0;
-        for (int k = 0; k < 3; k++) {
-            h[k] = (Xb[k] - Xa[k]) + (d[sb + (size_t)k] - d[sa + (size_t)k]);
-            along += h[k] * f->dir[3 * s + (size_t)k];
-        }
-        for (int k = 0; k < 3; k++) {
-            h[k] -= along * f->dir[3 * s + (size_t)k];
-            hn += h[k] * h[k];
-        }
-        hn = sqrt(hn);
-        double P = 0.5 * f->qt[s] * hn;
-        for (int k = 0; k < 3; k++) {
-            f->hhat[3 * s + (size_t)k] = hn > 0 ? h[k] / hn : 0.0;
-            f->fh[sa + (size_t)k] += P * f->dir[3 * s + (size_t)k];
-            f->fh[sb + (size_t)k] += P * f->dir[3 * s + (size_t)k];
-        }
-    }
+    for (size_t s = 0; s < f->n; s++) segment_load(p, f, s, f->qt[s], d, f->fh, f->hhat + 3 * s);
     return f->fh;
+}
+
+void ctn_follow_forces_sel(const ctn_problem *p, const double *d, const ctn_loadsel *sel, double *out)
+{
+    const struct ctn_follow *f = p->fl;
+    memset(out, 0, p->ns * sizeof(double));
+    for (size_t s = 0; f && s < f->n; s++) segment_load(p, f, s, segment_q(p->m, f, s, sel), d, out, NULL);
 }
 
 int ctn_follow_solve(ctn_problem *p, const double *b, double *x)
