@@ -10,29 +10,10 @@
  * - the temperature op lengthens L and keeps the weight (catenary and pulley). */
 #include "check.h"
 #include "catena/analytic.h"
-#include "element/catenary.h"
+#include "catenary_props.h"
 #include "element/pulley.h"
 
 #include <stdlib.h>
-
-static double urand(unsigned *seed, double lo, double hi)
-{
-    *seed = *seed * 1103515245u + 12345u;
-    return lo + (hi - lo) * (double)((*seed >> 8) & 0xffffff) / (double)0xffffff;
-}
-
-/* Properties of a catenary of length L, rigidity EA, weight W along unit gravity g. */
-static ctn_catenary_props props(double L, double EA, double W, const double g[3])
-{
-    ctn_catenary_props p;
-    memset(&p, 0, sizeof p);
-    p.EA = EA;
-    p.l0 = p.l0_ref = L;
-    p.A = 1;
-    p.W = W;
-    for (int i = 0; i < 3; i++) p.up[i] = W > 0 ? -g[i] : 0;
-    return p;
-}
 
 /* Irvine's end conditions at (H, Va), in long double: the chord they give. */
 static void irvine_chord(double L, double EA, double W, double H, double Va, long double *l, long double *h)

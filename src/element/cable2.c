@@ -1,6 +1,7 @@
 /* Two-node cable element, total Lagrangian (docs/theory.md); its kernel, eval_axial, is
  * in cable2.h. */
 #include "element/cable2.h"
+#include "element/hang_law.h"
 
 #include <float.h>
 #include <math.h>
@@ -69,6 +70,12 @@ static void cable_mass(const void *props, const double *X, int lumped, double *M
 
 static double cable_rest_length(const void *props) { return ((const ctn_cable_props *)props)->l0; }
 
+static double cable_hang(const void *props, const double S[3], double v[3], double H[9])
+{
+    const ctn_cable_props *p = props;
+    return ctn_hang_bar(p->l0, p->EA, S, v, H);
+}
+
 /* Stretch lambda = l / l0 at which the material's law gives force N (tension positive);
  * Green-Lagrange: N = EA (lambda^2 - 1) lambda / 2, increasing for lambda > 1/sqrt(3),
  * solved by safeguarded Newton on [1/sqrt(3), hi]. 0 if no stretch gives it. */
@@ -117,7 +124,7 @@ const ctn_element_ops ctn_cable2_ops = {
     .name = "cable", .nnodes = 2, .ndof_node = 3, .props_size = sizeof(ctn_cable_props),
     .flags = CTN_ELEM_FLEXIBLE | CTN_ELEM_SECTION,
     .check = cable_check, .setup = cable_setup, .eval = cable_eval, .load = cable_load,
-    .stiffness = cable_stiffness, .rest_length = cable_rest_length, .prestress_l0 = cable_prestress_l0,
+    .stiffness = cable_stiffness, .rest_length = cable_rest_length, .hang = cable_hang, .prestress_l0 = cable_prestress_l0,
     .temperature = cable_temperature,
     .mass = cable_mass, .eval_axial = ctn_cable_axial, .sever = cable_sever,
 };

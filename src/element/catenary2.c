@@ -8,6 +8,7 @@
  * horizontal stiffness 1 / F_HH in every horizontal direction. Without weight it is the
  * bar N = EA (|chord| - L) / L, slack (no force, no stiffness) when shorter than L. */
 #include "element/axial.h"
+#include "element/hang_law.h"
 #include "element/catenary.h"
 
 #include <math.h>
@@ -133,6 +134,14 @@ static void catenary_setup(const ctn_model *m, size_t e, void *props)
  * rest of it). */
 static void catenary_load(const ctn_model *m, size_t e, double *f) { ctn_cable2_ops.load(m, e, f); }
 
+static double catenary_rest_length(const void *props) { return ((const ctn_catenary_props *)props)->l0; }
+
+static double catenary_hang(const void *props, const double S[3], double v[3], double H[9])
+{
+    const ctn_catenary_props *p = props;
+    return ctn_hang_catenary(p->l0, p->EA, p->W, p->up, S, v, H);
+}
+
 static double catenary_stiffness(const void *props)
 {
     const ctn_catenary_props *p = props;
@@ -161,7 +170,7 @@ const ctn_element_ops ctn_catenary2_ops = {
     .name = "catenary", .nnodes = 2, .ndof_node = 3, .props_size = sizeof(ctn_catenary_props),
     .flags = CTN_ELEM_SECTION | CTN_ELEM_TENSION_ONLY,
     .check = catenary_check, .setup = catenary_setup, .eval = catenary_eval, .load = catenary_load,
-    .stiffness = catenary_stiffness,
+    .stiffness = catenary_stiffness, .rest_length = catenary_rest_length, .hang = catenary_hang,
     .temperature = catenary_temperature, .prestress_l0 = ctn_catenary_prestress_l0,
     .mass = catenary_mass,
 };

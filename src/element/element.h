@@ -72,8 +72,15 @@ typedef struct ctn_element_ops {
     void (*load)(const ctn_model *m, size_t e, double *f);
     /* Stiffness scale of the tangent (E A / l0, k), for shifts and tolerances. */
     double (*stiffness)(const void *props);
-    /* Unstressed length of a flexible member (CTN_ELEM_FLEXIBLE), else NULL. */
+    /* Unstressed length of a flexible member (CTN_ELEM_FLEXIBLE) or one that hangs, else NULL. */
     double (*rest_length)(const void *props);
+    /* Optional (members that hang): the chord v (first node to second) the member takes
+     * when it carries the force S at its middle (the pull at its second end plus half its
+     * own weight, which the loads carry at its nodes), engineering strain; v is the
+     * gradient in S of the convex phi(S) returned (its complementary energy), H a positive
+     * definite stand-in of its Hessian (3 x 3). NAN where S gives no direction. Used by
+     * the start heuristics (src/start/hang.c). */
+    double (*hang)(const void *props, const double S[3], double v[3], double H[9]);
     /* Optional: the unstressed length l0 that gives element e (its section or k set) the
      * prestress `kind` of value v at length l; a model error (ctn_model_error) if none. */
     int (*prestress_l0)(const ctn_model *m, const ctn_element *e, int kind, double v, double l, double *l0);

@@ -9,7 +9,9 @@
  * phi_j(F) = l0_j |F| + |F|^2 / (2 k_j), the reaction that brings the tip to its held
  * coordinates t minimizes the convex psi(r) = sum_j phi_j(r + S_j) - r . (t - a) over
  * the held directions: Newton's method with a backtracking line search on psi, whose
- * Hessian sum_j l0_j (I - u_j u_j^T) / |F_j| + I / k_j is positive semi-definite. The
+ * Hessian sum_j l0_j (I - u_j u_j^T) / |F_j| + I / k_j is positive semi-definite. A
+ * member is whatever gives its chord as such a gradient (element.h's `hang` op: a bar,
+ * or an elastic catenary whose own weight bends it between its nodes). The
  * tip out of reach (held on a plane farther from the anchor than the chain is long) has
  * no minimizer: no placement. With the tip free there is no unknown: one walk. */
 #include "start/hang.h"
@@ -21,39 +23,28 @@
 #define HANG_ITERATIONS 100
 #define HANG_TOL 1e-12      /* |tip - t| relative to the chain's length */
 
-static double norm3(const double v[3]) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
-
-static double stretched(const ctn_hang *h, size_t j, double T)
-{
-    return h->k[j] > 0 ? h->l0[j] + T / h->k[j] : h->l0[j] * (1 + h->strain0);
-}
-
 /* One walk from the tip at reaction r: the tip's offset from the anchor (tip), psi's
- * energy part (*phi), its Hessian (H, 3x3) and the smallest |F_j| over the loads' scale
- * (*tmin). x (or NULL): the members' vectors v_j, member j at 3 j. */
-static void walk(const ctn_hang *h, const double r[3], double tip[3], double *phi, double H[9], double *tmin,
-                 double *x)
+ * energy part (*phi), its Hessian (H, 3x3); 0 if a member gives no chord. x (or NULL):
+ * the members' vectors v_j, member j at 3 j. */
+static int walk(const ctn_hang *h, const double r[3], double tip[3], double *phi, double H[9], double *x)
 {
     double S[3] = { r[0], r[1], r[2] };
     memset(tip, 0, 3 * sizeof(double));
     memset(H, 0, 9 * sizeof(double));
     *phi = 0;
-    *tmin = INFINITY;
     for (size_t j = h->n; j-- > 0;) {
+        double v[3], Hj[9];
         for (int k = 0; k < 3; k++) S[k] += h->f[3 * j + (size_t)k];
-        double T = norm3(S), l = stretched(h, j, T);
-        *tmin = fmin(*tmin, T);
-        if (!(T > 0)) continue;
-        double u[3] = { S[0] / T, S[1] / T, S[2] / T };
+        double p = h->member(h->ud, j, S, v, Hj);
+        if (!isfinite(p)) return 0;
+        *phi += p;
         for (int k = 0; k < 3; k++) {
-            tip[k] += l * u[k];
-            if (x) x[3 * j + (size_t)k] = l * u[k];
+            tip[k] += v[k];
+            if (x) x[3 * j + (size_t)k] = v[k];
         }
-        *phi += h->k[j] > 0 ? h->l0[j] * T + T * T / (2 * h->k[j]) : l * T;
-        double g = (h->k[j] > 0 ? h->l0[j] : l) / T, s = h->k[j] > 0 ? 1 / h->k[j] : 0;
-        for (int p = 0; p < 3; p++)
-            for (int q = 0; q < 3; q++) H[3 * p + q] += g * ((p == q) - u[p] * u[q]) + (p == q) * s;
+        for (int k = 0; k < 9; k++) H[k] += Hj[k];
     }
+    return 1;
 }
 
 /* Solve the m x m system A z = b (m <= 2) of the held directions; 0 if singular. */
@@ -74,17 +65,12 @@ static int solve_small(int m, const double A[4], const double b[2], double z[2])
 int ctn_hang_place(const ctn_hang *h, double *x)
 {
     int dirs[3], m = 0;
-    double L = 0, W = 0;
+    double L = h->length;
     for (int k = 0; k < 3; k++)
         if (h->held & (1u << k)) dirs[m++] = k;
-    if (m == 3 || h->n == 0) return 0;
-    for (size_t j = 0; j < h->n; j++) {
-        L += stretched(h, j, 0);
-        W += norm3(h->f + 3 * j);
-    }
-    if (!(L > 0 && W > 0)) return 0;
-    double r[3] = { 0, 0, 0 }, tip[3], H[9], phi, fm;
-    walk(h, r, tip, &phi, H, &fm, NULL);
+    if (m == 3 || h->n == 0 || !(L > 0)) return 0;
+    double r[3] = { 0, 0, 0 }, tip[3], H[9], phi;
+    if (!walk(h, r, tip, &phi, H, NULL)) return 0;
     for (int it = 0; m > 0; it++) {
         double g[2], A[4], z[2], psi = phi;
         for (int i = 0; i < m; i++) {
@@ -100,16 +86,14 @@ int ctn_hang_place(const ctn_hang *h, double *x)
             if (ls == 60) return 0;
             memcpy(r1, r, sizeof r1);
             for (int i = 0; i < m; i++) r1[dirs[i]] -= t * z[i];
-            double psi1 = 0;
-            walk(h, r1, tip, &phi, H, &fm, NULL);
-            psi1 = phi;
+            if (!walk(h, r1, tip, &phi, H, NULL)) continue;   /* a member without force: shorter */
+            double psi1 = phi;
             for (int i = 0; i < m; i++) psi1 -= r1[dirs[i]] * (h->target[dirs[i]] - h->a[dirs[i]]);
             if (psi1 <= psi + 1e-4 * t * slope || fabs(psi1 - psi) <= 4 * DBL_EPSILON * fabs(psi)) break;
         }
         memcpy(r, r1, sizeof r);
     }
-    walk(h, r, tip, &phi, H, &fm, x);
-    if (!(fm > 1e-9 * W)) return 0;                   /* a member without force: no direction */
+    if (!walk(h, r, tip, &phi, H, x)) return 0;
     for (size_t j = 0; j < h->n; j++)                  /* the members' vectors to the nodes */
         for (int k = 0; k < 3; k++) x[3 * j + (size_t)k] += j ? x[3 * (j - 1) + (size_t)k] : h->a[k];
     return 1;

@@ -5,11 +5,14 @@
 
 #include <stddef.h>
 
+/* Member j's chord v from the force S at its middle, phi and H (element.h's `hang` op). */
+typedef double (*ctn_hang_member_fn)(const void *ud, size_t j, const double S[3], double v[3], double H[9]);
+
 typedef struct ctn_hang {
     size_t n;           /* members, anchor to tip */
-    const double *l0;   /* n unstressed lengths */
-    const double *k;    /* n axial stiffnesses E A / l0 (0: stretched by strain0) */
-    double strain0;     /* the stretch of a member without a stiffness */
+    ctn_hang_member_fn member;
+    const void *ud;
+    double length;      /* the chain's unstressed length (the tolerances' scale) */
     const double *f;    /* 3 n loads on the free nodes 1..n (node n: the tip) */
     double a[3];        /* the anchor */
     unsigned held;      /* the tip's held directions (bits 0..2; not all three) */

@@ -106,26 +106,52 @@ static void place(const ctn_problem *e, double *d, int node, const double *dn)
  * Where the funicular fails (the held tip out of reach, a member without force), the
  * chain is tried on the line along the resultant of its loads, each member stretched by
  * CTN_PRESHAPE_STRAIN (a pendulum; exact when only the tip is loaded). 1 if placed. */
+typedef struct funicular {
+    const ctn_problem *e;
+    const int *elems;   /* the members, anchor to tip */
+    const int *flip;    /* per member: its first node is the one nearer the tip */
+} funicular;
+
+/* Member j's chord, anchor to tip, from its element's `hang` op (its first node to its
+ * second: turned where the element runs from the tip towards the anchor). */
+static double member(const void *ud, size_t j, const double S[3], double v[3], double H[9])
+{
+    const funicular *fu = ud;
+    size_t el = (size_t)fu->elems[j];
+    const ctn_asm_block *b = ctn_asm_block_of(fu->e->a, el);
+    if (!b->ops->hang) return NAN;
+    double Sm[3] = { -S[0], -S[1], -S[2] };
+    double phi = b->ops->hang(ctn_asm_props(fu->e->a, el), fu->flip[j] ? Sm : S, v, H);
+    if (fu->flip[j])
+        for (int k = 0; k < 3; k++) v[k] = -v[k];
+    return phi;
+}
+
 static int place_funicular(const ctn_problem *e, const chains *c, size_t n, int flip, const double *loads,
                            const double *fh, double *d)
 {
     size_t ne = n - 1;
-    double *buf = ctn_malloc(e->ctx, 8 * ne, sizeof(double));
-    if (!buf) return 0;
-    double *l0 = buf, *k = buf + ne, *f = buf + 2 * ne, *x = buf + 5 * ne, S = 0;
-    ctn_hang h = { ne, l0, k, CTN_PRESHAPE_STRAIN, f, { 0, 0, 0 }, 0, { 0, 0, 0 } };
+    double *f = ctn_malloc(e->ctx, 6 * ne, sizeof(double));
+    int *el = ctn_malloc(e->ctx, 2 * ne, sizeof(int));
+    if (!f || !el) {
+        ctn_free(f);
+        ctn_free(el);
+        return 0;
+    }
+    double *x = f + 3 * ne, S = 0;
+    funicular fu = { e, el, el + ne };
+    ctn_hang h = { ne, member, &fu, 0, f, { 0, 0, 0 }, 0, { 0, 0, 0 } };
     for (size_t i = 1; i < n; i++) {
         size_t j = flip ? n - 1 - i : i;
-        int node = c->nodes[j], el = c->elems[flip ? j : j - 1];
-        const ctn_asm_block *b = ctn_asm_block_of(e->a, (size_t)el);
-        l0[i - 1] = rest_length(e, el);
-        k[i - 1] = b->ops->stiffness ? b->ops->stiffness(ctn_asm_props(e->a, (size_t)el)) : 0;
-        if (!(isfinite(k[i - 1]) && k[i - 1] > 0)) k[i - 1] = 0;
+        int node = c->nodes[j], up = c->nodes[flip ? j + 1 : j - 1];
+        el[i - 1] = c->elems[flip ? j : j - 1];
+        el[ne + i - 1] = ctn_elem_nodes(e->m, (size_t)el[i - 1])[0] != up;   /* runs tip to anchor */
+        S += rest_length(e, el[i - 1]);
         size_t sn = ctn_dofmap_node(&e->a->map, (size_t)node);
         for (int q = 0; q < 3; q++)
             f[3 * (i - 1) + (size_t)q] = loads[3 * (size_t)node + (size_t)q] + (fh ? fh[sn + (size_t)q] : 0);
-        S += l0[i - 1];
     }
+    h.length = S;
     int tipn = c->nodes[flip ? 0 : n - 1], ok;
     current(e, d, c->nodes[flip ? n - 1 : 0], h.a);
     current(e, d, tipn, h.target);
@@ -139,7 +165,8 @@ static int place_funicular(const ctn_problem *e, const chains *c, size_t n, int 
             if (pass == 0 && node != tipn && !admits(e, node, dn, S)) ok = 0;   /* held elsewhere */
             if (pass == 1) place(e, d, node, dn);
         }
-    ctn_free(buf);
+    ctn_free(f);
+    ctn_free(el);
     return ok;
 }
 
@@ -365,7 +392,7 @@ static int incidence(const ctn_problem *e, chains *c)
     for (size_t i = 0; i < ne; i++) {
         const ctn_asm_block *b = ctn_asm_block_of(e->a, i);
         const int *nd = ctn_elem_nodes(e->m, i);
-        int chain = (b->ops->flags & CTN_ELEM_FLEXIBLE) && b->nnodes == 2;
+        int chain = ((b->ops->flags & CTN_ELEM_FLEXIBLE) || b->ops->hang) && b->nnodes == 2;
         if (!chain) c->seen[i] = 1;                /* other members make anchors */
         for (int k = 0; k < b->nnodes; k++) {
             int p = nd[k];
@@ -439,6 +466,16 @@ static int catenary_of_weight(const ctn_problem *e, const ctn_cable *cb, chains 
     return 1;
 }
 
+/* Every member of the chain is flexible (a cable's): the arcs and catenaries below place
+ * only those; a chain with members that hang by their own law (a catenary element) is
+ * placed only when it dangles. */
+static int flexible(const ctn_problem *e, const chains *c, size_t n)
+{
+    for (size_t i = 0; i + 1 < n; i++)
+        if (!(ctn_asm_block_of(e->a, (size_t)c->elems[i])->ops->flags & CTN_ELEM_FLEXIBLE)) return 0;
+    return 1;
+}
+
 int ctn_preshape(ctn_problem *e, double *d, int *count)
 {
     chains c = { NULL, NULL, NULL, NULL, NULL };
@@ -461,6 +498,10 @@ int ctn_preshape(ctn_problem *e, double *d, int *count)
         c.seen[i] = 1;
         if (!n) continue;
         const ctn_cable *cb = cable_of(m, c.elems[0]);   /* a windy cable's weight at least */
+        if (!flexible(e, &c, n)) {                       /* members that only hang (catenary) */
+            *count += place_dangling(e, &c, n, loads, d);
+            continue;
+        }
         *count += place_dangling(e, &c, n, loads, d) || place_loaded(e, &c, n, loadsw, d) ||
                   (cb && windy(m, cb, loads, loadsw) && catenary_of_weight(e, cb, &c, loads, d)) ||
                   place_chain(e, &c, n, d);

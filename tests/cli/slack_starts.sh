@@ -166,4 +166,31 @@ else
 fi
 finish "$name"
 
+# A pendant of two catenary elements (exact, unmeshed) with a tip load, its free tip
+# given level with the anchor: 28 iterations before (the catenary elements were not
+# pre-shaped); now on the funicular of the elements' own law (element.h's `hang`:
+# tests/test_hang.c checks it against the element): within 5.
+name=catenary_pendant
+cat >"$T/$name.cable" <<M
+units kN m
+gravity 0 0 -1
+material rope E=1e8
+section r material=rope A=1e-4 w=0.05
+node 1 0 0 0 fix=xyz
+node 2 20 0 0
+node 3 40 0 0
+catenary 1 1 2 section=r length=25
+catenary 2 2 3 section=r length=25
+load 3 2 0 -0.5
+M
+if "$BIN" solve "$T/$name.cable" --json >"$T/$name.json" 2>"$T/$name.err"; then
+    if [ "$have_python" = 1 ]; then
+        it=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["iterations"])' "$T/$name.json")
+        [ "$it" -le 5 ] || WHY+=("$name: $it iterations")
+    fi
+else
+    WHY+=("$name: exit $?: $(head -c 300 "$T/$name.err")")
+fi
+finish "$name"
+
 cli_summary
