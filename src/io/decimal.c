@@ -1,11 +1,12 @@
-/* The reader's numbers: decimal text to double by the Eisel-Lemire method (Lemire,
- * "Number parsing at a gigabyte per second", Software: Practice and Experience 51, 2021;
- * the form of Go's strconv.eiselLemire64), after Clinger's exact fast path: the decimal mantissa w (19 digits at most)
- * times a 128-bit truncation of 10^q gives the 54 leading bits of w 10^q; when those
- * bits cannot decide the rounding (the truncation's error could cross a rounding
- * boundary, or the value is exactly halfway), the conversion declines and the caller
- * uses strtod. Every value it returns is the correctly rounded one, strtod's own
- * (tests/test_decimal.c checks that over edge cases and millions of random numbers). */
+/* The reader's numbers: decimal text to double by Clinger's exact fast path, else the
+ * Eisel-Lemire method (Lemire, "Number parsing at a gigabyte per second", Software:
+ * Practice and Experience 51, 2021; the form of Go's strconv.eiselLemire64): the decimal
+ * mantissa w (19 digits at most) times a 128-bit truncation of 10^q gives the 54 leading
+ * bits of w 10^q; when those bits cannot decide the rounding (the truncation's error
+ * could cross a rounding boundary, or the value is exactly halfway), the conversion
+ * declines and the caller uses strtod. Every value it returns is the correctly rounded
+ * one, strtod's own (tests/test_decimal.c checks that over edge cases and more than a
+ * million random numbers). */
 #include "io/decimal.h"
 
 #include <string.h>
