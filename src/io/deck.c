@@ -42,7 +42,7 @@ enum { K_GRAVITY = 4, K_NODE = 5, K_BEAM = 9, K_CABLE = 12, K_NET = 13, K_GROUP 
 static unsigned char lookup(const char *word)
 {
     for (size_t i = 0; i < sizeof phases / sizeof *phases; i++)
-        if (!strcmp(word, phases[i].name)) return (unsigned char)i;
+        if (word[0] == phases[i].name[0] && !strcmp(word, phases[i].name)) return (unsigned char)i;
     return K_NONE;
 }
 

@@ -1,4 +1,5 @@
 /* Token helpers of the .cable reader: numbers, ids, key=value options, messages. */
+#include "io/decimal.h"
 #include "io/parse.h"
 
 #include <ctype.h>
@@ -126,6 +127,7 @@ static int with_unit(const ctn_line *l, const char *what, const char *tok, const
 int ctn_parse_num(const ctn_line *l, const char *what, const char *tok, double *out)
 {
     char b[64], *end;
+    if (ctn_parse_decimal(tok, out)) return CTN_OK;       /* a plain number: strtod's value */
     errno = 0;
     double v = strtod(tok, &end);
     int unit = end != tok && *end && isalpha((unsigned char)*end) && isfinite(v) && !(errno == ERANGE && fabs(v) > 1.0);
@@ -196,6 +198,7 @@ int ctn_parse_key_num(ctn_line *l, int from, const char *key, int required, doub
 {
     const char *v = ctn_parse_key(l, from, key);
     if (!v) return required ? ctn_parse_missing(l, from, NULL, key, NULL) : CTN_OK;
+    if (ctn_parse_decimal(v, out)) return CTN_OK;          /* a plain number: no name needed */
     char what[80];
     snprintf(what, sizeof what, "'%s'", key);
     return ctn_parse_num(l, what, v, out);

@@ -487,14 +487,33 @@ static void unbounded(const junction *j, const double *d, const double *dstart)
     if (!(far > CTN_JUNCTION_FAR * e->lref)) e->mech_node = e->mech_dir = -1;
 }
 
+/* In *any, 1 if some node joins three elements or more: without one no three members
+ * meet, and there is no junction to place. */
+static int some_node_of_three(const ctn_problem *e, int *any)
+{
+    size_t nn = e->a->nn, ne = e->a->ne;
+    unsigned char *deg = ctn_calloc(e->ctx, nn ? nn : 1, 1);
+    if (!deg) return CTN_ERR_NOMEM;
+    *any = 0;
+    for (size_t i = 0; i < ne && !*any; i++) {
+        const int *nd = ctn_elem_nodes(e->m, i);
+        for (int k = 0; k < e->m->elements.v[i].nnodes; k++) *any |= ++deg[nd[k]] >= 3;
+    }
+    ctn_free(deg);
+    return CTN_OK;
+}
+
 int ctn_junction_place(ctn_problem *e, const double *loads, double *d, unsigned char *seen, int *placed)
 {
     ctn_ctx *ctx = e->ctx;
     size_t nn = e->a->nn, ne = e->a->ne;
+    int any = 0;
+    *placed = 0;
+    if (some_node_of_three(e, &any)) return CTN_ERR_NOMEM;
+    if (!any) return CTN_OK;                   /* a chain, or chains apart: no junction */
     size_t nd = 3 * nn + 3 * nn + 1 + e->ns + ne + 1, nm = ne + 1;
     size_t ni = nn + nn + 1 + 2 * ne + 1 + 3 * nn + 2 * (ne + 1);
     junction j = { .e = e };
-    *placed = 0;
     /* one block (the solver runs this before every solve, target searches included) */
     unsigned char *block = ctn_calloc(ctx, nd * sizeof(double) + nm * sizeof(member) + ni * sizeof(int) + 2 * nn, 1);
     if (!block) return CTN_ERR_NOMEM;
