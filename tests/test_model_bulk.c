@@ -220,7 +220,7 @@ static void api(ctn_ctx *ctx)
  * node, a catenary's undefined section, a pulley's undefined node) the reader's message
  * on the row's line (a zero orient is the default in the spec, an error in the text: the
  * Python side sends such rows as text). */
-#define FHEAD "units kN m\ngravity 0 0 -1\nmaterial m E=2e8 nu=0.3\nmaterial rope E=1e5 strain=engineering\n" \
+#define FHEAD "units kN m\ngravity 0 0 -1\nmaterial m E=2e8 G=7.7e7\nmaterial rope E=1e5 strain=engineering\n" \
               "section b material=m A=1e-2 Iy=1e-4 Iz=2e-4 J=3e-4 w=0.5\nsection r material=rope A=0.01 w=0.01\n" \
               "node 1 0 0 0 fix=xyzrxryrz\nnode 2 6 0 0\nnode 3 12 0 0 fix=xyzrxryrz\n" \
               "node 4 0 5 0 fix=xyz\nnode 5 30 5 2 fix=xyz\nnode 6 0 9 0 fix=xyz\nnode 7 40 9 0 fix=xyz\n" \
