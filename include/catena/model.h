@@ -282,10 +282,18 @@ typedef struct ctn_element_rows {
     const double *k;                 /* spec.k per row (springs), or NULL */
     const double *q;                 /* spec.q per row (form finding), or NULL */
     const double *force;             /* spec.force per row (form finding), or NULL */
+    const double *target_value;      /* spec.target_value per row (catenary: H, sag or
+                                        tension as spec.target says), or NULL */
+    const double *orient;            /* beam: spec.orient per row, 3 per row, or NULL */
+    const unsigned *release;         /* beam: spec.release per row, or NULL */
+    const int *segments;             /* beam: the elements each member is meshed into
+                                        (ctn_model_add_beam's n) per row; NULL: 1 */
 } ctn_element_rows;
 void ctn_element_rows_init(ctn_element_rows *r);
 /* rows->n elements of spec's family and keys (spec->id and spec->nodes are ignored: the
- * rows give them), as ctn_model_add_element_spec would add them one by one. */
+ * rows give them), as ctn_model_add_element_spec would add them one by one (a beam as
+ * ctn_model_add_beam with the row's segments): every family, pulleys with spec->nnodes
+ * nodes each. */
 int ctn_model_add_elements(ctn_model *m, const ctn_element_spec *spec, const ctn_element_rows *rows);
 /* Concentrated force F at a node (summed with earlier loads on that node). Belongs
  * to the current step (see ctn_model_add_step). */

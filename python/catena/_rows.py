@@ -6,6 +6,8 @@ range, not finite, a key the bulk calls do not take) goes through the reader as 
 block's text, so that its error is the reader's, on the row's line."""
 from __future__ import annotations
 
+import re
+
 from ._np import np
 
 INT_MAX = 2**31 - 1
@@ -139,13 +141,73 @@ class Loads:
         return True
 
 
-_FAMILIES = {"element": "cable", "spring": "spring"}     # the families the bulk call takes here
+_FAMILIES = {"element": "cable", "spring": "spring", "rspring": "rspring", "catenary": "catenary",
+             "pulley": "pulley", "beam": "beam"}                # the library's family names
 _PRESTRESS = {"N0": 1, "s0": 2, "eps0": 3}
-_NUMERIC = ("l0", "N0", "s0", "eps0", "k", "q", "force")
+_TARGETS = {"H": 1, "sag": 2, "tension": 3}
+_NUMERIC = ("l0", "N0", "s0", "eps0", "k", "q", "force", "length", "H", "sag", "tension")
+_POSITIVE = ("l0", "k", "q", "force", "length", "H", "sag", "tension")
+_LENGTHS = ("l0", "length", "N0", "s0", "eps0", "H", "sag", "tension")
+# The keys each family's line takes (besides group=) and the one it needs, as the reader.
+_KEYS = {"element": {"section", "l0", "N0", "s0", "eps0", "q", "force"},
+         "spring": {"k", "l0", "N0", "s0", "eps0", "q", "force"},
+         "rspring": {"k"},
+         "catenary": {"section", "length", "H", "sag", "tension", "N0", "s0", "eps0"},
+         "pulley": {"section", "length", "N0", "s0", "eps0"},
+         "beam": {"section", "orient", "n", "release"}}
+_REQUIRED = {"element": "section", "spring": "k", "rspring": "k", "catenary": "section", "pulley": "section",
+             "beam": "section"}
+_DECIMAL = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$")
+_BEAM_MAX_N = 100000
+_PULLEY_MAX_NODES = 64
+
+
+def release_bits(word):
+    """The release flags of a beam's release= word (END:DOFS items, END 1 or 2, DOFS among
+    rx ry rz, each once), or None when the reader would refuse it."""
+    bits = 0
+    for item in word.split(","):
+        if len(item) < 3 or item[0] not in "12" or item[1] != ":":
+            return None
+        end, rest = int(item[0]) - 1, item[2:]
+        if len(rest) % 2:
+            return None
+        for j in range(0, len(rest), 2):
+            k = ("rx", "ry", "rz").index(rest[j:j + 2]) if rest[j:j + 2] in ("rx", "ry", "rz") else -1
+            if k < 0 or bits & (1 << (3 * end + k)):
+                return None
+            bits |= 1 << (3 * end + k)
+    return bits
+
+
+def _orient(v, n):
+    """A beam's orient per row as float64 (n, 3): from a "VX,VY,VZ" word, three numbers or
+    an (n, 3) array; None when the reader would refuse one (not three finite numbers,
+    the zero vector)."""
+    if isinstance(v, str):
+        parts = v.split(",")
+        if len(parts) != 3 or not all(_DECIMAL.match(p) for p in parts):
+            return None
+        v = [float(p) for p in parts]
+    a = _reals(v, (n, 3)) if np.ndim(v) in (1, 2) else None
+    if a is None or (n and not (np.abs(a).max(axis=1) > 0).all()):
+        return None
+    return a
+
+
+def _counts(v, n):
+    """A beam's n= per row as int32 (n,), None when one is not an integer 1..100000."""
+    a = np.asarray(v)
+    if a.dtype.kind not in "iu" or a.ndim > 1:
+        return None
+    a = np.ascontiguousarray(np.broadcast_to(a, (n,)), dtype=np.int64)
+    if n and (a.min() < 1 or a.max() > _BEAM_MAX_N):
+        return None
+    return np.ascontiguousarray(a, dtype=np.intc)
 
 
 class Elements:
-    """FAMILY ID NODE1 NODE2 key=value... rows."""
+    """FAMILY ID NODE1 NODE2 key=value... rows (a pulley: ID NODE1 PULLEY... NODE2)."""
 
     def __init__(self, family, ids, conn, keys, word):
         self.family = family
@@ -154,7 +216,13 @@ class Elements:
         self.keys = {k: v for k, v in keys.items() if v is not None}
         self.words = {}                                  # the one-value keys, checked now
         for k, v in self.keys.items():
-            if isinstance(v, (str, int, float, np.number)):
+            if k == "orient" and not isinstance(v, str):
+                a = np.asarray(v)
+                if a.dtype.kind not in "iuf" or a.shape not in ((3,), (len(self.ids), 3)):
+                    raise TypeError("orient=: a 'VX,VY,VZ' word, three numbers or an (n, 3) array was expected")
+                if a.shape == (3,):
+                    self.words[k] = ",".join(_num(x) for x in a.tolist())
+            elif isinstance(v, (str, int, float, np.number)):
                 self.words[k] = word(k, v)
             elif np.asarray(v).dtype.kind not in "iuf" or np.asarray(v).ndim > 1:
                 raise TypeError(f"{k}=: a number or an array of numbers (one per element) was expected")
@@ -167,6 +235,8 @@ class Elements:
         for k, v in self.keys.items():
             if k in self.words:
                 cols.append([f" {k}={self.words[k]}"] * len(self.ids))
+            elif k == "orient":
+                cols.append([" orient=" + ",".join(_num(x) for x in row) for row in np.asarray(v).tolist()])
             else:
                 cols.append([f" {k}={_num(x)}" for x in np.broadcast_to(np.asarray(v), self.ids.shape).tolist()])
         rest = ["".join(t) for t in zip(*cols)] if cols else [""] * len(self.ids)
@@ -184,28 +254,46 @@ class Elements:
             if isinstance(v, (str, bool, np.bool_)):
                 return None
             a = _reals(v, self.ids.shape)
-            if a is None or (k in ("l0", "k", "q", "force") and not (a > 0).all()):
+            if a is None or (k in _POSITIVE and not (a > 0).all()):
                 return None
             out[k] = float(np.asarray(v)) if np.ndim(v) == 0 else a
         return out
 
     def add_to(self, c, name, line):
         keys, fam = self.keys, self.family
-        cols = self._columns() if fam in _FAMILIES else None
-        ids, conn = _ids(self.ids), _ids(self.conn)
-        if cols is None or ids is None or conn is None or self.conn.shape[1] != 2:
+        if fam not in _FAMILIES:
             return False
-        if set(keys) - set(_NUMERIC) - {"section", "group"}:
+        cols = self._columns()
+        ids, conn = _ids(self.ids), _ids(self.conn)
+        width = self.conn.shape[1]
+        if cols is None or ids is None or conn is None or \
+                not (3 <= width <= _PULLEY_MAX_NODES if fam == "pulley" else width == 2):
+            return False
+        if set(keys) - _KEYS[fam] - {"group"} or _REQUIRED[fam] not in keys:
             return False                                   # a key the reader will name
-        lengths = [k for k in ("l0", "N0", "s0", "eps0") if k in keys]
+        lengths = [k for k in _LENGTHS if k in keys]
         dens = [k for k in ("q", "force") if k in keys]
-        spring = fam == "spring"
         if len(lengths) > 1 or len(dens) > 1 or (dens and lengths) or \
-                (spring != ("k" in keys)) or (spring == ("section" in keys)) or \
                 not all(isinstance(keys.get(k, ""), str) for k in ("section", "group")):
             return False
         kind = next((_PRESTRESS[k] for k in lengths if k in _PRESTRESS), 0)
         value = cols.get(lengths[0]) if kind else None
-        c.add_elements(name, line, _FAMILIES[fam], ids, conn, 2, keys.get("section"), keys.get("group"), kind,
-                       cols.get("l0"), value, cols.get("k"), cols.get("q"), cols.get("force"))
+        target = next((_TARGETS[k] for k in lengths if k in _TARGETS), 0)
+        tvalue = cols.get(lengths[0]) if target else None
+        l0 = cols.get("l0", cols.get("length"))
+        orient = release = segments = None
+        if fam == "beam":
+            n = len(self.ids)
+            if "orient" in keys and (orient := _orient(keys["orient"], n)) is None:
+                return False
+            if "n" in keys and (segments := _counts(keys["n"], n)) is None:
+                return False
+            if "release" in keys:
+                bits = release_bits(keys["release"]) if isinstance(keys["release"], str) else None
+                if bits is None:
+                    return False
+                release = np.full(n, bits, dtype=np.intc)
+        c.add_elements(name, line, _FAMILIES[fam], ids, conn, width, keys.get("section"), keys.get("group"), kind,
+                       l0, value, cols.get("k"), cols.get("q"), cols.get("force"), target, tvalue, orient, release,
+                       segments)
         return True

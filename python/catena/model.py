@@ -149,9 +149,12 @@ class Model:
         return self.add(family, id, n1, n2, **keys)
 
     def elements(self, ids, conn, family: str = "element", **keys) -> "Model":
-        """Elements from arrays: ids (ne,), conn (ne, 2) node ids; family "element" (a cable
-        element), "spring", "rspring", "catenary"; keys each one value for all (section=,
-        k=, group=) or an array with a value per element (l0=, N0=, s0=, eps0=, k= ...)."""
+        """Elements from arrays: ids (ne,), conn (ne, 2) node ids ((ne, k) for a pulley: the
+        ends and k - 2 pulleys); family "element" (a cable element), "spring", "rspring",
+        "catenary", "pulley", "beam"; keys each one value for all (section=, k=, group=,
+        release=) or an array with a value per element (l0=, length=, N0=, s0=, eps0=, k=,
+        H=, sag=, tension=, a beam's n=; a beam's orient= is a "VX,VY,VZ" word, three
+        numbers or an (ne, 3) array). Every family reaches the library in bulk."""
         return self._rows(_rows.Elements(family, ids, conn, keys, _value))
 
     def cable(self, n1, n2, section, n, **keys):

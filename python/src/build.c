@@ -125,22 +125,41 @@ static int column(PyObject *o, Py_buffer *b, Py_ssize_t n, double *spec_value, c
     return 0;
 }
 
-enum { C_IDS, C_CONN, C_L0, C_VALUE, C_K, C_Q, C_FORCE, C_COUNT };
+enum { C_IDS, C_CONN, C_L0, C_VALUE, C_K, C_Q, C_FORCE, C_TARGET, C_ORIENT, C_RELEASE, C_SEGMENTS, C_COUNT };
+
+/* An optional array column of n * per items of format fmt: None or the array (*col). */
+static int column_of(PyObject *o, Py_buffer *b, Py_ssize_t n, char fmt, const void **col, const char *what)
+{
+    *col = NULL;
+    if (o == Py_None) return 0;
+    if (take(o, b, fmt, &n, what)) return -1;
+    *col = b->buf;
+    return 0;
+}
 
 /* add_elements(name, first_line, type, ids int32 (n,), conn int32 (n, nnodes), nnodes,
  * section | None, group | None, prestress kind (0 none, 1 N0, 2 s0, 3 eps0), l0, value,
- * k, q, force): the last five each None, a float, or a float64 array (n,). */
+ * k, q, force, target kind (0 none, 1 H, 2 sag, 3 tension), target value, orient,
+ * release, segments): l0 .. force and the target value each None, a float, or a float64
+ * array (n,); orient None or float64 (n, 3); release and segments None or int32 (n,). */
 PyObject *pyctn_model_add_elements(PyObject *op, PyObject *args)
 {
     pyctn_model *self = (pyctn_model *)op;
     const char *name, *type, *section, *group;
-    int line, nnodes, kind, rc;
+    int line, nnodes, kind, target, rc;
     PyObject *o[C_COUNT];
     Py_buffer b[C_COUNT];
     memset(b, 0, sizeof b);
-    if (!PyArg_ParseTuple(args, "sisOOizziOOOOO", &name, &line, &type, &o[C_IDS], &o[C_CONN], &nnodes, &section, &group,
-                          &kind, &o[C_L0], &o[C_VALUE], &o[C_K], &o[C_Q], &o[C_FORCE]))
+    o[C_TARGET] = o[C_ORIENT] = o[C_RELEASE] = o[C_SEGMENTS] = Py_None;
+    target = 0;
+    if (!PyArg_ParseTuple(args, "sisOOizziOOOOO|iOOOO", &name, &line, &type, &o[C_IDS], &o[C_CONN], &nnodes, &section,
+                          &group, &kind, &o[C_L0], &o[C_VALUE], &o[C_K], &o[C_Q], &o[C_FORCE], &target, &o[C_TARGET],
+                          &o[C_ORIENT], &o[C_RELEASE], &o[C_SEGMENTS]))
         return NULL;
+    if (target < 0 || target > 3) {
+        PyErr_SetString(PyExc_ValueError, "add_elements: target kind 0..3");
+        return NULL;
+    }
     ctn_element_spec spec;
     ctn_element_rows rows;
     ctn_element_spec_init(&spec);
@@ -150,17 +169,26 @@ PyObject *pyctn_model_add_elements(PyObject *op, PyObject *args)
     spec.section = section;
     spec.group = group;
     spec.prestress = (ctn_prestress)kind;
+    spec.target = (ctn_cable_target)target;
+    const void *orient = NULL, *rel = NULL, *seg = NULL;
     Py_ssize_t n = -1, nc;
     int bad = take(o[C_IDS], &b[C_IDS], 'i', &n, "ids") ||
               (nc = n * nnodes, take(o[C_CONN], &b[C_CONN], 'i', &nc, "conn")) ||
               column(o[C_L0], &b[C_L0], n, &spec.l0, &rows.l0, "l0") ||
               column(o[C_VALUE], &b[C_VALUE], n, &spec.prestress_value, &rows.prestress_value, "prestress") ||
               column(o[C_K], &b[C_K], n, &spec.k, &rows.k, "k") || column(o[C_Q], &b[C_Q], n, &spec.q, &rows.q, "q") ||
-              column(o[C_FORCE], &b[C_FORCE], n, &spec.force, &rows.force, "force");
+              column(o[C_FORCE], &b[C_FORCE], n, &spec.force, &rows.force, "force") ||
+              column(o[C_TARGET], &b[C_TARGET], n, &spec.target_value, &rows.target_value, "target") ||
+              column_of(o[C_ORIENT], &b[C_ORIENT], 3 * n, 'd', &orient, "orient") ||
+              column_of(o[C_RELEASE], &b[C_RELEASE], n, 'i', &rel, "release") ||
+              column_of(o[C_SEGMENTS], &b[C_SEGMENTS], n, 'i', &seg, "segments");
     if (bad) {
         release(b, C_COUNT);
         return NULL;
     }
+    rows.orient = orient;
+    rows.release = rel;                      /* int32 bits, read as unsigned (the same size) */
+    rows.segments = seg;
     rows.n = (size_t)n;
     rows.ids = b[C_IDS].buf;
     rows.nodes = b[C_CONN].buf;

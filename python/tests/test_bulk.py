@@ -112,3 +112,68 @@ def test_use_cli_heap_changes_no_result():
     r = subprocess.run([sys.executable, "-c", code, str(PAPER[2])], capture_output=True, text=True, check=True)
     ok, text = r.stdout.split("\n", 1)
     assert ok == "True" and text == catena.read(PAPER[2]).solve().to_json()
+
+
+def families_model(bad=None):
+    """Beams (meshed, an orient per row, a release), catenaries with an H per row, a pulley
+    of four nodes and a rotational spring, each family a block of arrays; bad: one row
+    made wrong (the reader's message expected)."""
+    m = catena.Model(units=("kN", "m"), gravity=(0, 0, -1), name="fam.cable")
+    m.material("m", E=2e8, G=7.7e7)
+    m.material("rope", E=1e5, strain="engineering")
+    m.section("b", material="m", A=1e-2, Iy=1e-4, Iz=2e-4, J=3e-4, w=0.5)
+    m.section("r", material="rope", A=0.01, w=0.01)
+    X = np.array([[0, 0, 0], [6, 0, 0], [12, 0, 0], [0, 5, 0], [30, 5, 2], [0, 9, 0], [40, 9, 0],
+                  [0, 20, 0], [4, 20, 0], [8, 20, 3], [8, 20, -2], [12, 0, -3]], dtype=float)
+    ids = np.array([1, 2, 3, 4, 5, 6, 7, 11, 12, 13, 14, 21])
+    fix = np.array(["xyzrxryrz", "", "xyzrxryrz", "xyz", "xyz", "xyz", "xyz", "xyz", "xyz", "xyz", "", "xyzrxryrz"])
+    m.nodes(ids, X, fix=fix)
+    conn = np.array([[1, 2], [2, 3]])
+    if bad == "beam":
+        conn[1, 1] = 98
+    m.elements([1, 2], conn, family="beam", section="b", orient=np.array([[0, 0, 1], [0, 1, 1.0]]), n=3,
+               release="2:ryrz")
+    m.elements([3, 4], [[4, 5], [6, 7]], family="catenary", section="wire" if bad == "catenary" else "r",
+               H=np.array([5.0, 8.0]), group="cat")
+    m.elements([5], [[11, 12, 13, 99 if bad == "pulley" else 14]], family="pulley", section="r", length=15.0)
+    m.elements([6], [[3, 21]], family="rspring", k=40.0)
+    m.loads([14], [[0, 0, -20.0]])
+    return m
+
+
+def test_every_family_in_bulk(tmp_path):
+    """Each family's block goes in bulk, and solves to the file's JSON bit for bit."""
+    m = families_model()
+    sol = m.solve()
+    assert m._bulk == 6                                      # nodes, four element blocks, loads
+    path = tmp_path / "fam.cable"
+    m.write(path)
+    back = catena.read(path)
+    ref = back.solve()
+    assert sol.converged and ref.converged
+    assert sol.to_json() == ref.to_json()
+    assert np.array_equal(m.l0, back.l0)                     # the catenaries' lengths found
+    assert len(sol.forces) == 10                             # 2 x 3 beams, 2, 1, 1
+
+
+@pytest.mark.parametrize("bad", ["beam", "catenary", "pulley"])
+def test_family_row_errors_are_the_readers(bad):
+    m = families_model(bad)
+    want = reader_error(m)
+    got = bulk_error(m)
+    assert str(got) == str(want) and got.line == want.line and got.path == want.path == "fam.cable"
+    assert m.to_cable().splitlines()[got.line - 1].split()[0] in ("beam", "catenary", "pulley")
+
+
+def test_rows_the_bulk_route_refuses_go_as_text():
+    """A zero orient (the spec's default, the reader's error), a release the reader refuses,
+    n=0: those blocks go through the reader, with its message."""
+    for keys, msg in (({"orient": "0,0,0"}, "orient must not be the zero vector"),
+                      ({"release": "3:rx"}, "release must be END:DOFS"),
+                      ({"n": 0}, "n must be an integer from 1")):
+        m = families_model()
+        blk = m._lines[[i for i, p in enumerate(m._lines) if getattr(p, "family", "") == "beam"][0]]
+        blk.keys.update(keys)
+        blk.words.update({k: str(v) for k, v in keys.items()})
+        got = bulk_error(m)
+        assert msg in str(got) and str(got) == str(reader_error(m)), (keys, str(got))

@@ -1,6 +1,7 @@
 /* Nodes and elements from arrays (ctn_model_add_nodes, ctn_model_add_elements): a row
- * at a time through the one-at-a-time calls, so that every row is checked as they check
- * it, with their messages; the storage reserved once for all rows. */
+ * at a time through the one-at-a-time calls (a beam through ctn_model_add_beam, as the
+ * reader adds one), so that every row is checked as they check it, with their messages;
+ * the storage reserved once for all rows. */
 #include "model/model.h"
 #include "model/idmap.h"
 
@@ -46,6 +47,9 @@ static void row_spec(const ctn_element_rows *r, size_t i, ctn_element_spec *s)
     if (r->k) s->k = r->k[i];
     if (r->q) s->q = r->q[i];
     if (r->force) s->force = r->force[i];
+    if (r->target_value) s->target_value = r->target_value[i];
+    if (r->orient) memcpy(s->orient, r->orient + 3 * i, sizeof s->orient);
+    if (r->release) s->release = r->release[i];
 }
 
 int ctn_model_add_elements(ctn_model *m, const ctn_element_spec *spec, const ctn_element_rows *rows)
@@ -58,14 +62,14 @@ int ctn_model_add_elements(ctn_model *m, const ctn_element_spec *spec, const ctn
     ctn_element_spec_init(&s);
     ctn_spec_copy(&s, sizeof s, spec);
     if (r.n && (!r.ids || !r.nodes || s.nnodes < 1)) return CTN_ERR_INVALID;
-    int origin = m->line, rc = row_lines(m, r.n);
+    int origin = m->line, rc = row_lines(m, r.n), beam = s.type && !strcmp(s.type, "beam");
     if (!rc && r.n) rc = CTN_ARRAY_RESERVE(m->ctx, m->elements, r.n);
     if (!rc && r.n) rc = CTN_ARRAY_RESERVE(m->ctx, m->conn, r.n * (size_t)s.nnodes);
     if (!rc && r.n) rc = ctn_idmap_reserve(m->ctx, &m->element_ids, r.n);
     for (size_t i = 0; i < r.n && !rc; i++) {
         if (origin > 0) m->line = origin + (int)i;
         row_spec(&r, i, &s);
-        rc = ctn_model_add_element_spec(m, &s);
+        rc = beam ? ctn_model_add_beam(m, &s, r.segments ? r.segments[i] : 1) : ctn_model_add_element_spec(m, &s);
     }
     m->line = origin;
     return rc;

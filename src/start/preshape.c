@@ -262,6 +262,16 @@ static int place_chain(const ctn_problem *e, const chains *c, size_t n, double *
     return 1;
 }
 
+/* Whether a wind of the first step loads an interior node of the chain (its loads with
+ * the winds, at the reference geometry, differ from the dead loads). */
+static int chain_windy(const chains *c, size_t n, const double *loads, const double *loadsw)
+{
+    for (size_t i = 1; i + 1 < n; i++)
+        for (size_t j = 0; j < 3; j++)
+            if (loads[3 * (size_t)c->nodes[i] + j] != loadsw[3 * (size_t)c->nodes[i] + j]) return 1;
+    return 0;
+}
+
 /* The generated cable element el belongs to, or NULL. */
 static const ctn_cable *cable_of(const ctn_model *m, int el)
 {
@@ -303,14 +313,18 @@ static int windy(const ctn_model *m, const ctn_cable *cb, const double *loads, c
  * (a chain of equal point loads on a shallow parabola's chords). The loads include the
  * first step's winds at the reference geometry: a span swung by a wind across it starts
  * in the plane of its weight and the drag (issue 27: a swing of 76 degrees stalled the
- * default method from the catenary of the weight alone). Not where an element takes a
+ * default method from the catenary of the weight alone). With `mean` (a chain that a
+ * wind not uniform along it loads: oblique to the span, or along a sagging span) the
+ * loads need not be uniform: the chain starts on the catenary of their mean per length
+ * (the drag on the reference chords averaged, plus the weight) if every node's load lies
+ * within 60 degrees of that mean. Not where an element takes a
  * horizontal load (per projected length: not uniform per length of a sagging member);
  * nor where a node lies beyond the chord against the
  * load (an arch, a von Mises truss: the hanging shape is another equilibrium). 1 if
  * placed. */
 #define CTN_LOADED_EPS 1e-4
 #define CTN_LOADED_SPREAD 1e-3
-static int place_loaded(const ctn_problem *e, const chains *c, size_t n, const double *loads, double *d)
+static int place_loaded(const ctn_problem *e, const chains *c, size_t n, const double *loads, int mean, double *d)
 {
     const ctn_model *m = e->m;
     if (n < 3 || keeps_start(m, c->elems[0])) return 0;
@@ -343,12 +357,22 @@ static int place_loaded(const ctn_problem *e, const chains *c, size_t n, const d
         }
         double x[3] = { q[1] * q0[2] - q[2] * q0[1], q[2] * q0[0] - q[0] * q0[2], q[0] * q0[1] - q[1] * q0[0] };
         double dot = q[0] * q0[0] + q[1] * q0[1] + q[2] * q0[2];
+        if (mean) continue;                          /* checked against the mean below */
         if (!(sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) <= 1e-9 * qn * qn && dot > 0 &&
               fabs(dot / qn - qn) <= CTN_LOADED_SPREAD * qn))
             return 0;
     }
     double tribs = S - 0.5 * (rest_length(e, c->elems[0]) + rest_length(e, c->elems[n - 2]));
     double w = sqrt(W[0] * W[0] + W[1] * W[1] + W[2] * W[2]) / tribs, g[3] = { q0[0] / qn, q0[1] / qn, q0[2] / qn };
+    if (mean) {                                      /* the mean load per length: every node's */
+        if (!(w > 0)) return 0;                      /* within 60 degrees of it */
+        for (int k = 0; k < 3; k++) g[k] = W[k] / (w * tribs);
+        for (size_t i = 1; i + 1 < n; i++) {
+            const double *F = loads + 3 * (size_t)c->nodes[i];
+            double f = sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
+            if (!(F[0] * g[0] + F[1] * g[1] + F[2] * g[2] >= 0.5 * f)) return 0;
+        }
+    }
     const ctn_section *sec = &m->sections.v[e0->section];
     double a[3], b[3], ch[3], c2 = 0;
     current(e, d, c->nodes[0], a);
@@ -502,7 +526,8 @@ int ctn_preshape(ctn_problem *e, double *d, int *count)
             *count += place_dangling(e, &c, n, loads, d);
             continue;
         }
-        *count += place_dangling(e, &c, n, loads, d) || place_loaded(e, &c, n, loadsw, d) ||
+        *count += place_dangling(e, &c, n, loads, d) || place_loaded(e, &c, n, loadsw, 0, d) ||
+                  (chain_windy(&c, n, loads, loadsw) && place_loaded(e, &c, n, loadsw, 1, d)) ||
                   (cb && windy(m, cb, loads, loadsw) && catenary_of_weight(e, cb, &c, loads, d)) ||
                   place_chain(e, &c, n, d);
     }

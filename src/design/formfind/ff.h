@@ -48,6 +48,13 @@ int ctn_ff_check_model(ctn_ff *f);
 /* Targets that no shape balances at a free node whose members are all targeted. */
 int ctn_ff_check_targets(ctn_ff *f);
 
+/* The found net of a `net` line (line, its tokens; raw, its text) as node, element and
+ * set lines (write_net.c). */
+struct ctn_line;
+struct ctn_wbuf;
+int ctn_ff_write_net(ctn_ctx *ctx, const ctn_model *m, struct ctn_wbuf *out, const struct ctn_line *line,
+                     const char *raw);
+
 /* Length of element e in the model's current geometry (as the element computes it). */
 double ctn_ff_length(const ctn_model *m, size_t e);
 

@@ -1,6 +1,6 @@
 /* The found model as a .cable file: the source text line by line, with the lines form
- * finding changed rewritten (node coordinates, l0= in place of q=/force=, cables expanded
- * into their nodes and elements) and every other line copied as it is. Atomic. */
+ * finding changed rewritten (node coordinates, l0= in place of q=/force=, cables and nets
+ * expanded into their nodes and elements, a net's sets as id lists) and every other line copied as it is. Atomic. */
 #include "design/formfind/ff.h"
 #include "io/atomic.h"
 #include "io/parse.h"
@@ -156,9 +156,7 @@ static int write_line(ff_writer *w, const char *raw, char *scratch)
     if (!strcmp(d, "node")) return write_node(w, raw);
     if (!strcmp(d, "element") || !strcmp(d, "spring")) return write_member(w);
     if (!strcmp(d, "cable")) return write_cable(w, raw);
-    if (!strcmp(d, "net"))                          /* its nodes moved: not one line any more */
-        return ctn_error(w->ctx, CTN_ERR_MODEL, "%s:%d: formfind cannot write a net back as its `net` line: give the net as "
-                         "node and element lines (python3 bench/hypar_net.py writes one)", w->m->file, w->line.line);
+    if (!strcmp(d, "net")) return ctn_ff_write_net(w->ctx, w->m, w->out, &w->line, raw);
     ctn_wbuf_puts(w->out, raw);
     ctn_wbuf_putc(w->out, '\n');
     return CTN_OK;
