@@ -157,6 +157,7 @@ int ctn_dyn_rot_setup(ctn_dyn *dy)
             }
             n++;
         }
+        if (!n) return CTN_OK;                        /* every rotation fixed */
         int rc = pass ? CTN_OK : rot_alloc(dy, n);
         if (rc) return rc;
     }
