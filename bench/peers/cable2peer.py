@@ -42,10 +42,17 @@
 #                     vibration); lumped mass (OpenSees' corotTruss default), no damping.
 #                     tcl prints "t UX UY UZ N" of the probes every step; catena-os writes
 #                     the `function`, `step`, `dynamics` and `record` lines.
+#   --motion "NODE DIR TABLE"  (with --dynamics, instead of --release) the fixed node
+#                     NODE moved along DIR (x, y or z) from its static position by the
+#                     table TABLE ("t u" lines, linear between them; a fairlead driven by
+#                     its floater): OpenSees' sp of a Path series of the same points after
+#                     `remove sp` of its fix (constraints Transformation: Plain takes no
+#                     moving support), catena's `function motion table` (the file's
+#                     name, beside the model) and `displace ... fn=motion`.
 # Output of the Tcl script on stdout: "peer iterations=I ok=0 u=UX,UY,UZ N=FORCE R=RX,RY,RZ"
 # (static) or "t UX UY UZ N" rows and the same last line (dynamics); the .inp's .dat holds
 # the probe node's U and the support's RF.
-import sys, math, argparse
+import sys, os, math, argparse
 
 ap = argparse.ArgumentParser()
 ap.add_argument("fmt", choices=("tcl", "catena-os", "inp", "catena-ccx"))
@@ -59,6 +66,7 @@ ap.add_argument("--test", default="NormDispIncr 1.0e-8 100")
 ap.add_argument("--ndm", type=int, default=3)
 ap.add_argument("--dynamics", default="")
 ap.add_argument("--release", default="")
+ap.add_argument("--motion", default="")
 a = ap.parse_args()
 
 mats, secs, nodes, elems, loads = {}, {}, {}, [], []
@@ -131,13 +139,19 @@ def catena(fmt):
     W("".join(rows))
     W("".join("element %d %d %d section=%s%s\n" % (i, n1, n2, s, " eps0=%.17g" % ep if ep else "")
               for (i, n1, n2, s, _) in elems))
-    if a.dynamics:
+    if a.dynamics and a.motion:
+        W("function motion table %s\nstep static\n" % os.path.basename(a.motion.split()[2]))
+    elif a.dynamics:
         W("function release ramp t0=0 t1=%s\nstep static\n" % a.release.split()[4])
     W("".join("load %d %.17g %.17g %.17g\n" % (i, f[0], f[1], f[2]) for (i, f) in loads))
     if a.dynamics:
-        rn, rx, ry, rz, _ = a.release.split()
         dt, tend = a.dynamics.split()
-        W("load %s %s %s %s fn=release\n" % (rn, rx, ry, rz))
+        if a.motion:
+            mn, md, _ = a.motion.split()
+            W("displace %s %s=1 fn=motion\n" % (mn, md))
+        else:
+            rn, rx, ry, rz, _ = a.release.split()
+            W("load %s %s %s %s fn=release\n" % (rn, rx, ry, rz))
         W("dynamics dt=%s t_end=%s method=newmark mass=lumped\n" % (dt, tend))
         W("record node=%d\nrecord element=%d force\n" % (a.probe_node, a.probe_elem))
 
@@ -180,11 +194,21 @@ def tcl():
       "  if {$ok != 0} break\n  incr its [testIter]\n}\n" % n)
     if a.dynamics:
         dt, tend = (float(x) for x in a.dynamics.split())
-        rn, rx, ry, rz, t1 = a.release.split()
         W("loadConst -time 0.0\nwipeAnalysis\n")
-        W("timeSeries Path 2 -time {0.0 %s 1.0e9} -values {0.0 1.0 1.0}\n" % t1)
-        W("pattern Plain 2 2 {\n  load %s %s\n}\n" % (rn, " ".join([rx, ry, rz][:ndm])))
-        W("constraints Plain\nnumberer %s\nsystem %s\ntest %s\nalgorithm Newton\n" % (a.numberer, a.system, a.test))
+        handler = "Plain"
+        if a.motion:
+            mn, md, tab = a.motion.split()
+            k = "xyz".index(md) + 1
+            pts = [l.split() for l in open(tab) if l.strip() and not l.startswith("#")]
+            W("remove sp %s %d\n" % (mn, k))
+            W("timeSeries Path 2 -time {%s} -values {%s}\n" % (" ".join(p[0] for p in pts), " ".join(p[1] for p in pts)))
+            W("pattern Plain 2 2 {\n  sp %s %d 1.0\n}\n" % (mn, k))
+            handler = "Transformation"
+        else:
+            rn, rx, ry, rz, t1 = a.release.split()
+            W("timeSeries Path 2 -time {0.0 %s 1.0e9} -values {0.0 1.0 1.0}\n" % t1)
+            W("pattern Plain 2 2 {\n  load %s %s\n}\n" % (rn, " ".join([rx, ry, rz][:ndm])))
+        W("constraints %s\nnumberer %s\nsystem %s\ntest %s\nalgorithm Newton\n" % (handler, a.numberer, a.system, a.test))
         W("integrator Newmark 0.5 0.25\nanalysis Transient\n")
         W("puts \"0 [probe]\"\n")
         W("for {set k 1} {$k <= %d} {incr k} {\n  set ok [analyze 1 %.17g]\n  if {$ok != 0} break\n"

@@ -206,6 +206,11 @@ const double *ctn_follow_loads(const ctn_follow *f);
 int ctn_follow_solve(ctn_problem *p, const double *b, double *x);
 /* y = (K + shift I - L) x: the operator GMRES solves with. */
 int ctn_follow_apply(ctn_problem *p, const double *x, double *y);
+/* The dynamics' follower loads (analysis/dynamics): the segments under a deformed-
+ * projection hload (0: none, the dynamics drops p->fl); the winds' segments set to no
+ * load at every t (a dynamics takes winds on the relative velocity instead). */
+size_t ctn_follow_hload_count(const ctn_follow *f);
+void ctn_follow_drop_winds(ctn_problem *p);
 
 /* Moments on nodes of composed rotations (spin.c). create: NULL p->sp when no node
  * with three free composed rotations carries a moment (after the linear solver);

@@ -1,5 +1,5 @@
 /* The dynamics analysis's checks of the model (before any solve, at the `dynamics`
- * line): no rotations, no follower loads, the line after the last step, mass (every
+ * line): rotations only with an implicit method and no damping, the line after the last step, mass (every
  * free DOF's for the explicit method, naming a node and a section without it). */
 #include "analysis/dynamics/dynamics.h"
 
@@ -88,11 +88,12 @@ int ctn_dynamics_check(ctn_problem *p, const ctn_dynamics_options *o)
     const ctn_model *m = p->m;
     int rc = check_reaction_records(p);
     if (rc) return rc;
-    if (p->a->map.rot > 0) return ctn_dyn_error(p, o, "dynamics: models with rotations (beam, rspring) are not supported yet");
-    for (size_t h = 0; h < m->hloads.n; h++)
-        if (!m->hloads.v[h].reference)
-            return ctn_dyn_error(p, o, "dynamics: hload on the deformed projection (a load that follows the geometry) is "
-                                       "not supported yet");
+    if (p->a->map.rot > 0 && o->method == CTN_DYN_CENTRAL)
+        return ctn_dyn_error(p, o, "dynamics: method=central does not take rotations (beam, rspring): give an implicit "
+                                   "method (genalpha, hht, newmark)");
+    if (p->a->map.rot > 0 && (o->damping_alpha > 0 || o->damping_beta > 0 || o->modal_count > 0))
+        return ctn_dyn_error(p, o, "dynamics: damping of a model with rotations (beam, rspring) is not supported yet "
+                                   "(take rho_inf < 1 for numerical damping)");
     if ((rc = ctn_dyn_wind_check(p, o))) return rc;
     if (o->line > 0 && (size_t)o->steps_before != m->steps.n)
         return ctn_dyn_error(p, o, "dynamics: give it after the last `step` line (it starts from that step's equilibrium)");

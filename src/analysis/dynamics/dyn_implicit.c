@@ -20,8 +20,9 @@ int ctn_dyn_residual(ctn_dyn *dy, const double *d, int with_K, double *r, int *v
     int rc = ctn_problem_residual(p, d, with_K, &rn, &pi, valid);
     if (rc || !*valid) return rc;
     const int *eq = p->a->map.eq;
+    const double *fh = p->fl ? ctn_follow_loads(p->fl) : NULL;   /* pi took them too */
     for (size_t i = 0; i < p->ns; i++)
-        if (eq[i] >= 0) work += p->fext[i] * d[i];
+        if (eq[i] >= 0) work += fh ? (p->fext[i] + fh[i]) * d[i] : p->fext[i] * d[i];
     dy->U1 = pi + ctn_layout_sum(&p->st, work);         /* pi = U - f_ext . d */
     memcpy(r, p->r, p->ndof * sizeof(double));
     return CTN_OK;
@@ -48,11 +49,12 @@ static void kinematics(ctn_dyn *dy, double h)
     double b = dy->beta, g = dy->gamma;
     for (size_t i = 0; i < p->ns; i++) {
         int q = eq[i];
-        if (q < 0) continue;
+        if (q < 0 || p->a->map.dof_dir[q] >= 3) continue;   /* rotations: dyn_rot.c */
         double a = (dy->d1[i] - dy->d0[i] - h * dy->v0[q] - h * h * (0.5 - b) * dy->a0[q]) / (b * h * h);
         dy->a1[q] = a;
         dy->v1[q] = dy->v0[q] + h * ((1 - g) * dy->a0[q] + g * a);
     }
+    ctn_dyn_rot_kinematics(dy, h);
 }
 
 /* R (dy->R) from r1 = f_ext - f_int(d1); the force scale |f_ext| + |f_int| + |M a1| of
@@ -66,6 +68,7 @@ static void step_residual(ctn_dyn *dy, const double *r1, double *ref)
     ctn_dyn_mass(dy, w, y);                           /* y = M a(n+1-am) */
     double ma = ctn_layout_norm(&p->eq, y);
     for (size_t q = 0; q < n; q++) y[q] = (1 - af) * r1[q] + af * dy->r0[q] - y[q];
+    if (dy->rot) ma = sqrt(ma * ma + ctn_dyn_rot_residual(dy, y));   /* rotary inertia */
     if (ctn_dyn_damped(dy)) {
         for (size_t q = 0; q < n; q++) w[q] = (1 - af) * dy->v1[q] + af * dy->v0[q];
         ctn_dyn_damp(dy, w, dy->w2);
@@ -91,6 +94,7 @@ static int factor_effective(ctn_dyn *dy, double h, int *ok)
     size_t mnz = (size_t)dy->mcol[p->ndof];
     for (size_t k = 0; k < mnz; k++) p->Kx[dy->mslot[k]] += c1 * dy->mval[k];   /* M's nonzeros only */
     for (size_t k = 0; dy->Cx && k < p->a->nnz; k++) p->Kx[k] += c2 * dy->Cx[k];
+    ctn_dyn_rot_tangent(dy, c1);
     ctn_dyn_wind_tangent(dy, c2);
     long col = -1;
     int rc = ctn_problem_factor(p, 0.0, ok, &col);

@@ -47,8 +47,11 @@ int ctn_dyn_modal_setup(ctn_dyn *dy)
         dy->mE = ctn_calloc(p->ctx, r, sizeof(double));
         dy->mS = ctn_calloc(p->ctx, r * r, sizeof(double));
         dy->mpiv = ctn_calloc(p->ctx, r, sizeof(size_t));
+        dy->mG = ctn_calloc(p->ctx, r, sizeof(double));
+        dy->mg = ctn_calloc(p->ctx, n, sizeof(double));
         st = ctn_calloc(p->ctx, p->ns, sizeof(double));
-        if (!dy->mPhi || !dy->mU || !dy->mY || !dy->mE || !dy->mS || !dy->mpiv || !st) rc = CTN_ERR_NOMEM;
+        if (!dy->mPhi || !dy->mU || !dy->mY || !dy->mE || !dy->mS || !dy->mpiv || !dy->mG || !dy->mg || !st)
+            rc = CTN_ERR_NOMEM;
     }
     for (size_t i = 0; !rc && i < r; i++) {
         ctn_mode md;
@@ -59,6 +62,7 @@ int ctn_dyn_modal_setup(ctn_dyn *dy)
         ctn_dyn_mass(dy, dy->mPhi + i * n, dy->mU + i * n);
         double zeta = o->modal_zeta[o->modal_nzeta == 1 ? 0 : i];
         dy->mE[i] = 2 * zeta * md.angular_frequency;
+        dy->mG[i] = md.angular_frequency > 0 ? 2 * zeta / md.angular_frequency : 0.0;
     }
     ctn_free(st);
     ctn_solution_destroy(&tmp);
@@ -83,11 +87,29 @@ void ctn_dyn_modal_damp(const ctn_dyn *dy, const double *x, double *y)
     }
 }
 
-void ctn_dyn_modal_velocity(const ctn_dyn *dy, const double *v, double *w)
+/* z (r) += Omega^-2 Phi^T g, so that E z becomes E U^T v + diag(2 zeta / omega) Phi^T g. */
+static void support_modes(const ctn_dyn *dy, const double *g, double *z)
+{
+    const ctn_problem *p = dy->p;
+    for (size_t i = 0; g && i < dy->mr; i++)
+        if (dy->mE[i] > 0) z[i] += dy->mG[i] / dy->mE[i] * ctn_layout_dot(&p->eq, dy->mPhi + i * p->ndof, g);
+}
+
+void ctn_dyn_modal_support(const ctn_dyn *dy, const double *g, double *y)
+{
+    size_t n = dy->p->ndof;
+    for (size_t i = 0; i < dy->mr; i++) {
+        double c = dy->mG[i] * ctn_layout_dot(&dy->p->eq, dy->mPhi + i * n, g);
+        for (size_t q = 0; q < n; q++) y[q] += c * dy->mU[i * n + q];
+    }
+}
+
+void ctn_dyn_modal_velocity(const ctn_dyn *dy, const double *v, const double *g, double *w)
 {
     size_t n = dy->p->ndof;
     double z[CTN_DYN_MODAL_MAX];
     project(dy, v, z);
+    support_modes(dy, g, z);
     memset(w, 0, n * sizeof(double));
     for (size_t i = 0; i < dy->mr; i++)
         for (size_t q = 0; q < n; q++) w[q] += dy->mE[i] * z[i] * dy->mPhi[i * n + q];

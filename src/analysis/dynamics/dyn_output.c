@@ -112,7 +112,7 @@ int ctn_dyn_output_begin(ctn_dyn *dy)
     dy->sup_M = ctn_malloc(p->ctx, sp.nv + 1, sizeof(double));
     dy->sup_idx = ctn_malloc(p->ctx, (size_t)p->a->maxdof + 1, sizeof(size_t));
     if (!dy->sup_e || !dy->sup_off || !dy->sup_M || !dy->sup_idx) return CTN_ERR_NOMEM;
-    if (dy->o->damping_beta > 0 && !(dy->sup_K = ctn_malloc(p->ctx, sp.nv + 1, sizeof(double)))) return CTN_ERR_NOMEM;
+    if ((dy->o->damping_beta > 0 || (moves && dy->mr)) && !(dy->sup_K = ctn_malloc(p->ctx, sp.nv + 1, sizeof(double)))) return CTN_ERR_NOMEM;
     sp = (sup_pass){ dy, 1, 0, 0 };
     size_t bad = 0;
     if (ctn_asm_loop(p->a, dy->d0, 0, dy->sup_K != NULL, sup_visit, &sp, &bad))
@@ -163,12 +163,21 @@ static void int_visit(void *data, const ctn_asm *a, const ctn_asm_elem *el)
     }
 }
 
-/* Modal damping at the supports: (M w)_s, w = Phi E U^T v on the free DOFs (dy->as as
- * the state-layout scratch, before it is set). */
-static void modal_reactions(ctn_dyn *dy, double *R)
+static void motion_rates(ctn_dyn *dy, double t0, double t1, double wa, double wv);
+
+/* Modal damping at the supports: (M w)_s, w = Phi E U^T (v - v_qs) on the free DOFs (a
+ * moving support's v_qs, ctn_dyn_modal_support) (dy->vs, dy->as as scratch, before they
+ * are set). */
+static void modal_reactions(ctn_dyn *dy, double t, double *R)
 {
     const ctn_problem *p = dy->p;
-    ctn_dyn_modal_velocity(dy, dy->v0, dy->w2);
+    const double *g = NULL;
+    if (dy->fsup && dy->sup_K) {
+        motion_rates(dy, t, t, 1.0, 1.0);
+        ctn_dyn_support_stiffness(dy, dy->vs, dy->mg);
+        g = dy->mg;
+    }
+    ctn_dyn_modal_velocity(dy, dy->v0, g, dy->w2);
     for (size_t i = 0; i < p->ns; i++) dy->as[i] = p->a->map.eq[i] >= 0 ? dy->w2[p->a->map.eq[i]] : 0.0;
     for (size_t k = 0; k < dy->nsup; k++) packed_fixed(dy, dy->sup_e[k], dy->sup_M + dy->sup_off[k], 1.0, dy->as, R);
 }
@@ -183,21 +192,23 @@ int ctn_dyn_reactions(ctn_dyn *dy, double t, double *force)
     memset(R, 0, p->ns * sizeof(double));
     if (force) memset(force, 0, p->a->ne * sizeof(double));
     if (ctn_asm_loop(p->a, dy->d0, CTN_EVAL_STRESS, 0, int_visit, &ip, NULL)) memset(R, 0, p->ns * sizeof(double));
-    if (dy->mr) modal_reactions(dy, R);
+    if (dy->mr) modal_reactions(dy, t, R);
     ctn_dyn_rates(dy, t, dy->v0, dy->a0, dy->vs, dy->as);
     for (size_t k = 0; k < dy->nsup; k++) {
         size_t e = dy->sup_e[k], o = dy->sup_off[k];
         packed_fixed(dy, e, dy->sup_M + o, 1.0, dy->as, R);                  /* M a */
         if (al > 0) packed_fixed(dy, e, dy->sup_M + o, al, dy->vs, R);       /* alpha M v */
-        if (dy->sup_K) packed_fixed(dy, e, dy->sup_K + o, dy->o->damping_beta, dy->vs, R);   /* beta K_0 v */
+        if (dy->sup_K && dy->o->damping_beta > 0)
+            packed_fixed(dy, e, dy->sup_K + o, dy->o->damping_beta, dy->vs, R);   /* beta K_0 v */
     }
     for (size_t i = 0; i < p->a->nn; i++)
         for (int c = 0; c < 3; c++) {
             size_t k = ctn_dofmap_node(&p->a->map, i) + (size_t)c;
             if (eq[k] < 0) R[k] += m->nodes.v[i].mass * (dy->as[k] + al * dy->vs[k]);
         }
+    const double *fh = p->fl ? ctn_follow_loads(p->fl) : NULL;   /* at the last residual */
     for (size_t k = 0; k < p->ns; k++)
-        if (eq[k] < 0) R[k] -= p->fext[k] + (dy->nwind ? dy->wf[k] : 0.0);
+        if (eq[k] < 0) R[k] -= p->fext[k] + (dy->nwind ? dy->wf[k] : 0.0) + (fh ? fh[k] : 0.0);
     return CTN_OK;
 }
 
@@ -277,6 +288,17 @@ void ctn_dyn_support_force(ctn_dyn *dy, double t0, double t1, double wa, double 
         size_t e = dy->sup_e[k], o = dy->sup_off[k];
         packed_free(dy, e, dy->sup_M + o, 1.0, dy->as, dy->fsup);            /* M_fs a_s */
         if (al > 0) packed_free(dy, e, dy->sup_M + o, al, dy->vs, dy->fsup); /* alpha M_fs v_s */
-        if (dy->sup_K) packed_free(dy, e, dy->sup_K + o, dy->o->damping_beta, dy->vs, dy->fsup);   /* beta K_fs v_s */
+        if (dy->sup_K && dy->o->damping_beta > 0)
+            packed_free(dy, e, dy->sup_K + o, dy->o->damping_beta, dy->vs, dy->fsup);   /* beta K_fs v_s */
     }
+    if (dy->mr && dy->sup_K) {                                             /* C_m K^-1 K_fs v_s */
+        ctn_dyn_support_stiffness(dy, dy->vs, dy->mg);
+        ctn_dyn_modal_support(dy, dy->mg, dy->fsup);
+    }
+}
+
+void ctn_dyn_support_stiffness(ctn_dyn *dy, const double *vs, double *g)
+{
+    memset(g, 0, dy->p->ndof * sizeof(double));
+    for (size_t k = 0; k < dy->nsup; k++) packed_free(dy, dy->sup_e[k], dy->sup_K + dy->sup_off[k], 1.0, vs, g);
 }

@@ -74,7 +74,11 @@ void ctn_dyn_start_loads(ctn_dyn *dy)
     memcpy(p->f0, p->f1, p->ns * sizeof(double));
     memcpy(p->p0, p->p1, p->ns * sizeof(double));
     if (p->dT) memcpy(p->dT0, p->dT1, p->a->ne * sizeof(double));
-    if (dy->s->nsteps) ctn_dofmap_from3(&p->a->map, dy->s->steps[dy->s->nsteps - 1].d, dy->d0);
+    if (dy->s->nsteps) {
+        const ctn_step_state *st = &dy->s->steps[dy->s->nsteps - 1];
+        ctn_dofmap_from3(&p->a->map, st->d, dy->d0);
+        if (p->a->map.rot && st->rot) ctn_dofmap_rot_from3(&p->a->map, st->rot, dy->d0);   /* psi */
+    }
     ctn_problem_set_t(p, 1.0, dy->d0);
     ctn_dyn_set_time(dy, 0.0, dy->d0);
     memcpy(dy->fe0, p->fext, p->ns * sizeof(double));
@@ -105,13 +109,17 @@ int ctn_dyn_acceleration(ctn_dyn *dy)
 {
     ctn_problem *p = dy->p;
     ctn_factor_info info = { 0, -1 };
-    int rc = dy->lumped ? CTN_OK : ctn_linsolve_factor(p->ls, dy->Mx, 0.0, &info);
+    if (dy->rot) ctn_dyn_rot_mass_add(dy, 1.0);        /* rotary inertia at d0, spatial */
+    int rc = dy->lumped && !dy->rot ? CTN_OK : ctn_linsolve_factor(p->ls, dy->Mx, 0.0, &info);
+    if (dy->rot) ctn_dyn_rot_mass_add(dy, -1.0);
     p->spd_factor = p->last_definite = 0;
     p->factored_at = NULL;
     ctn_dyn_damp(dy, dy->v0, dy->w2);
     for (size_t q = 0; q < p->ndof; q++) dy->w2[q] = dy->r0[q] - dy->w2[q] - (dy->fsup ? dy->fsup[q] : 0.0);
-    if (!rc && info.ok) return ctn_linsolve_solve(p->ls, dy->w2, dy->a0);
-    for (size_t q = 0; q < p->ndof; q++) dy->a0[q] = dy->diag[q] > 0 ? dy->w2[q] / dy->diag[q] : 0.0;
+    if (!rc && info.ok) rc = ctn_linsolve_solve(p->ls, dy->w2, dy->a0);
+    else
+        for (size_t q = 0; q < p->ndof; q++) dy->a0[q] = dy->diag[q] > 0 ? dy->w2[q] / dy->diag[q] : 0.0;
+    ctn_dyn_rot_start(dy, dy->a0);
     return rc;
 }
 
@@ -131,12 +139,14 @@ int ctn_dyn_start(ctn_dyn *dy)
         ctn_dyn_wind(dy, dy->d0, dy->v0, 0.0, dy->r0);
         memcpy(dy->wf0, dy->wf, p->ns * sizeof(double));
     }
+    if (!rc && valid && p->fl) memcpy(dy->fh0, ctn_follow_loads(p->fl), p->ns * sizeof(double));
     if (!rc && !valid) {
         snprintf(msg, sizeof msg, "dynamics: element %d cannot be evaluated in the start state (a chord of zero length)",
                  p->sum->fail_element);
         return ctn_dyn_error(p, o, msg);
     }
     if (!rc) rc = ctn_asm_mass(p->ctx, p->a, lumped, dy->Mx);
+    if (!rc) rc = ctn_dyn_rot_setup(dy);
     if (!rc) rc = mass_pattern(dy);
     if (rc) return rc;
     ctn_asm_mass_diag(p->a, dy->diag, tot, &bad);

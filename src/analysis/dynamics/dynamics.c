@@ -24,9 +24,10 @@ static void dyn_free(ctn_dyn *dy)
     ctn_free(dy->sup_idx);
     ctn_free(dy->mpiv);
     ctn_free(dy->welem);
+    ctn_dyn_rot_free(dy);
     double *v[] = { dy->Mx, dy->Cx, dy->diag, dy->d0, dy->d1, dy->v0, dy->a0, dy->v1, dy->a1, dy->r0, dy->r1,
-                    dy->R, dy->w, dy->w2, dy->ework, dy->fe0, dy->react, dy->vs, dy->as, dy->sup_M, dy->sup_K, dy->fsup, dy->mPhi, dy->mU, dy->mY, dy->mE, dy->mS, dy->wk, dy->wvel, dy->wD, dy->wf,
-                    dy->wf0, dy->wv };
+                    dy->R, dy->w, dy->w2, dy->ework, dy->fe0, dy->react, dy->vs, dy->as, dy->sup_M, dy->sup_K, dy->fsup, dy->mPhi, dy->mU, dy->mY, dy->mE, dy->mS, dy->mG, dy->mg, dy->wk, dy->wvel, dy->wD, dy->wf,
+                    dy->wf0, dy->wv, dy->fh0 };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
 }
 
@@ -42,6 +43,7 @@ static int dyn_alloc(ctn_dyn *dy)
     dy->fe0 = ctn_calloc(p->ctx, p->ns, sizeof(double));
     dy->Mx = ctn_calloc(p->ctx, nz, sizeof(double));
     dy->ework = ctn_calloc(p->ctx, 3 * (size_t)p->a->maxdof + 16, sizeof(double));
+    if (p->fl && !(dy->fh0 = ctn_calloc(p->ctx, p->ns, sizeof(double)))) return CTN_ERR_NOMEM;
     if (!dy->d0 || !dy->d1 || !dy->fe0 || !dy->Mx || !dy->ework) return CTN_ERR_NOMEM;
     size_t nr = p->m->removals.n;
     if (nr && !(dy->severed = ctn_calloc(p->ctx, nr, 1))) return CTN_ERR_NOMEM;
@@ -53,14 +55,20 @@ static int dyn_alloc(ctn_dyn *dy)
 void ctn_dyn_accept(ctn_dyn *dy, double h, const double *r1)
 {
     ctn_problem *p = dy->p;
-    const int *eq = p->a->map.eq;
+    const int *eq = p->a->map.eq, *dir = p->a->map.dof_dir;
     size_t n = p->ndof;
-    double work = 0;
+    double work = ctn_dyn_rot_work(dy, dy->fe0, p->fext);   /* moments: on the spatial turn */
     for (size_t i = 0; i < p->ns; i++)                   /* the trapezoidal rule (exact for */
-        if (eq[i] >= 0) work += 0.5 * (dy->fe0[i] + p->fext[i]) * (dy->d1[i] - dy->d0[i]);   /* loads held) */
+        if (eq[i] >= 0 && dir[eq[i]] < 3) work += 0.5 * (dy->fe0[i] + p->fext[i]) * (dy->d1[i] - dy->d0[i]);   /* loads held) */
     for (size_t i = 0; dy->nwind && i < p->ns; i++)     /* the drag's work, likewise */
         if (eq[i] >= 0) work += 0.5 * (dy->wf0[i] + dy->wf[i]) * (dy->d1[i] - dy->d0[i]);
     if (dy->nwind) memcpy(dy->wf0, dy->wf, p->ns * sizeof(double));
+    if (p->fl) {                                         /* the follower loads', likewise */
+        const double *fh = ctn_follow_loads(p->fl);
+        for (size_t i = 0; i < p->ns; i++)
+            if (eq[i] >= 0) work += 0.5 * (dy->fh0[i] + fh[i]) * (dy->d1[i] - dy->d0[i]);
+        memcpy(dy->fh0, fh, p->ns * sizeof(double));
+    }
     dy->W += ctn_layout_sum(&p->st, work);
     memcpy(dy->fe0, p->fext, p->ns * sizeof(double));
     if (ctn_dyn_damped(dy)) {
@@ -70,7 +78,7 @@ void ctn_dyn_accept(ctn_dyn *dy, double h, const double *r1)
         dy->D += 0.5 * h * (c0 + ctn_layout_dot(&p->eq, dy->v1, dy->w2));
     }
     ctn_dyn_mass(dy, dy->v1, dy->w2);
-    dy->ek = 0.5 * ctn_layout_dot(&p->eq, dy->v1, dy->w2);
+    dy->ek = 0.5 * ctn_layout_dot(&p->eq, dy->v1, dy->w2) + ctn_dyn_rot_accept(dy);
     dy->U = dy->U1;
     memcpy(dy->d0, dy->d1, p->ns * sizeof(double));
     memcpy(dy->v0, dy->v1, n * sizeof(double));
@@ -171,7 +179,8 @@ int ctn_dynamics_run(ctn_problem *p, ctn_solution *s, const ctn_dynamics_options
 {
     double t0 = ctn_clock();
     ctn_solve_summary *keep = p->sum;
-    ctn_follow *fl = p->fl;                          /* winds: the relative drag instead */
+    ctn_follow *fl = p->fl;                          /* hloads that follow the geometry; */
+    int follow = fl && ctn_follow_hload_count(fl) > 0;   /* winds: the relative drag */
     int overlap = p->overlap;
     ctn_dyn dy;
     memset(&dy, 0, sizeof dy);
@@ -192,11 +201,12 @@ int ctn_dynamics_run(ctn_problem *p, ctn_solution *s, const ctn_dynamics_options
     ctn_problem_settle(p);
     p->overlap = 0;                                  /* K_T is not what is factored */
     int rc = ctn_dynamics_check(p, o);
-    p->fl = NULL;
+    if (!follow) p->fl = NULL;
     if (!rc) rc = dyn_alloc(&dy);
     if (!rc) {
         ctn_dyn_method_params(&dy);
         ctn_dyn_start_loads(&dy);
+        ctn_follow_drop_winds(p);
         rc = ctn_dyn_start(&dy);
     }
     if (!rc) rc = march(&dy);

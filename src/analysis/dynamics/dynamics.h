@@ -47,12 +47,16 @@ typedef struct ctn_dyn {
     double *mS;                   /* r x r: S = I + c2 E U^T Y, LU-factored (pivots mpiv) */
     size_t *mpiv;
     double mc2;                   /* c2 of the factored S */
+    double *mG;                   /* r: 2 zeta_i / omega_i (E Omega^-2: a moving support's */
+    double *mg;                   /* ndof: K_fs v_s, the support velocity's stiffness force) */
     size_t nwind;                 /* relative wind (dyn_wind.c): elements under a wind, */
     size_t *welem;                /* their indices, */
     double *wk, *wvel, *wD;       /* rho cd d / 2, the wind's velocity (3), the last block */
     double *wf, *wf0;             /* state: the drag at the last evaluation, at t_n */
     double *wv;                   /* state: every DOF's velocity (scratch) */
     double t1;                    /* the end time of the step being taken */
+    struct ctn_dyn_rot *rot;      /* finite rotations' inertia (dyn_rot.c), NULL without */
+    double *fh0;                  /* state: the follower loads at t_n (NULL without) */
 } ctn_dyn;
 
 /* A model error at the `dynamics` line (or without a place, from the API) (dyn_check.c). */
@@ -107,6 +111,9 @@ int ctn_dyn_keep_frame(ctn_dyn *dy, double t);
  * M_fs a_s + C_fs v_s with a_s, v_s weighted wa, wv at t1 (1 - wa, 1 - wv at t0), into
  * dy->fsup (nothing when no support moves). */
 void ctn_dyn_support_force(ctn_dyn *dy, double t0, double t1, double wa, double wv);
+/* g (ndof) = K_fs v_s with the fixed DOFs' velocities vs (state layout, 0 on the free
+ * DOFs), K the support elements' start tangent (modal damping only). */
+void ctn_dyn_support_stiffness(ctn_dyn *dy, const double *vs, double *g);
 
 /* dyn_modal.c: modal damping's modes about d0 (after M's own pattern and before a0);
  * y += C_m x (ndof); w = Phi E U^T v (ndof: the modal damping force is M w, for the
@@ -114,7 +121,13 @@ void ctn_dyn_support_force(ctn_dyn *dy, double t0, double t1, double wa, double 
  * singular); x = A^-1 b corrected into (A + c2 C_m)^-1 b. Each a no-op without it. */
 int ctn_dyn_modal_setup(ctn_dyn *dy);
 void ctn_dyn_modal_damp(const ctn_dyn *dy, const double *x, double *y);
-void ctn_dyn_modal_velocity(const ctn_dyn *dy, const double *v, double *w);
+void ctn_dyn_modal_velocity(const ctn_dyn *dy, const double *v, const double *g, double *w);
+/* A moving support under modal damping: the modes damp the free DOFs' velocity relative
+ * to the quasi-static one, v_qs = -K^-1 K_fs v_s, i.e. C_m (v - v_qs) = C_m v + C_m K^-1
+ * g with g = K_fs v_s; C_m K^-1 = U E Omega^-2 Phi^T (K Phi = M Phi Omega^2, K and the
+ * modes the start's), so y += U diag(2 zeta_i / omega_i) Phi^T g (ndof). The same in
+ * modal_velocity: w = Phi E (U^T v + Omega^-2 Phi^T g) (g NULL: none). */
+void ctn_dyn_modal_support(const ctn_dyn *dy, const double *g, double *y);
 int ctn_dyn_modal_factor(ctn_dyn *dy, double c2, int *ok);
 void ctn_dyn_modal_correct(const ctn_dyn *dy, double *x);
 /* dyn_wind.c: the winds a dynamics can take (CTN_ERR_MODEL otherwise); the elements under
@@ -125,6 +138,25 @@ int ctn_dyn_wind_check(const ctn_problem *p, const ctn_dynamics_options *o);
 int ctn_dyn_wind_setup(ctn_dyn *dy);
 void ctn_dyn_wind(ctn_dyn *dy, const double *d, const double *v, double t, double *r);
 void ctn_dyn_wind_tangent(ctn_dyn *dy, double c2);
+
+/* dyn_rot.c: the nodes with free rotations, their rotary inertia J (material frame) from
+ * the families' lumped mass, M's rotation entries zeroed (before M's own pattern; a no-op
+ * without rotations); the material W1, A1 of the step's iterate d1 (Newmark on the
+ * rotation increment log(R0^T R1)) and their inertia moments I1 = R1 (J A1 + W1 x J W1)
+ * (also into v1, a1 at their equations); y -= (1 - am) I1 + am I0 (returns the sum of
+ * squares of what it took); c1 R1 J R1^T into the tangent p->Kx; the step accepted (the
+ * rotational kinetic energy at t_n+1 returned); the work of forces f0, f1 (state) over
+ * the spatial rotation increments of the step; c R0 J R0^T into dy->Mx (at d0); from the
+ * spatial accelerations a (ndof) at the start, A0 = R0^T a (a takes A0), W0 = 0. */
+int ctn_dyn_rot_setup(ctn_dyn *dy);
+void ctn_dyn_rot_free(ctn_dyn *dy);
+void ctn_dyn_rot_kinematics(ctn_dyn *dy, double h);
+double ctn_dyn_rot_residual(const ctn_dyn *dy, double *y);
+void ctn_dyn_rot_tangent(ctn_dyn *dy, double c1);
+double ctn_dyn_rot_accept(ctn_dyn *dy);
+double ctn_dyn_rot_work(const ctn_dyn *dy, const double *f0, const double *f1);
+void ctn_dyn_rot_mass_add(ctn_dyn *dy, double scale);
+void ctn_dyn_rot_start(ctn_dyn *dy, double *a);
 
 /* Whether the analysis has damping (Rayleigh's or modal). */
 static inline int ctn_dyn_damped(const ctn_dyn *dy) { return dy->Cx != NULL || dy->mr > 0; }

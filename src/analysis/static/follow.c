@@ -275,3 +275,17 @@ int ctn_follow_solve(ctn_problem *p, const double *b, double *x)
 }
 
 const double *ctn_follow_loads(const ctn_follow *f) { return f->fh; }
+
+size_t ctn_follow_hload_count(const ctn_follow *f)
+{
+    size_t n = 0;
+    for (size_t s = 0; f && s < f->n; s++) n += f->src[s] < 0;
+    return n;
+}
+
+void ctn_follow_drop_winds(ctn_problem *p)
+{
+    struct ctn_follow *f = p->fl;
+    for (size_t s = 0; f && s < f->n; s++)
+        if (f->src[s] >= 0) f->qa[s] = f->qb[s] = f->qt[s] = 0.0;
+}
