@@ -63,6 +63,8 @@ struct ctn_problem {
     double *r, *dd, *w;        /* ndof: residual, increment, work */
     double *dsave;             /* state: saved state for line searches and cut-backs */
     double *react;             /* state: reactions being stored */
+    double *wd;                /* state: the globalized corrector's watchdog checkpoint
+                                  (correct.c), NULL without finite rotations */
     double *v3;                /* 3 nn: model-side scratch (loads, results) */
     double lref;               /* bounding-box diagonal of the reference geometry */
     double kscale;             /* largest element stiffness scale */
@@ -209,6 +211,10 @@ int ctn_follow_apply(ctn_problem *p, const double *x, double *y);
  * solve: x = (K + shift I (- L) - [g]x / 2)^-1 b by GMRES preconditioned by the
  * factorization, g the internal moments of the last residual. */
 int ctn_spin_create(ctn_problem *p);
+/* 1 if the model has such moments (ctn_spin_create will make p->sp): their tangent's
+ * symmetric part may be indefinite on a stable path, so the default factorization of
+ * the preconditioner is LDL' (problem.c). Needs p->a only. */
+int ctn_spin_wanted(const ctn_problem *p);
 void ctn_spin_destroy(ctn_spin **s);
 int ctn_spin_solve(ctn_problem *p, const double *b, double *x);
 

@@ -81,6 +81,11 @@ static int precond(void *data, const double *x, double *y)
     return ctn_linsolve_solve(p->ls, x, y);
 }
 
+int ctn_spin_wanted(const ctn_problem *p)
+{
+    return p->a->map.rot_update == ctn_rot_update_compose && scan(p, NULL) > 0;
+}
+
 int ctn_spin_create(ctn_problem *p)
 {
     if (p->a->map.rot_update != ctn_rot_update_compose || !p->ls) return CTN_OK;
