@@ -217,6 +217,14 @@ int ctn_spin_create(ctn_problem *p);
 int ctn_spin_wanted(const ctn_problem *p);
 void ctn_spin_destroy(ctn_spin **s);
 int ctn_spin_solve(ctn_problem *p, const double *b, double *x);
+/* The sign (1, -1; 0 if singular) of det(K - [g]x / 2 at the spun nodes), the whole
+ * non-symmetric tangent, from f, a factorization of K (p->Kx, g in p->fint at the same
+ * state) with neg negative pivots: det(K) det(I + S E^T K^-1 E) (the matrix determinant
+ * lemma; E selects the spun nodes' rotations, S their blocks), 3 solves per spun node.
+ * Needs p->sp. */
+int ctn_spin_det_sign(ctn_problem *p, ctn_linsolve *f, long neg, int *sign);
+/* The largest |g| over the spun nodes (the 2-norm of the skew part is half of it). */
+double ctn_spin_moment_max(const ctn_problem *p);
 
 /* The right-hand side -g (ndof) of the stretch correction of a step dd (ndof) from d to
  * dtrial (states) in the members of the families of finite rotations (stretch.c);
