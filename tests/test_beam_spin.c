@@ -13,6 +13,15 @@
  *   length): tip at (m.e1) m L + (1 - cos) / Omega m x e1_perp + sin / Omega e1_perp, one
  *   full turn; the error falls as h^2 (n = 10, 20, 40); the clamp's moment is -m (a
  *   moment conjugate to the rotation vector would leave it off by the Jacobian of exp).
+ * All under the default strategy (`auto`) and linear solver; the full circle about z
+ * and the helix at n = 20 also by pure Newton: `auto` within 3 iterations of it (its
+ * merit rejected Newton's steps here and it did not converge in 580 iterations:
+ * analysis/static/correct.c, the watchdog).
+ * Stability with fixed moments (analysis/stability/stability.c): the full circle and the
+ * helix are stable (the whole non-symmetric tangent's determinant; the symmetric part
+ * alone has 2 negative eigenvalues at the full circle), and a column with a negligible
+ * fixed torque keeps the symmetric count: 0, 1, 2 below, between and above its two
+ * Euler loads.
  * ctest-cost: 3 */
 #include "check.h"
 #include "run_text.h"
@@ -22,9 +31,11 @@
 #define PI 3.14159265358979323846
 
 /* A cantilever (L = 10, EI = 1e5, GJ = 5e4) of n elements, the tip free, under the end
- * moment m in `steps` steps of pure Newton; the tip's displacement u and rotation
- * vector psi, the clamp's reaction moment mr. 1 if it did not solve. */
-static int cantilever(int n, const double m[3], int steps, double u[3], double psi[3], double mr[3])
+ * moment m in `steps` steps of the default strategy (of pure Newton if newton); the tip's
+ * displacement u and rotation vector psi, the clamp's reaction moment mr, the
+ * iterations in *its. 1 if it did not solve. */
+static int solve_cantilever(int n, const double m[3], int steps, int newton, double u[3], double psi[3], double mr[3],
+                            int *its, ctn_stability *stab)
 {
     char text[1024];
     snprintf(text, sizeof text,
@@ -34,9 +45,11 @@ static int cantilever(int n, const double m[3], int steps, double u[3], double p
              "node 2 10 0 0\n"
              "beam 1 1 2 section=s orient=0,0,1 n=%d\n"
              "load 2 0 0 0 %.17g %.17g %.17g\n"
-             "solve method=newton linear_solver=cholmod-ldl steps=%d cutbacks=8\n", n, m[0], m[1], m[2], steps);
+             "solve %ssteps=%d\n", n, m[0], m[1], m[2], newton ? "method=newton linear_solver=cholmod-ldl " : "",
+             steps);
     run r = run_text("spin", text);
     ctn_step_result st;
+    ctn_solve_summary sum;
     const double *th = NULL, *mo = NULL;
     int bad = r.rc || ctn_solution_step(r.s, 0, &st) || ctn_solution_step_rotations(r.s, 0, &th, &mo);
     CHECK_MSG(!bad, "%s", r.ctx ? ctn_ctx_message(r.ctx) : "");
@@ -45,8 +58,33 @@ static int cantilever(int n, const double m[3], int steps, double u[3], double p
         psi[k] = th[3 + k];
         mr[k] = ctn_solution_reaction_moments(r.s)[k];
     }
+    if (!bad) {
+        ctn_solution_summary(r.s, &sum);
+        *its = sum.iterations;
+        CHECK(ctn_solution_stability(r.s, stab) == CTN_OK);
+    }
     done(&r);
     return bad;
+}
+
+static int cantilever(int n, const double m[3], int steps, double u[3], double psi[3], double mr[3])
+{
+    int its;
+    ctn_stability st;
+    return solve_cantilever(n, m, steps, 0, u, psi, mr, &its, &st);
+}
+
+/* The default strategy's iterations against pure Newton's on the same model. */
+static void against_newton(const char *what, int n, const double m[3], int steps)
+{
+    double u[3], psi[3], mr[3];
+    int a = 0, nw = 0;
+    ctn_stability st;
+    if (solve_cantilever(n, m, steps, 1, u, psi, mr, &nw, &st) || solve_cantilever(n, m, steps, 0, u, psi, mr, &a, &st)) return;
+    printf("%s: %d iterations (auto), %d (pure Newton); stable %d\n", what, a, nw, st.stable);
+    CHECK(a <= nw + 3);
+    CHECK(st.stable && st.negative == 0);   /* the path is unique: its whole tangent never
+                                               singular, so as definite as at the start */
 }
 
 /* The full circle about the unit axis a (across the member). */
@@ -88,11 +126,41 @@ static double helix_error(int n, int steps)
     return sqrt(e);
 }
 
+/* A cantilever column (Iy = 2 Iz) under an axial tip load P, with a small fixed torque
+ * (1e-6: the tip's rotations spun, the tangent's skew part negligible), straight:
+ * stable below the weak Euler load pi^2 E Iz / (4 L^2) = 1233.7, one negative
+ * eigenvalue between it and the strong one 2467.4, two above (the determinant's sign
+ * alone would call that stable). */
+static void column(double P, long negative)
+{
+    char text[1024];
+    snprintf(text, sizeof text,
+             "material m E=1e7 G=5e6\n"
+             "section s material=m A=1 Iy=1e-2 Iz=5e-3 J=1e-2\n"
+             "node 1 0 0 0 fix=xyzrxryrz\nnode 2 10 0 0\n"
+             "beam 1 1 2 section=s orient=0,0,1 n=10\n"
+             "load 2 %.17g 0 0 1e-6 0 0\n", -P);
+    run r = run_text("column", text);
+    ctn_stability st;
+    CHECK_MSG(r.rc == CTN_OK, "%s", r.ctx ? ctn_ctx_message(r.ctx) : "");
+    if (!r.rc && ctn_solution_stability(r.s, &st) == CTN_OK) {
+        printf("column P = %g: stable %d, %ld negative\n", P, st.stable, st.negative);
+        CHECK(st.stable == (negative == 0) && st.negative == negative);
+    }
+    done(&r);
+}
+
 int main(void)
 {
     const double z[3] = { 0, 0, 1 }, skew[3] = { 0, 1 / sqrt(2.0), 1 / sqrt(2.0) };
     full_circle(z);
     full_circle(skew);
+    const double M = 2 * PI * 1e5 / 10, s = 1 / sqrt(2.0), mz[3] = { 0, 0, M }, mh[3] = { M * s, 0, M * s };
+    against_newton("full circle about z", 20, mz, 20);
+    against_newton("helix, n = 20", 20, mh, 20);
+    column(1000, 0);
+    column(1800, 1);
+    column(3000, 2);
     double e10 = helix_error(10, 20), e20 = helix_error(20, 20), e40 = helix_error(40, 40);
     printf("helix: tip error %.4g %.4g %.4g (n = 10, 20, 40), ratios %.3f %.3f\n", e10, e20, e40, e10 / e20,
            e20 / e40);

@@ -226,9 +226,21 @@ static double beam_stiffness(const void *props)
     return p->EA / p->L0;
 }
 
+/* A turn db of the chord (an error eps (|u_a| + |u_b| + 2 L) / L) moves both local end
+ * rotations by db: end moments dU/dt = (2 c0 + c1) db about each axis, shears twice
+ * that over L; 2 c0 + c1 = 6 E I / L for Euler-Bernoulli, so 12 E I / L^3 per unit of
+ * chord error. */
+static double beam_round_stiffness(const void *props)
+{
+    const ctn_beam_props *p = props;
+    double b = fmax(2 * p->cy0 + p->cy1, 2 * p->cz0 + p->cz1) * 2 / (p->L0 * p->L0);
+    return fmax(p->EA / p->L0, b);
+}
+
 const ctn_element_ops ctn_beam3_ops = {
     .name = "beam", .nnodes = 2, .ndof_node = 6, .props_size = sizeof(ctn_beam_props),
     .flags = CTN_ELEM_SECTION | CTN_ELEM_FINITE_ROTATION,
     .check = beam_check, .params = beam_params, .setup = beam_setup, .eval = ctn_beam_eval, .load = beam_load,
     .stiffness = beam_stiffness, .mass = beam_mass, .line_load = beam_line_load,
+    .round_stiffness = beam_round_stiffness,
 };

@@ -107,6 +107,11 @@ typedef struct ctn_element_ops {
     void (*line_load)(const ctn_model *m, size_t e, const double q[3], double *f, double *M);
     int (*eval_axial)(const void *props, unsigned mode, const double *X, const double *u, double *f,
                       double *kk, ctn_elem_state *st);
+    /* Optional: the stiffness scale of the element's forces against an error in its
+     * chord (its nodes' positions), for the residual's round-off floor
+     * (analysis/static/floor.c): a beam's transverse 12 E I / L^3 where that exceeds
+     * E A / L (elements shorter than sqrt(12 I / A)). NULL: stiffness. */
+    double (*round_stiffness)(const void *props);
     /* Optional: sever the member (a cable that breaks, in a dynamics analysis): its force,
      * stiffness and energy zero from now on, its mass kept; setup restores it. NULL: the
      * family cannot be removed. */

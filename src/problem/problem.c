@@ -61,6 +61,8 @@ static int alloc_vectors(ctn_problem *p)
     if (!(p->Kx = ctn_calloc(ctx, p->a->nnz ? p->a->nnz : 1, sizeof(double)))) return CTN_ERR_NOMEM;
     p->K = (ctn_dmat){ &p->eq, p->a->colptr, p->a->rowind, p->Kx };
     if (!(p->in_chain = chain_members(p))) return CTN_ERR_NOMEM;
+    if (p->a->map.rot_update == ctn_rot_update_compose && !(p->wd = ctn_calloc(ctx, p->ns, sizeof(double))))
+        return CTN_ERR_NOMEM;
     double **vt[] = { &p->dT0, &p->dT1, &p->dT };
     for (size_t i = 0; i < 3 && p->m->tloads.n; i++)
         if (!(*vt[i] = ctn_calloc(ctx, p->a->ne, sizeof(double)))) return CTN_ERR_NOMEM;
@@ -82,8 +84,13 @@ static int setup(ctn_problem *p)
     p->lref = model_size(p->m);
     p->kscale = p->a->kscale;
     if ((rc = ctn_follow_create(p))) return rc;
-    const char *name = ctn_linsolve_default(p->ctx, p->opt.linear_solver ? p->opt.linear_solver
-                                                                        : p->strategy->linear_solver);
+    /* Fixed moments on spun nodes (spin.c): a rolled-up cantilever's equilibrium is
+     * stable with the symmetric part of its tangent indefinite, where LL' fails at any
+     * small shift and the globalized corrector can never take Newton's step (not
+     * converged in 850 iterations): LDL' then, as arc-length's. */
+    const char *given = p->opt.linear_solver ? p->opt.linear_solver : p->strategy->linear_solver;
+    if (!p->opt.linear_solver && !strcmp(given, "cholmod") && ctn_spin_wanted(p)) given = "cholmod-ldl";
+    const char *name = ctn_linsolve_default(p->ctx, given);
     p->ls_name = name;
     if (p->ndof == 0) return CTN_OK;        /* statically determinate: nothing to factor */
     ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
@@ -178,7 +185,7 @@ void ctn_problem_destroy(ctn_problem **pp)
     ctn_follow_destroy(&p->fl);
     ctn_spin_destroy(&p->sp);
     double *v[] = { p->fint, p->fext, p->f0, p->f1, p->p0, p->p1, p->dsave, p->react, p->r, p->dd, p->w, p->v3, p->Kx,
-                    p->dT0, p->dT1, p->dT, p->cg };
+                    p->dT0, p->dT1, p->dT, p->cg, p->wd };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
     ctn_free(p->in_chain);
     ctn_free(p);

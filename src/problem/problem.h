@@ -63,6 +63,8 @@ struct ctn_problem {
     double *r, *dd, *w;        /* ndof: residual, increment, work */
     double *dsave;             /* state: saved state for line searches and cut-backs */
     double *react;             /* state: reactions being stored */
+    double *wd;                /* state: the globalized corrector's watchdog checkpoint
+                                  (correct.c), NULL without finite rotations */
     double *v3;                /* 3 nn: model-side scratch (loads, results) */
     double lref;               /* bounding-box diagonal of the reference geometry */
     double kscale;             /* largest element stiffness scale */
@@ -217,8 +219,20 @@ void ctn_follow_drop_winds(ctn_problem *p);
  * solve: x = (K + shift I (- L) - [g]x / 2)^-1 b by GMRES preconditioned by the
  * factorization, g the internal moments of the last residual. */
 int ctn_spin_create(ctn_problem *p);
+/* 1 if the model has such moments (ctn_spin_create will make p->sp): their tangent's
+ * symmetric part may be indefinite on a stable path, so the default factorization of
+ * the preconditioner is LDL' (problem.c). Needs p->a only. */
+int ctn_spin_wanted(const ctn_problem *p);
 void ctn_spin_destroy(ctn_spin **s);
 int ctn_spin_solve(ctn_problem *p, const double *b, double *x);
+/* The sign (1, -1; 0 if singular) of det(K - [g]x / 2 at the spun nodes), the whole
+ * non-symmetric tangent, from f, a factorization of K (p->Kx, g in p->fint at the same
+ * state) with neg negative pivots: det(K) det(I + S E^T K^-1 E) (the matrix determinant
+ * lemma; E selects the spun nodes' rotations, S their blocks), 3 solves per spun node.
+ * Needs p->sp. */
+int ctn_spin_det_sign(ctn_problem *p, ctn_linsolve *f, long neg, int *sign);
+/* The largest |g| over the spun nodes (the 2-norm of the skew part is half of it). */
+double ctn_spin_moment_max(const ctn_problem *p);
 
 /* The right-hand side -g (ndof) of the stretch correction of a step dd (ndof) from d to
  * dtrial (states) in the members of the families of finite rotations (stretch.c);

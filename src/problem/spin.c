@@ -16,6 +16,7 @@
  * moment with all three rotations free get the term. */
 #include "problem/problem.h"
 
+#include <math.h>
 #include <string.h>
 
 #define CTN_SPIN_M 30             /* Krylov vectors per cycle */
@@ -81,6 +82,11 @@ static int precond(void *data, const double *x, double *y)
     return ctn_linsolve_solve(p->ls, x, y);
 }
 
+int ctn_spin_wanted(const ctn_problem *p)
+{
+    return p->a->map.rot_update == ctn_rot_update_compose && scan(p, NULL) > 0;
+}
+
 int ctn_spin_create(ctn_problem *p)
 {
     if (p->a->map.rot_update != ctn_rot_update_compose || !p->ls) return CTN_OK;
@@ -120,4 +126,67 @@ int ctn_spin_solve(ctn_problem *p, const double *b, double *x)
     int rc = ctn_gmres_solve(&p->sp->gm, b, x, CTN_SPIN_RTOL, CTN_SPIN_CYCLES, &rel, &iters);
     p->sum->solves += iters + 1;
     return rc;
+}
+
+/* The sign of the determinant of the n x n matrix A (column-major, overwritten): LU with
+ * partial pivoting; 0 when a pivot vanishes. */
+static int det_sign(double *A, size_t n)
+{
+    int sign = 1;
+    for (size_t k = 0; k < n; k++) {
+        size_t piv = k;
+        for (size_t i = k + 1; i < n; i++)
+            if (fabs(A[k * n + i]) > fabs(A[k * n + piv])) piv = i;
+        if (!(A[k * n + piv] != 0)) return 0;
+        if (piv != k) {
+            sign = -sign;
+            for (size_t j = 0; j < n; j++) {
+                double t = A[j * n + k];
+                A[j * n + k] = A[j * n + piv];
+                A[j * n + piv] = t;
+            }
+        }
+        if (A[k * n + k] < 0) sign = -sign;
+        for (size_t i = k + 1; i < n; i++) {
+            double l = A[k * n + i] / A[k * n + k];
+            for (size_t j = k + 1; j < n; j++) A[j * n + i] -= l * A[j * n + k];
+        }
+    }
+    return sign;
+}
+
+int ctn_spin_det_sign(ctn_problem *p, ctn_linsolve *f, long neg, int *sign)
+{
+    const ctn_spin *s = p->sp;
+    size_t m = 3 * s->n;
+    double *W = ctn_calloc(p->ctx, m * m + p->ndof, sizeof(double)), *x = W + m * m;
+    if (!W) return CTN_ERR_NOMEM;
+    int rc = CTN_OK;
+    for (size_t c = 0; c < m && !rc; c++) {      /* W = I + S E^T K^-1 E, column c */
+        memset(x, 0, p->ndof * sizeof(double));
+        x[s->eq[c]] = 1;
+        if ((rc = ctn_linsolve_solve(f, x, x))) break;
+        for (size_t i = 0; i < s->n; i++) {       /* S_i y = -[g_i]x y / 2 = (y x g_i) / 2 */
+            const int *q = s->eq + 3 * i;
+            const double *g = p->fint + s->st[i];
+            for (int k = 0; k < 3; k++) {
+                int a = (k + 1) % 3, b = (k + 2) % 3;
+                W[c * m + 3 * i + (size_t)k] = 0.5 * (x[q[a]] * g[b] - x[q[b]] * g[a]) + (c == 3 * i + (size_t)k);
+            }
+        }
+    }
+    if (!rc) *sign = (neg % 2 ? -1 : 1) * det_sign(W, m);
+    ctn_free(W);
+    return rc;
+}
+
+double ctn_spin_moment_max(const ctn_problem *p)
+{
+    const ctn_spin *s = p->sp;
+    double m = 0;
+    for (size_t i = 0; i < s->n; i++) {
+        const double *g = p->fint + s->st[i];
+        m = fmax(m, sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]));
+    }
+    return m;
 }

@@ -13,7 +13,12 @@
 #   member) and the crowd; four increasing frequencies; a buckling factor above 1;
 # - examples/structures/transmission_towers.cable: each tower's base holds 2 H of its two
 #   conductors (H = 25 by the targets) before the wind; the wind q times the conductors'
-#   unstressed length, half at each tower; no moment at the strings' hinges.
+#   unstressed length, half at each tower; no moment at the strings' hinges;
+# - a cantilever of 1000 beams (L = 10, 0.1 m square steel, elements of 0.01 m whose
+#   transverse stiffness 12 E I / l^3 is 100 times E A / l) under P = 0.01 E I / L^2:
+#   converged by the default method (its residual at the round-off floor of those
+#   elements; it stopped with exit 3 when the floor took E A / l and N alone), the tip
+#   at P L^3 / (3 E I) to 1e-4 (the geometric non-linearity is 1e-5).
 # Prints "N passed, N failed"; exit 1 on any failure.
 set -u
 
@@ -116,5 +121,25 @@ ins = [e for e in w["elements"] if e.get("group") == "insulators"]
 assert all(e["end_forces_local"][0][4] == 0 and e["end_forces_local"][0][5] == 0 for e in ins), ins   # the hinges
 PYEOF
 finish "transmission_towers: 2 H at each base, the wind shared, hinged strings"
+
+"$PY" - >"$T/fine.cable" <<'PYEOF'
+E, b, n, L = 2.1e8, 0.1, 1000, 10.0
+I = b ** 4 / 12
+print("units kN m\nmaterial steel E=%.17g nu=0.3" % E)
+print("section sq material=steel A=%.17g Iy=%.17g Iz=%.17g J=%.17g" % (b * b, I, I, 0.1406 * b ** 4))
+print("node 1 0 0 0 fix=xyzrxryrz\nnode 2 %.17g 0 0\nbeam 1 1 2 section=sq orient=0,0,1 n=%d" % (L, n))
+print("load 2 0 0 %.17g" % (-0.01 * E * I / L ** 2))
+PYEOF
+"$BIN" solve "$T/fine.cable" --json >"$T/fine.json" 2>"$T/err" || WHY+=("fine cantilever: exit $?: $(head -c 300 "$T/err")")
+"$PY" - "$T/fine.json" >"$T/check" 2>&1 <<'PYEOF' || WHY+=("$(head -n 5 "$T/check")")
+import json, sys
+r = json.load(open(sys.argv[1]))
+n = {p["id"]: p for p in r["nodes"]}
+E, I, L = 2.1e8, 0.1 ** 4 / 12, 10.0
+P = 0.01 * E * I / L ** 2
+assert r["converged"], r["reason"]
+assert abs(n[2]["uz"] + P * L ** 3 / (3 * E * I)) < 1e-4 * P * L ** 3 / (3 * E * I), n[2]
+PYEOF
+finish "1000 short beams: converged at their round-off floor, P L^3 / (3 E I)"
 
 cli_summary

@@ -72,6 +72,54 @@ static int locate_zero(ctn_problem *p, ctn_stability *out)
     return rc;
 }
 
+/* The eigenvalue of K of least magnitude, by inverse iteration on its LDL' factor (the
+ * Rayleigh quotient of the 30th iterate), in *lam. */
+static int least_eigenvalue(ctn_problem *p, ctn_linsolve *ldl, double *lam)
+{
+    double *x = p->r, *y = p->w;                    /* ndof scratch, free after a solve */
+    *lam = 0;
+    for (size_t i = 0; i < p->ndof; i++) x[i] = 1.0 + 1e-3 * (double)(i % 7);
+    for (int it = 0; it < 30; it++) {
+        int rc = ctn_linsolve_solve(ldl, x, x);
+        if (rc) return rc;
+        double n = ctn_layout_norm(&p->eq, x);
+        if (!(n > 0) || !isfinite(n)) return CTN_OK;
+        for (size_t i = 0; i < p->ndof; i++) x[i] /= n;
+    }
+    ctn_problem_symv(p, p->Kx, x, y);
+    *lam = ctn_layout_dot(&p->eq, x, y);
+    return CTN_OK;
+}
+
+/* Fixed moments on spun nodes (problem/spin.c): the whole tangent is K + E S E^T, S the
+ * blocks -[g]x / 2 at those nodes (not symmetric), and K, its symmetric part, may be
+ * indefinite on a stable path (the cantilever rolled up by a fixed end moment: 2
+ * negative eigenvalues of K from half the roll-up on, on a path whose equilibrium is
+ * unique, so whose whole tangent is never singular). By Bauer and Fike (K symmetric),
+ * every eigenvalue of the whole tangent lies within |S| = max |g| / 2 of one of K's:
+ * where K's eigenvalue of least magnitude exceeds that, K's count of negative
+ * eigenvalues is the whole tangent's count of eigenvalues of negative real part, and
+ * stands. Else the skew part can move eigenvalues across the imaginary axis, and the
+ * static (divergence) check is the sign of the whole tangent's determinant through K's
+ * LDL' (ctn_spin_det_sign): negative (an odd number of negative real eigenvalues:
+ * unstable, negative 1) or positive (an even number, taken as none: stable; two real
+ * eigenvalues that cross zero together are not seen); zero is semidefinite. A flutter
+ * instability (a complex pair crossing) is seen by no static check. */
+static int spin_sign(ctn_problem *p, ctn_linsolve *ldl, ctn_stability *out)
+{
+    double lam, skew = 0.5 * ctn_spin_moment_max(p);
+    int sign = 0, rc = least_eigenvalue(p, ldl, &lam);
+    if (rc || fabs(lam) > skew) return rc;
+    if ((rc = ctn_spin_det_sign(p, ldl, out->negative, &sign))) return rc;
+    out->semidefinite = sign == 0;
+    out->negative = sign < 0;
+    if (sign > 0) {
+        out->node = 0;
+        out->dir = -1;
+    }
+    return CTN_OK;
+}
+
 /* Not definite: count the inertia with LDL'. */
 static int inertia(ctn_problem *p, ctn_stability *out)
 {
@@ -87,6 +135,7 @@ static int inertia(ctn_problem *p, ctn_stability *out)
         locate(p, first, out);
         if (!rc && out->semidefinite && first < 0) rc = locate_zero(p, out);
         if (!rc && out->negative > 0) rc = weakest_mode(p, ldl, out);
+        if (!rc && p->sp) rc = spin_sign(p, ldl, out);
     } else if (!rc) {
         out->semidefinite = 1;                      /* an exactly zero pivot */
         locate(p, info.fail_col, out);

@@ -27,6 +27,7 @@
 #define CTN_LM_FALL 0.1
 #define CTN_QUADRATIC 0.1              /* |r| fell at least this much in a full Newton
                                          step: the next may reuse the factorization */
+#define CTN_WATCHDOG 12                /* Newton steps taken on trust from a checkpoint */
 
 typedef struct corrector {
     ctn_problem *e;
@@ -45,6 +46,10 @@ typedef struct corrector {
     int quadratic;      /* the last step was a full Newton step that cut |r| by
                            CTN_QUADRATIC: the next one reuses the factorization */
     double cut;         /* |r| after / before that step */
+    int wd_left;        /* watchdog (finite rotations): Newton steps still taken on trust
+                           from the checkpoint e->wd; 0 when none is open */
+    int wd_spent;       /* a watchdog failed from this state: none until an acceptance */
+    double wd_rn, wd_pi, wd_ref;  /* the checkpoint's |r|, merit and reference */
 } corrector;
 
 /* Raise the shift after a failure (Nielsen: mu *= nu, nu *= 2). */
@@ -57,6 +62,24 @@ static void raise_mu(corrector *c)
         c->mu *= c->nu;
         c->nu *= 2;
     }
+}
+
+/* A watchdog (lm_step) that failed at a state taken on trust where the tangent is not
+ * definite: back to its checkpoint (d, its residual and tangent), the shift raised from
+ * 0 there as after a rejected step. */
+static int watchdog_back(corrector *c)
+{
+    ctn_problem *e = c->e;
+    int valid;
+    memcpy(c->d, e->wd, e->ns * sizeof(double));
+    int rc = ctn_problem_residual(e, c->d, 1, &c->rn, NULL, &valid);
+    if (rc) return rc;
+    c->pi = c->wd_pi;
+    c->wd_left = 0;
+    c->wd_spent = 1;
+    c->mu = 0;
+    raise_mu(c);
+    return CTN_OK;
 }
 
 /* Factorize K + mu I; the globalized corrector raises mu until it is definite. */
@@ -72,6 +95,10 @@ static int factor(corrector *c, int *ok)
             c->s->sum.fail_node = c->e->m->nodes.v[c->e->a->map.dof_node[col]].id;
             c->s->sum.fail_dir = c->e->a->map.dof_dir[col];
             return CTN_OK;
+        }
+        if (c->wd_left) {                        /* on trust, the tangent not definite */
+            if ((rc = watchdog_back(c))) return rc;
+            continue;
         }
         raise_mu(c);
     }
@@ -118,13 +145,35 @@ static double reference(const corrector *c)
     return r;
 }
 
+/* A trial state (|r| rn, merit pi) lowers the merit enough to be accepted: below the
+ * non-monotone reference, or, at round-off, |r| not larger and the merit not higher
+ * than at the start; while a watchdog is open (below), than at its checkpoint. */
+static int acceptable(const corrector *c, double rn, double pi)
+{
+    int wd = c->wd_left > 0;
+    double ref = wd ? c->wd_ref : reference(c), rn0 = wd ? c->wd_rn : c->rn, pi0 = wd ? c->wd_pi : c->pi;
+    /* the potential falls below the reference; or, at round-off, |r| falls while the
+     * potential does not rise, or the step lands within the residual test (a start
+     * already in equilibrium, whose steps are round-off noise) */
+    double noise = 1e-12 * fabs(pi0);
+    return pi < ref || (rn <= rn0 && pi <= pi0 + noise) || (rn <= c->e->opt.tol * c->fref && pi <= pi0 + noise);
+}
+
+/* A watchdog is open, or would open on this step if it were rejected (below). */
+static int trusting(const corrector *c)
+{
+    return c->wd_left > 0 || (c->e->wd && c->mu == 0 && !c->wd_spent);
+}
+
 /* The step of a model of finite rotations (beams: the DOF map composes the rotations)
  * with its stretch correction (stretch.c: a mechanism swung by straight-line steps
  * stretches its members by the square of the turn): where the forces g of the stretch
  * the step did not predict exceed the residual at its start (a swing, not Newton's
  * quadratic end game), dc = (K + mu I)^-1 (-g) on the step's factorization, and
- * d + dd + dc kept when its potential is the lower. c->d, *rn, *pi: the state kept and
- * its residual. */
+ * d + dd + dc kept when its potential is the lower; but where the watchdog would take
+ * the step on trust, only when that makes it acceptable (a correction that does not
+ * cure the step spoils Newton's next one: the roll-up's residual then fell by 2 per
+ * two steps instead of converging). c->d, *rn, *pi: the state kept and its residual. */
 static int second_order(corrector *c, double *rn, double *pi)
 {
     ctn_problem *e = c->e;
@@ -139,7 +188,7 @@ static int second_order(corrector *c, double *rn, double *pi)
         ctn_problem_update(e, c->d, 1.0, e->r);
         if ((rc = ctn_problem_residual(e, c->d, 1, &rn2, &pi2, &valid))) return rc;
         if (e->fl || e->sp) pi2 = 0.5 * rn2 * rn2;          /* no potential: the merit */
-        if (valid && pi2 < *pi) {
+        if (valid && pi2 < *pi && (!trusting(c) || acceptable(c, *rn, *pi) || acceptable(c, rn2, pi2))) {
             *rn = rn2;
             *pi = pi2;
             return CTN_OK;
@@ -151,12 +200,51 @@ static int second_order(corrector *c, double *rn, double *pi)
     return CTN_OK;
 }
 
+/* The watchdog (Chamberlain, Powell, Lemarechal and Pedersen 1982) for a model of
+ * finite rotations, where the merit rejects the Newton steps that converge: a node
+ * turned by a spin moves its neighbours along the tangents of their circles, and the
+ * members stretch by the square of the turn (stretch.c); the potential (or |r|^2)
+ * at the full step then rises, by the members' axial stiffness, and the corrector
+ * crawls on a raised shift (the cantilever rolled into a circle, the helix: not
+ * converged in 580 iterations), where Newton's next step takes the stretch back at
+ * once (the Maratos effect of constrained optimization). So a rejected full Newton step
+ * (no shift) is taken on trust from a checkpoint, as are up to CTN_WATCHDOG - 1 more
+ * Newton steps (a tangent that is not definite on the way fails the watchdog at once,
+ * factor() above: a cantilever loaded at once to a large deflection crawled on shifted
+ * steps on trust, 45 iterations against 25); the first whose merit falls below the
+ * checkpoint's reference closes the watchdog, and if none does the corrector returns
+ * to the checkpoint and raises the shift there.
+ * 1: the step is taken on trust. */
+static int watchdog(corrector *c)
+{
+    ctn_problem *e = c->e;
+    if (c->wd_left > 1) {
+        c->wd_left--;
+        return 1;
+    }
+    if (c->wd_left == 1) {                       /* failed: back to the checkpoint */
+        c->wd_left = 0;
+        c->wd_spent = 1;
+        memcpy(e->dsave, e->wd, e->ns * sizeof(double));
+        c->pi = c->wd_pi;
+        return 0;
+    }
+    if (!e->wd || c->mu != 0 || c->wd_spent) return 0;
+    memcpy(e->wd, e->dsave, e->ns * sizeof(double));
+    c->wd_rn = c->rn;
+    c->wd_pi = c->pi;
+    c->wd_ref = reference(c);
+    c->wd_left = CTN_WATCHDOG;
+    return 1;
+}
+
 /* Levenberg-Marquardt step with the gain ratio rho = actual / predicted decrease of the
  * potential, predicted = (dd.r + mu |dd|^2) / 2. Accept if the potential falls below the
  * non-monotone reference (or, at round-off, if |r| falls while the potential does not
  * rise); mu follows Nielsen's rule on the monotone ratio, except that where the model
  * agrees (rho >= CTN_LM_AGREE) it falls ten times, so that a first rejected step does not
- * condemn a dozen cautious ones (issue 29: the 1e4-element B1 cable 17 -> 12 iterations). */
+ * condemn a dozen cautious ones (issue 29: the 1e4-element B1 cable 17 -> 12 iterations).
+ * While a watchdog is open the test is against its checkpoint. */
 static int lm_step(corrector *c, double *alpha, double *rn, double *pi)
 {
     ctn_problem *e = c->e;
@@ -165,14 +253,17 @@ static int lm_step(corrector *c, double *alpha, double *rn, double *pi)
                         : 0.5 * (ctn_layout_dot(&e->eq, e->r, e->dd) + c->mu * dd2);
     int ok, rc = trial(c, 1.0, 1, rn, pi, &ok);
     *alpha = 0;
-    if (rc || !ok) return rc;
+    if (rc) return rc;
+    if (!ok) {
+        if (c->wd_left) {                        /* an element collapsed: back at once */
+            c->wd_left = 1;
+            watchdog(c);
+        }
+        return CTN_OK;
+    }
     if ((rc = second_order(c, rn, pi))) return rc;
-    double noise = 1e-12 * fabs(c->pi), rho = pred > 0 ? (c->pi - *pi) / pred : -1;
-    /* Accepted: the potential falls below the reference; or, at round-off, |r| falls
-     * while the potential does not rise, or the step lands within the residual test
-     * (a start already in equilibrium, whose steps are round-off noise). */
-    if (*pi < reference(c) || (*rn <= c->rn && *pi <= c->pi + noise) ||
-        (*rn <= e->opt.tol * c->fref && *pi <= c->pi + noise)) {
+    double rho = pred > 0 ? (c->pi - *pi) / pred : -1;
+    if (acceptable(c, *rn, *pi)) {
         /* A plateau: the model predicts no decrease and none came (a slack state under
          * loads without a potential, where the merit |r|^2 / 2 cannot fall until members
          * take up their slack): the step did no harm and says nothing, so it may grow as
@@ -184,8 +275,12 @@ static int lm_step(corrector *c, double *alpha, double *rn, double *pi)
             if (c->mu < 1e-14 * e->kscale) c->mu = 0; /* plain Newton from here */
             c->nu = 2;
         }
+        c->wd_left = 0;
+        c->wd_spent = 0;
         remember(c, *pi);
         *alpha = 1;
+    } else if (watchdog(c)) {
+        *alpha = 1;                              /* on trust: not remembered */
     }
     return CTN_OK;
 }
