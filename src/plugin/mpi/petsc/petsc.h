@@ -37,6 +37,16 @@ void ctn_petsc_rows_free(ctn_petsc_rows *r);
 /* r->val <- Kx at the slots, + shift on the diagonal. */
 void ctn_petsc_rows_fill(ctn_petsc_rows *r, const double *Kx, double shift);
 
+/* A matrix distributed by columns (petsc_cols.c): p this process's columns c0 .. (p->n
+ * of them, row indices global) of the n x n upper triangle. The preallocation of the
+ * same rows (d: in this process's columns, o: in later ranks'; p->n each), and the
+ * values (+ shift on the diagonal) set into A; rows and vals scratch of the longest
+ * column. */
+int ctn_petsc_cols_count(ctn_ctx *ctx, MPI_Comm comm, const ctn_pattern *p, PetscInt n, PetscInt c0, PetscInt *d,
+                         PetscInt *o);
+PetscErrorCode ctn_petsc_cols_set(Mat A, const ctn_pattern *p, PetscInt c0, const double *Kx, double shift,
+                                  PetscInt *rows, PetscScalar *vals);
+
 extern const ctn_linsolve_ops ctn_petsc_mumps_ops, ctn_petsc_ldl_ops, ctn_petsc_cg_ops, ctn_petsc_inertia_ops;
 
 #endif
