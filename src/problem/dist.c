@@ -78,18 +78,21 @@ int ctn_problem_solver_create(ctn_problem *p, const char *name, ctn_la_ordering 
 int ctn_problem_dist_eval(ctn_problem *p, const double *d, unsigned mode, double *Kx, double *U, size_t *bad)
 {
     const ctn_comm *c = ctn_ctx_comm(p->ctx);
-    double u = 0, first;
+    double sums[2] = { 0, 0 }, first = INFINITY;
     size_t b = SIZE_MAX;
-    ctn_asm_gather_eval_nodes(p->a, d, mode, p->q0, p->q1, p->fint, Kx, &u, &b);
-    first = b == SIZE_MAX ? INFINITY : (double)b;
+    ctn_asm_gather_eval_nodes(p->a, d, mode, p->q0, p->q1, p->fint, Kx, &sums[0], &b);
+    sums[1] = b != SIZE_MAX;
+    if (b != SIZE_MAX) first = (double)b;
+    /* one exchange of the energy and the count of ranks with a collapsed element; the
+       least such element only when there is one */
     int rc = c->ops->allgather(c->impl, p->fint, 3 * p->q0, 3 * p->q1);
-    if (!rc) rc = c->ops->allreduce(c->impl, &u, 1, CTN_REDUCE_SUM);
-    if (!rc) rc = c->ops->allreduce(c->impl, &first, 1, CTN_REDUCE_MIN);
+    if (!rc) rc = c->ops->allreduce(c->impl, sums, 2, CTN_REDUCE_SUM);
+    if (!rc && sums[1] > 0) rc = c->ops->allreduce(c->impl, &first, 1, CTN_REDUCE_MIN);
     if (rc) {                                   /* a failed exchange: no valid state */
         p->fint[0] = NAN;
-        u = NAN;
+        sums[0] = NAN;
     }
-    if (U) *U = u;
+    if (U) *U = sums[0];
     if (isinf(first)) return 0;
     *bad = (size_t)first;
     return 1;
