@@ -28,6 +28,10 @@
 #                   command maps none of their libraries, a `petsc` solver asked for
 #                   outside an MPI job is refused naming mpirun, and the module found
 #                   beside an installed command (../lib) runs it.
+# The nets and single cables among them (s250.8777, net_slack, hypar_snow, slack_held_node,
+# paper_E2e22, arclength_singular_start on 1 and 3 ranks) run with the tangent distributed
+# by columns (src/problem/dist.c): each rank assembles its own nodes' columns; the
+# semi-definite stability check of slack_held_node gathers the tangent to name its node.
 # Two models are compared by their verdicts only (converged, reason, stable), their
 # answers being round-off: tests/models/trust/paper_E2e14.cable (E = 2e14: the forces
 # are resolved to 1e-6 by any solver, the round-off floor) and the mode shapes of
