@@ -3,7 +3,9 @@
  * process without one), factored by MUMPS (KSPPREONLY + PCCHOLESKY) or solved by a
  * Krylov method (CG + GAMG), PETSc options passed through (KSPSetFromOptions). The
  * model is replicated: every process holds the whole pattern and values and passes its
- * owned rows; the solution reaches every process whole. The only place that includes
+ * owned rows; or, for a net, the tangent is distributed by columns (create_cols,
+ * petsc_cols.c: each process its own columns' values). The solution reaches every
+ * process whole. The only place that includes
  * PETSc's headers, with comm_mpi.c. */
 #ifndef CTN_PLUGIN_MPI_PETSC_H
 #define CTN_PLUGIN_MPI_PETSC_H
