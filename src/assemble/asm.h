@@ -187,6 +187,14 @@ int ctn_asm_gather_eval(const ctn_asm *a, const double *d, unsigned mode, double
 int ctn_asm_can_feed(const ctn_asm *a);
 int ctn_asm_eval_feed(const ctn_asm *a, const double *d, unsigned mode, double *f, double *Kx, double *U,
                       size_t *bad, ctn_feed *feed);
+/* A process's share of ctn_asm_eval for a model ctn_asm_can_feed assembles (every element
+ * node by node), on the calling thread: the internal forces of nodes q0 .. q1 - 1 (f's
+ * other entries untouched), and, if Kx != NULL, their columns of the tangent from Kx[0]
+ * (the columns of their free DOFs, which are consecutive, in the pattern's order); the
+ * energy of the elements whose lower node is one of them in *U; 1 with the first
+ * collapsed element of theirs in *bad (SIZE_MAX if none). */
+int ctn_asm_gather_eval_nodes(const ctn_asm *a, const double *d, unsigned mode, size_t q0, size_t q1, double *f,
+                              double *Kx, double *U, size_t *bad);
 /* The threads= option the assembly was created under, as the thread policy is asked
  * (core/threads.h): 1 (CTN_ASM_ONE_THREAD), or 0 (auto). */
 int ctn_asm_threads(const ctn_asm *a);

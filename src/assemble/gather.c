@@ -467,3 +467,14 @@ int ctn_asm_eval_feed(const ctn_asm *a, const double *d, unsigned mode, double *
     if (bad && pt.bad != SIZE_MAX) *bad = pt.bad;
     return pt.bad != SIZE_MAX;
 }
+
+int ctn_asm_gather_eval_nodes(const ctn_asm *a, const double *d, unsigned mode, size_t q0, size_t q1, double *f,
+                              double *Kx, double *U, size_t *bad)
+{
+    const ctn_asm_gather *g = a->gather;
+    part pt = { a, d, mode, f, Kx, q0, q1, 0, g->work, g->work + (size_t)g->maxdeg * 6, g->keep, 0.0, SIZE_MAX, NULL };
+    run_part(&pt);
+    *U = pt.U;
+    *bad = pt.bad;
+    return pt.bad != SIZE_MAX;
+}

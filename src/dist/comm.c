@@ -32,7 +32,17 @@ static int serial_ghosts(void *impl, const ctn_layout *lay, double *v)
     return CTN_OK;                               /* one process owns everything */
 }
 
-static const ctn_comm_ops serial_ops = { "serial", serial_rank, serial_size, serial_allreduce, serial_ghosts, NULL, NULL };
+static int serial_allgather(void *impl, double *v, size_t lo, size_t hi)
+{
+    (void)impl;
+    (void)v;
+    (void)lo;
+    (void)hi;
+    return CTN_OK;                               /* one process holds every range */
+}
+
+static const ctn_comm_ops serial_ops = { "serial", serial_rank, serial_size, serial_allreduce, serial_ghosts,
+                                         serial_allgather, NULL, NULL };
 
 const ctn_comm ctn_comm_serial = { &serial_ops, NULL };
 

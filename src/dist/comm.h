@@ -27,6 +27,9 @@ typedef struct ctn_comm_ops {
     int (*allreduce)(void *impl, double *v, size_t n, ctn_reduce_op op);
     /* the ghost entries of v (after the owned ones, lay's order) <- their owners' values */
     int (*ghosts)(void *impl, const ctn_layout *lay, double *v);
+    /* v[lo .. hi - 1] of every process into every process's v (the ranges of the processes
+     * in rank order, consecutive, covering v): a vector each process computed its share of */
+    int (*allgather)(void *impl, double *v, size_t lo, size_t hi);
     /* the linear solvers that run over this communicator's processes (NULL-terminated;
      * NULL: none beyond the registry's, linalg/linsolve.c) */
     const struct ctn_linsolve_ops *const *solvers;

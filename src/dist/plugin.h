@@ -17,7 +17,7 @@
 
 #include <stddef.h>
 
-#define CTN_MPI_PLUGIN_ABI 2      /* 2: ctn_comm_ops.eigen (SLEPc) */
+#define CTN_MPI_PLUGIN_ABI 3      /* 2: ctn_comm_ops.eigen (SLEPc); 3: allgather, create_cols */
 #define CTN_MPI_PLUGIN_ENTRY "ctn_mpi_plugin_entry"
 #define CTN_MPI_PLUGIN_FILE "libcatena_mpi.so"
 

@@ -10,7 +10,8 @@
  * target. In an MPI job of N > 1 ranks (the context's communicator) every rank also
  * writes its VTU piece, result_rR.vtu, and rank 0 result.pvtu (io/vtu.h) beside the set;
  * the ranks agree (a reduction) that all staged before any renames, so a failure on one
- * leaves no file of the set on any. */
+ * leaves no file of the set on any; once the set is in place, rank 0 removes the pieces
+ * of an earlier run with more ranks (or, in one process, every piece and the .pvtu). */
 #include "io/atomic.h"
 #include "io/vtu.h"
 #include "dist/comm.h"
@@ -332,6 +333,7 @@ int ctn_write_results(ctn_ctx *ctx, const char *dir, const ctn_model *m,
     rc = write_set(ctx, dir, jobs, f ? n : 0, m, s, f, rc);      /* every rank: agree() */
     if (!rc && rank == 0 && ctn_solution_step_count(s) == 1) rc = remove_stale(ctx, dir);
     if (!rc && rank == 0) rc = ctn_frames_remove_stale(ctx, dir, nf);
+    if (!rc && rank == 0) rc = ctn_vtu_pieces_remove_stale(ctx, dir, size);
     ctn_free(f);
     ctn_free(jobs);
     return rc;

@@ -35,5 +35,9 @@ extern const ctn_writer_ops ctn_writer_vtu_piece;     /* result_rR.vtu (R the ra
 extern const ctn_writer_ops ctn_writer_pvtu;          /* result.pvtu */
 /* The piece file of rank r, in name[CTN_VTU_NAME_MAX]. */
 void ctn_vtu_piece_name(char *name, int rank);
+/* After a set of size ranks' files is in place in dir: the pieces of an earlier run
+ * with more ranks (result_rR.vtu, R >= size) removed, and with one process (no pieces)
+ * every piece and result.pvtu. */
+int ctn_vtu_pieces_remove_stale(ctn_ctx *ctx, const char *dir, int size);
 
 #endif

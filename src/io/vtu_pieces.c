@@ -6,7 +6,11 @@
 #include "core/ctx.h"
 #include "dist/comm.h"
 
+#include <dirent.h>
+#include <errno.h>
 #include <stdio.h>
+#include <string.h>
+#include <unistd.h>
 
 void ctn_vtu_piece_name(char *name, int rank) { snprintf(name, CTN_VTU_NAME_MAX, "result_r%d.vtu", rank); }
 
@@ -86,3 +90,41 @@ static int pvtu_end(void *p) { return ctn_vtu_end_with(p, "  </PUnstructuredGrid
 
 const ctn_writer_ops ctn_writer_pvtu = { .name = "result.pvtu", .size = sizeof(ctn_writer), .begin = pvtu_begin,
                                          .step = pvtu_step, .end = pvtu_end };
+
+/* Whether file name is a piece this writer makes, result_rR.vtu (R as it writes it: no
+ * leading zero), and R in *r. */
+static int piece_file(const char *name, long *r)
+{
+    size_t len = strlen(name), digits = len > 12 ? len - 12 : 0;
+    if (len < 13 || strncmp(name, "result_r", 8) || strcmp(name + len - 4, ".vtu") || digits > 9) return 0;
+    if (name[8] == '0' && digits > 1) return 0;
+    *r = 0;
+    for (size_t i = 8; i < len - 4; i++) {
+        if (name[i] < '0' || name[i] > '9') return 0;
+        *r = 10 * *r + (name[i] - '0');
+    }
+    return 1;
+}
+
+static int remove_file(ctn_ctx *ctx, const char *dir, const char *name)
+{
+    char path[4096];
+    if ((size_t)snprintf(path, sizeof path, "%s/%s", dir, name) >= sizeof path)
+        return ctn_error(ctx, CTN_ERR_IO, "%s: path too long", dir);
+    if (unlink(path) && errno != ENOENT) return ctn_error(ctx, CTN_ERR_IO, "%s: cannot remove: %s", path, strerror(errno));
+    return CTN_OK;
+}
+
+int ctn_vtu_pieces_remove_stale(ctn_ctx *ctx, const char *dir, int size)
+{
+    DIR *d = opendir(dir);
+    int rc = CTN_OK;
+    if (!d) return CTN_OK;                       /* no directory: nothing stale */
+    for (struct dirent *e; !rc && (e = readdir(d));) {
+        long r;
+        if (piece_file(e->d_name, &r) && (size == 1 || r >= size)) rc = remove_file(ctx, dir, e->d_name);
+    }
+    closedir(d);
+    if (!rc && size == 1) rc = remove_file(ctx, dir, ctn_writer_pvtu.name);
+    return rc;
+}

@@ -130,6 +130,29 @@ int ctn_linsolve_create_opts(ctn_ctx *ctx, const char *name, const ctn_pattern *
     return CTN_OK;
 }
 
+int ctn_linsolve_create_cols(ctn_ctx *ctx, const char *name, const ctn_pattern *p, size_t n, size_t c0, size_t c1,
+                             int threads, ctn_linsolve **out)
+{
+    ctn_la_options o = { sizeof o, CTN_LA_ORDER_AUTO, threads, 0 };
+    *out = NULL;
+    const ctn_linsolve_ops *ops = find_ctx(ctx, name);
+    if (!ops || !ops->create_cols)
+        return ctn_error(ctx, CTN_ERR_INVALID, "linear solver '%s' takes no matrix distributed by columns", name ? name : "");
+    ctn_linsolve *s = ctn_calloc(ctx, 1, sizeof *s);
+    if (!s) return CTN_ERR_NOMEM;
+    s->ops = ops;
+    s->ctx = ctx;
+    s->n = n;
+    s->threads = threads > 0 ? threads : 0;
+    int rc = ops->create_cols(ctx, p, n, c0, c1, &o, &s->impl);
+    if (rc) {
+        ctn_free(s);
+        return rc;
+    }
+    *out = s;
+    return CTN_OK;
+}
+
 void ctn_linsolve_destroy(ctn_linsolve **s)
 {
     if (!s || !*s) return;

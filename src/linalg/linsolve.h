@@ -91,6 +91,14 @@ typedef struct ctn_linsolve_ops {
     /* Optional (NULL: the name): what the results call the solver used ("petsc-mumps",
      * "petsc-cg-gamg": the PETSc types the options chose). */
     const char *(*label)(const void *impl);
+    /* Optional (NULL: the solver takes whole matrices only): as create, for this process's
+     * share of a matrix distributed over the processes of the context's communicator by
+     * columns: p holds columns c0 .. c1 - 1 of the n x n upper triangle (p->n = c1 - c0,
+     * colptr from 0, row indices global), the processes' ranges consecutive in rank order;
+     * factor is then given those columns' values, solve the whole right-hand side and
+     * gives the whole solution on every process. */
+    int (*create_cols)(ctn_ctx *ctx, const ctn_pattern *p, size_t n, size_t c0, size_t c1,
+                       const ctn_la_options *o, void **impl);
 } ctn_linsolve_ops;
 
 typedef struct ctn_linsolve ctn_linsolve;
@@ -117,6 +125,11 @@ int ctn_linsolve_create_threads(ctn_ctx *ctx, const char *name, const ctn_patter
 /* The same with every option (o NULL or o->size 0: the defaults). */
 int ctn_linsolve_create_opts(ctn_ctx *ctx, const char *name, const ctn_pattern *p, const ctn_la_options *o,
                              ctn_linsolve **out);
+/* Set up solver `name` on this process's columns c0 .. c1 - 1 of an n x n matrix
+ * distributed by columns (create_cols above): CTN_ERR_INVALID if it takes whole
+ * matrices only. */
+int ctn_linsolve_create_cols(ctn_ctx *ctx, const char *name, const ctn_pattern *p, size_t n, size_t c0, size_t c1,
+                             int threads, ctn_linsolve **out);
 void ctn_linsolve_destroy(ctn_linsolve **s);
 const ctn_linsolve_ops *ctn_linsolve_type(const ctn_linsolve *s);
 /* Factor K + shift I from values Kx (pattern order). A failed pivot is an outcome in

@@ -58,8 +58,6 @@ static int alloc_vectors(ctn_problem *p)
         *an[i] = vn[i]->v;
     }
     if (!(p->v3 = ctn_calloc(ctx, 3 * p->a->nn, sizeof(double)))) return CTN_ERR_NOMEM;
-    if (!(p->Kx = ctn_calloc(ctx, p->a->nnz ? p->a->nnz : 1, sizeof(double)))) return CTN_ERR_NOMEM;
-    p->K = (ctn_dmat){ &p->eq, p->a->colptr, p->a->rowind, p->Kx };
     if (!(p->in_chain = chain_members(p))) return CTN_ERR_NOMEM;
     if (p->a->map.rot_update == ctn_rot_update_compose && !(p->wd = ctn_calloc(ctx, p->ns, sizeof(double))))
         return CTN_ERR_NOMEM;
@@ -92,15 +90,15 @@ static int setup(ctn_problem *p)
     if (!p->opt.linear_solver && !strcmp(given, "cholmod") && ctn_spin_wanted(p)) given = "cholmod-ldl";
     const char *name = ctn_linsolve_default(p->ctx, given);
     p->ls_name = name;
+    if ((rc = ctn_problem_dist_setup(p, name))) return rc;
     if (p->ndof == 0) return CTN_OK;        /* statically determinate: nothing to factor */
-    ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
-    if ((rc = ctn_linsolve_create_threads(p->ctx, name, &pat, ctn_la_ordering_of(p->opt.ordering), p->opt.threads, &p->ls))) return rc;
+    if ((rc = ctn_problem_solver_create(p, name, ctn_la_ordering_of(p->opt.ordering), &p->ls))) return rc;
     if ((rc = ctn_spin_create(p))) return rc;
     int reuse = p->strategy->globalized && p->opt.reuse && !p->fl && !p->sp && !ctn_linsolve_type(p->ls)->indefinite;
     if (reuse && !(p->cg = ctn_calloc(p->ctx, 4 * p->ndof, sizeof(double)))) return CTN_ERR_NOMEM;
     /* Pure Newton factorizes every tangent it assembles (but the converged state's) */
     p->overlap = p->opt.method == CTN_METHOD_NEWTON && !p->opt.linesearch && !p->fl && !p->sp && p->opt.threads != 1 &&
-                 !ctn_linsolve_type(p->ls)->indefinite;
+                 !ctn_linsolve_type(p->ls)->indefinite && !p->dist;
     return CTN_OK;
 }
 
@@ -188,6 +186,7 @@ void ctn_problem_destroy(ctn_problem **pp)
                     p->dT0, p->dT1, p->dT, p->cg, p->wd };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
     ctn_free(p->in_chain);
+    ctn_free(p->lcolptr);
     ctn_free(p);
     *pp = NULL;
 }
@@ -238,6 +237,7 @@ int ctn_problem_residual(ctn_problem *p, const double *d, int with_K, double *rn
     ctn_problem_settle(p);
     if (with_K && p->overlap && ctn_overlap_possible(p->a, p->ls) && ctn_overlap_start(&p->ovl, p->a, p->ls, p->Kx, 0.0))
         *valid = !ctn_overlap_assemble(&p->ovl, p->a, d, p->mode, p->fint, p->Kx, pi ? &U : NULL, &bad);
+    else if (p->dist) *valid = !ctn_problem_dist_eval(p, d, p->mode, with_K ? p->Kx : NULL, &U, &bad);
     else *valid = !ctn_asm_eval(p->a, d, p->mode, p->fint, with_K ? p->Kx : NULL, pi ? &U : NULL, &bad);
     if (!*valid) p->sum->fail_element = p->m->elements.v[bad].id;     /* reported if not converged */
     if (*valid) {
@@ -334,7 +334,9 @@ int ctn_problem_linsolve(ctn_problem *p, const double *b, double *x)
 double ctn_problem_max_diag(const ctn_problem *p)
 {
     double m = 0;
-    for (size_t c = 0; c < p->ndof; c++) m = fmax(m, p->Kx[p->a->colptr[c + 1] - 1]);
+    if (p->dist) m = ctn_problem_dist_max_diag(p);
+    else
+        for (size_t c = 0; c < p->ndof; c++) m = fmax(m, p->Kx[p->a->colptr[c + 1] - 1]);
     return m > 0 ? m : p->kscale;
 }
 

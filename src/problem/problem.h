@@ -94,6 +94,11 @@ struct ctn_problem {
     int overlap;               /* pure Newton: each residual with K also starts K's
                                   factorization beside its assembly (overlap.c) */
     ctn_overlap ovl;           /* that factorization, while it runs */
+    int dist;                  /* the tangent distributed by columns over the ranks of an
+                                  MPI job (dist.c): Kx holds this rank's columns only */
+    size_t q0, q1;             /* dist: this rank's nodes */
+    size_t c0, c1;             /* dist: their columns (free DOFs), consecutive */
+    int *lcolptr;              /* dist: c1 - c0 + 1, those columns' positions from 0 */
 };
 
 /* ctn_problem_create without the check that every cable target is resolved (for the
@@ -134,6 +139,27 @@ void ctn_problem_settle(ctn_problem *p);
 int ctn_problem_linsolve(ctn_problem *p, const double *b, double *x);
 /* Largest diagonal entry of the assembled tangent. */
 double ctn_problem_max_diag(const ctn_problem *p);
+
+/* The tangent distributed by columns (dist.c). Set up once the follower loads are known:
+ * p->dist decided for linear solver `name`, p->Kx allocated (this rank's columns, or
+ * the whole pattern's values), p->K set. */
+int ctn_problem_dist_setup(ctn_problem *p, const char *name);
+/* A solver of that name on p's tangent: this rank's columns when p->dist. */
+int ctn_problem_solver_create(ctn_problem *p, const char *name, ctn_la_ordering ord, ctn_linsolve **out);
+/* ctn_asm_eval over this rank's nodes, their columns into Kx (if not NULL), the internal
+ * forces p->fint gathered whole, the energy (U if not NULL) summed over the ranks, the
+ * first collapsed element over them in *bad (returns 1) */
+int ctn_problem_dist_eval(ctn_problem *p, const double *d, unsigned mode, double *Kx, double *U, size_t *bad);
+double ctn_problem_dist_max_diag(const ctn_problem *p);
+void ctn_problem_dist_symv(const ctn_problem *p, const double *Ax, const double *x, double *y);
+/* The whole tangent's values (pattern order) on every rank: p->Kx, or when p->dist a
+ * new array gathered from the ranks (the rare paths that name a node by CHOLMOD), to be
+ * released by ctn_problem_whole_K_done. */
+int ctn_problem_whole_K(ctn_problem *p, double **Kx);
+void ctn_problem_whole_K_done(const ctn_problem *p, double *Kx);
+/* The tangent at state d, assembled (the whole of it or this rank's columns, p->Kx),
+ * and f_int; 1 if an element collapsed there. */
+int ctn_problem_eval_tangent(ctn_problem *p, const double *d);
 /* d (state) += alpha * v (ndof) on free DOFs: a vector sum (a mode shape, a perturbation). */
 void ctn_problem_axpy(const ctn_problem *p, double *d, double alpha, const double *v);
 /* The state update of an iteration, d <- d (+) alpha v: the translations added, the

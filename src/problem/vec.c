@@ -41,5 +41,6 @@ double ctn_problem_dot(void *p, const double *a, const double *b)
 
 void ctn_problem_symv(const ctn_problem *p, const double *Ax, const double *x, double *y)
 {
-    ctn_dmat_symv(&p->K, Ax, x, y);
+    if (p->dist) ctn_problem_dist_symv(p, Ax ? Ax : p->Kx, x, y);
+    else ctn_dmat_symv(&p->K, Ax, x, y);
 }

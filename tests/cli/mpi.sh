@@ -20,12 +20,18 @@
 #   slepc_modes     modes on SLEPc (Krylov-Schur, shift-invert on MUMPS) on 2 and 3 ranks:
 #                   lowest and nearest an interior shift, against the serial ARPACK;
 #   vtu_pieces      -o DIR on 3 ranks with mode shapes: three pieces and the .pvtu;
+#                   the same DIR on 2 ranks: the third piece removed; then in one
+#                   process: no piece and no .pvtu left;
 #   killed_rank     rank 1 of 2 killed (kill -9) mid-solve: mpirun's exit code non-zero,
 #                   its message naming the rank and the signal, -o DIR left empty;
 #   module          PETSc and MPI live in libcatena_mpi.so (src/dist/plugin.h): the
 #                   command maps none of their libraries, a `petsc` solver asked for
 #                   outside an MPI job is refused naming mpirun, and the module found
 #                   beside an installed command (../lib) runs it.
+# The nets and single cables among them (s250.8777, net_slack, hypar_snow, slack_held_node,
+# paper_E2e22, arclength_singular_start on 1 and 3 ranks) run with the tangent distributed
+# by columns (src/problem/dist.c): each rank assembles its own nodes' columns; the
+# semi-definite stability check of slack_held_node gathers the tangent to name its node.
 # Two models are compared by their verdicts only (converged, reason, stable), their
 # answers being round-off: tests/models/trust/paper_E2e14.cable (E = 2e14: the forces
 # are resolved to 1e-6 by any solver, the round-off floor) and the mode shapes of
@@ -169,6 +175,14 @@ finish slepc_modes
 # point arrays), result.pvtu and result_r0..2.vtu against the run's own result.vtu
 out=$(python3 tests/cli/lib/pvtu_check.py "$T/pieces" 3 "$T/pieces/result.vtu" 2>&1) || WHY+=("vtu_pieces: $out")
 grep -q 'Name="mode_12"' "$T/pieces/result.pvtu" || WHY+=("vtu_pieces: no mode_12 in result.pvtu")
+# the same directory again on 2 ranks: result_r2.vtu of the 3-rank run is gone, the
+# .pvtu lists 2 pieces; then in one process: no piece and no .pvtu left
+"${MPIRUN[@]}" -n 2 "$BIN" solve examples/paper/s250.8777.cable -q -o "$T/pieces" >/dev/null 2>&1 || WHY+=("vtu_pieces: 2 ranks: exit $?")
+[ -e "$T/pieces/result_r2.vtu" ] && WHY+=("vtu_pieces: result_r2.vtu of 3 ranks left beside a 2-rank set")
+out=$(python3 tests/cli/lib/pvtu_check.py "$T/pieces" 2 "$T/pieces/result.vtu" 2>&1) || WHY+=("vtu_pieces: 2 after 3: $out")
+"$BIN" solve examples/paper/s250.8777.cable -q -o "$T/pieces" >/dev/null 2>&1 || WHY+=("vtu_pieces: serial: exit $?")
+left=$(cd "$T/pieces" && ls result_r*.vtu result.pvtu 2>/dev/null)
+[ -z "$left" ] || WHY+=("vtu_pieces: a serial set left $left")
 finish vtu_pieces
 
 # a rank killed mid-solve: the hypar net K = 120 (43k DOFs, seconds on 2 ranks), rank 1

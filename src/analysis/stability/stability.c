@@ -19,7 +19,7 @@ int ctn_problem_tangent_at(ctn_problem *p, const ctn_solution *s, double *d, con
     ctn_dofmap_from3(&p->a->map, d3, d);
     if (rot) ctn_dofmap_rot_from3(&p->a->map, rot, d);
     ctn_problem_settle(p);                         /* K is rewritten */
-    if (ctn_asm_eval(p->a, d, 0, p->fint, p->Kx, NULL, NULL))
+    if (ctn_problem_eval_tangent(p, d))
         return ctn_error(p->ctx, CTN_ERR_INVALID, "%s: an element has zero length in that state", who);
     return CTN_OK;
 }
@@ -64,8 +64,11 @@ static int locate_zero(ctn_problem *p, ctn_stability *out)
     ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
     ctn_factor_info info;
     long neg = 0, zero = 0, first = -1;
-    int rc = ctn_linsolve_create_threads(p->ctx, "cholmod-ldl", &pat, CTN_LA_ORDER_AUTO, p->opt.threads, &ldl);
-    if (!rc) rc = ctn_linsolve_factor(ldl, p->Kx, 0.0, &info);
+    double *Kx = NULL;
+    int rc = ctn_problem_whole_K(p, &Kx);
+    if (!rc) rc = ctn_linsolve_create_threads(p->ctx, "cholmod-ldl", &pat, CTN_LA_ORDER_AUTO, p->opt.threads, &ldl);
+    if (!rc) rc = ctn_linsolve_factor(ldl, Kx, 0.0, &info);
+    if (Kx) ctn_problem_whole_K_done(p, Kx);
     if (!rc && info.ok) rc = ctn_linsolve_inertia(ldl, 1e-12 * ctn_problem_max_diag(p), &neg, &zero, &first);
     locate(p, !rc && info.ok ? first : info.fail_col, out);
     ctn_linsolve_destroy(&ldl);
@@ -124,10 +127,9 @@ static int spin_sign(ctn_problem *p, ctn_linsolve *ldl, ctn_stability *out)
 static int inertia(ctn_problem *p, ctn_stability *out)
 {
     ctn_linsolve *ldl = NULL;
-    ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
     ctn_factor_info info;
     long zero = 0, first = -1;
-    int rc = ctn_linsolve_create_threads(p->ctx, ctn_linsolve_default(p->ctx, "cholmod-inertia"), &pat, CTN_LA_ORDER_AUTO, p->opt.threads, &ldl);
+    int rc = ctn_problem_solver_create(p, ctn_linsolve_default(p->ctx, "cholmod-inertia"), CTN_LA_ORDER_AUTO, &ldl);
     if (!rc) rc = ctn_linsolve_factor(ldl, p->Kx, 0.0, &info);
     if (!rc && info.ok) {
         rc = ctn_linsolve_inertia(ldl, 1e-12 * ctn_problem_max_diag(p), &out->negative, &zero, &first);

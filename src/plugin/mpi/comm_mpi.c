@@ -11,15 +11,18 @@
 #include "plugin/mpi/slepc/slepc_eigen.h"
 #endif
 
+#include <limits.h>
 #include <math.h>
 
 typedef struct mpi_comm {
     MPI_Comm comm;             /* a duplicate of the caller's: our messages are ours */
     int rank, size;
     double *buf;               /* size * CTN_MPI_REDUCE_MAX gathered values */
+    long long *ranges;         /* 2 size: every rank's [lo, hi) of an allgather */
+    int *counts;               /* 2 size: their lengths and offsets */
 } mpi_comm;
 
-#define CTN_MPI_REDUCE_MAX 16  /* values per reduction in one exchange */
+#define CTN_MPI_REDUCE_MAX 4096  /* values per reduction in one exchange */
 
 typedef struct mpi_handle {
     ctn_ctx *ctx;
@@ -65,6 +68,23 @@ static int mpi_ghosts(void *impl, const ctn_layout *lay, double *v)
     return CTN_ERR_INVALID;
 }
 
+/* every rank's [lo, hi) of v to every rank (in place) */
+static int mpi_allgather(void *impl, double *v, size_t lo, size_t hi)
+{
+    mpi_comm *c = impl;
+    long long mine[2] = { (long long)lo, (long long)hi }, *all = c->ranges;
+    int *count = c->counts, rc = CTN_OK;
+    if (MPI_Allgather(mine, 2, MPI_LONG_LONG, all, 2, MPI_LONG_LONG, c->comm) != MPI_SUCCESS) rc = CTN_ERR_IO;
+    for (int r = 0; !rc && r < c->size; r++) {
+        if (all[2 * r + 1] - all[2 * r] > INT_MAX || all[2 * r] > INT_MAX) rc = CTN_ERR_INVALID;
+        count[r] = (int)(all[2 * r + 1] - all[2 * r]);
+        count[c->size + r] = (int)all[2 * r];
+    }
+    if (!rc && MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DOUBLE, v, count, count + c->size, MPI_DOUBLE, c->comm) != MPI_SUCCESS)
+        rc = CTN_ERR_IO;
+    return rc;
+}
+
 /* the PETSc solvers: over this communicator's processes */
 static const ctn_linsolve_ops *const mpi_solvers[] = {
     &ctn_petsc_mumps_ops, &ctn_petsc_ldl_ops, &ctn_petsc_cg_ops, &ctn_petsc_inertia_ops, NULL,
@@ -82,7 +102,7 @@ static int mpi_eigen(void *impl, ctn_ctx *ctx, const ctn_pattern *p, const doubl
 #define CTN_MPI_EIGEN NULL
 #endif
 
-const ctn_comm_ops ctn_comm_mpi_ops = { "mpi", mpi_rank, mpi_size, mpi_allreduce, mpi_ghosts, mpi_solvers, CTN_MPI_EIGEN };
+const ctn_comm_ops ctn_comm_mpi_ops = { "mpi", mpi_rank, mpi_size, mpi_allreduce, mpi_ghosts, mpi_allgather, mpi_solvers, CTN_MPI_EIGEN };
 
 MPI_Comm ctn_comm_mpi_handle(const ctn_comm *c)
 {
@@ -105,7 +125,12 @@ int ctn_mpi_handle_create(ctn_ctx *ctx, const void *mpi_comm_ptr, void **out)
     MPI_Comm_rank(p->impl.comm, &p->impl.rank);
     MPI_Comm_size(p->impl.comm, &p->impl.size);
     p->impl.buf = ctn_calloc(ctx, (size_t)p->impl.size * CTN_MPI_REDUCE_MAX, sizeof(double));
-    if (!p->impl.buf) {
+    p->impl.ranges = ctn_calloc(ctx, 2 * (size_t)p->impl.size, sizeof(long long));
+    p->impl.counts = ctn_calloc(ctx, 2 * (size_t)p->impl.size, sizeof(int));
+    if (!p->impl.buf || !p->impl.ranges || !p->impl.counts) {
+        ctn_free(p->impl.buf);
+        ctn_free(p->impl.ranges);
+        ctn_free(p->impl.counts);
         MPI_Comm_free(&p->impl.comm);
         ctn_free(p);
         return CTN_ERR_NOMEM;
@@ -133,6 +158,8 @@ void ctn_mpi_handle_destroy(void *h)
     MPI_Finalized(&fin);
     if (!fin) MPI_Comm_free(&p->impl.comm);
     ctn_free(p->impl.buf);
+    ctn_free(p->impl.ranges);
+    ctn_free(p->impl.counts);
     ctn_free(p);
 }
 

@@ -3,7 +3,9 @@
  * process without one), factored by MUMPS (KSPPREONLY + PCCHOLESKY) or solved by a
  * Krylov method (CG + GAMG), PETSc options passed through (KSPSetFromOptions). The
  * model is replicated: every process holds the whole pattern and values and passes its
- * owned rows; the solution reaches every process whole. The only place that includes
+ * owned rows; or, for a net, the tangent is distributed by columns (create_cols,
+ * petsc_cols.c: each process its own columns' values). The solution reaches every
+ * process whole. The only place that includes
  * PETSc's headers, with comm_mpi.c. */
 #ifndef CTN_PLUGIN_MPI_PETSC_H
 #define CTN_PLUGIN_MPI_PETSC_H
@@ -36,6 +38,16 @@ int ctn_petsc_rows_build(ctn_ctx *ctx, const ctn_pattern *p, PetscInt lo, PetscI
 void ctn_petsc_rows_free(ctn_petsc_rows *r);
 /* r->val <- Kx at the slots, + shift on the diagonal. */
 void ctn_petsc_rows_fill(ctn_petsc_rows *r, const double *Kx, double shift);
+
+/* A matrix distributed by columns (petsc_cols.c): p this process's columns c0 .. (p->n
+ * of them, row indices global) of the n x n upper triangle. The preallocation of the
+ * same rows (d: in this process's columns, o: in later ranks'; p->n each), and the
+ * values (+ shift on the diagonal) set into A; rows and vals scratch of the longest
+ * column. */
+int ctn_petsc_cols_count(ctn_ctx *ctx, MPI_Comm comm, const ctn_pattern *p, PetscInt n, PetscInt c0, PetscInt *d,
+                         PetscInt *o);
+PetscErrorCode ctn_petsc_cols_set(Mat A, const ctn_pattern *p, PetscInt c0, const double *Kx, double shift,
+                                  PetscInt *rows, PetscScalar *vals);
 
 extern const ctn_linsolve_ops ctn_petsc_mumps_ops, ctn_petsc_ldl_ops, ctn_petsc_cg_ops, ctn_petsc_inertia_ops;
 

@@ -15,8 +15,12 @@ typedef struct ctn_petsc {
     ctn_petsc_kind kind;
     MPI_Comm comm;
     PetscInt n;
-    ctn_petsc_rows rows;
+    ctn_petsc_rows rows;       /* the owned rows [lo, hi) (only lo and hi by columns) */
     const int *colptr;         /* the pattern (the diagonal ends each column) */
+    int by_cols;               /* distributed by columns: pcols this process's, Kx theirs */
+    ctn_pattern pcols;
+    PetscInt *crow;            /* by columns: scratch of the longest column */
+    PetscScalar *cval;
     Mat A;
     Vec b, x, xall;
     VecScatter toall;
@@ -55,12 +59,20 @@ static int make_matrix(ctn_petsc *c)
 {
     int rc = CTN_OK;
     ctn_petsc_rows *r = &c->rows;
-    PetscInt m = r->hi - r->lo;
+    PetscInt m = r->hi - r->lo, *d = NULL;
     int full = c->kind == CTN_PETSC_CG;
     PCALL(MatCreate(c->comm, &c->A));
     PCALL(MatSetSizes(c->A, m, m, c->n, c->n));
     PCALL(MatSetType(c->A, full ? MATAIJ : MATSBAIJ));
-    if (full) {
+    if (c->by_cols) {
+        if (!(d = ctn_calloc(c->ctx, 2 * (size_t)(m > 0 ? m : 1), sizeof *d))) {
+            rc = CTN_ERR_NOMEM;
+            goto done;
+        }
+        if ((rc = ctn_petsc_cols_count(c->ctx, c->comm, &c->pcols, c->n, r->lo, d, d + (m > 0 ? m : 1)))) goto done;
+        PCALL(MatSeqSBAIJSetPreallocation(c->A, 1, 0, d));
+        PCALL(MatMPISBAIJSetPreallocation(c->A, 1, 0, d, 0, d + (m > 0 ? m : 1)));
+    } else if (full) {
         PCALL(MatSeqAIJSetPreallocationCSR(c->A, r->ptr, r->col, NULL));
         PCALL(MatMPIAIJSetPreallocationCSR(c->A, r->ptr, r->col, NULL));
     } else {
@@ -72,6 +84,7 @@ static int make_matrix(ctn_petsc *c)
     PCALL(MatCreateVecs(c->A, &c->x, &c->b));
     PCALL(VecScatterCreateToAll(c->x, &c->toall, &c->xall));
 done:
+    ctn_free(d);
     return rc;
 }
 
@@ -108,10 +121,15 @@ static void destroy(void *impl)
     MatDestroy(&c->A);
     PetscPopErrorHandler();
     ctn_petsc_rows_free(&c->rows);
+    ctn_free(c->crow);
+    ctn_free(c->cval);
     ctn_free(c);
 }
 
-static int create_kind(ctn_ctx *ctx, const ctn_pattern *p, ctn_petsc_kind kind, void **impl)
+/* cols: NULL, or this process's columns [cols[0], cols[1]) of the n x n matrix p is a
+ * share of (by columns: petsc_cols.c) */
+static int create_kind(ctn_ctx *ctx, const ctn_pattern *p, size_t n, const size_t *cols, ctn_petsc_kind kind,
+                       void **impl)
 {
     PetscBool init = PETSC_FALSE;
     PetscInitialized(&init);
@@ -122,7 +140,7 @@ static int create_kind(ctn_ctx *ctx, const ctn_pattern *p, ctn_petsc_kind kind, 
     c->ctx = ctx;
     c->kind = kind;
     c->comm = ctn_comm_mpi_handle(ctn_ctx_comm(ctx));
-    c->n = (PetscInt)p->n;
+    c->n = (PetscInt)n;
     c->colptr = p->colptr;
     c->relax = 30;
     int rank = 0, size = 1, rc;
@@ -130,7 +148,18 @@ static int create_kind(ctn_ctx *ctx, const ctn_pattern *p, ctn_petsc_kind kind, 
     MPI_Comm_size(c->comm, &size);
     PetscInt lo, hi;
     split(c->n, rank, size, &lo, &hi);
-    rc = ctn_petsc_rows_build(ctx, p, lo, hi, kind == CTN_PETSC_CG, &c->rows);
+    if (cols) {
+        int longest = 0;
+        c->by_cols = 1;
+        c->pcols = *p;
+        c->rows.lo = (PetscInt)cols[0];
+        c->rows.hi = (PetscInt)cols[1];
+        for (size_t j = 0; j < p->n; j++)
+            if (p->colptr[j + 1] - p->colptr[j] > longest) longest = p->colptr[j + 1] - p->colptr[j];
+        c->crow = ctn_malloc(ctx, (size_t)longest + 1, sizeof *c->crow);
+        c->cval = ctn_malloc(ctx, (size_t)longest + 1, sizeof *c->cval);
+        rc = c->crow && c->cval ? CTN_OK : CTN_ERR_NOMEM;
+    } else rc = ctn_petsc_rows_build(ctx, p, lo, hi, kind == CTN_PETSC_CG, &c->rows);
     PetscPushErrorHandler(PetscReturnErrorHandler, NULL);
     if (!rc) rc = make_matrix(c);
     if (!rc) rc = make_ksp(c);
@@ -143,36 +172,63 @@ static int create_kind(ctn_ctx *ctx, const ctn_pattern *p, ctn_petsc_kind kind, 
     return CTN_OK;
 }
 
+static int cols_mumps(ctn_ctx *ctx, const ctn_pattern *p, size_t n, size_t c0, size_t c1, const ctn_la_options *o,
+                     void **impl)
+{
+    size_t cols[2] = { c0, c1 };
+    (void)o;
+    return create_kind(ctx, p, n, cols, CTN_PETSC_MUMPS, impl);
+}
+
 static int create_mumps(ctn_ctx *ctx, const ctn_pattern *p, const ctn_la_options *o, void **impl)
 {
     (void)o;
-    return create_kind(ctx, p, CTN_PETSC_MUMPS, impl);
+    return create_kind(ctx, p, p->n, NULL, CTN_PETSC_MUMPS, impl);
+}
+
+static int cols_ldl(ctn_ctx *ctx, const ctn_pattern *p, size_t n, size_t c0, size_t c1, const ctn_la_options *o,
+                     void **impl)
+{
+    size_t cols[2] = { c0, c1 };
+    (void)o;
+    return create_kind(ctx, p, n, cols, CTN_PETSC_MUMPS_LDL, impl);
 }
 
 static int create_ldl(ctn_ctx *ctx, const ctn_pattern *p, const ctn_la_options *o, void **impl)
 {
     (void)o;
-    return create_kind(ctx, p, CTN_PETSC_MUMPS_LDL, impl);
+    return create_kind(ctx, p, p->n, NULL, CTN_PETSC_MUMPS_LDL, impl);
+}
+
+static int cols_inertia(ctn_ctx *ctx, const ctn_pattern *p, size_t n, size_t c0, size_t c1, const ctn_la_options *o,
+                     void **impl)
+{
+    size_t cols[2] = { c0, c1 };
+    (void)o;
+    return create_kind(ctx, p, n, cols, CTN_PETSC_INERTIA, impl);
 }
 
 static int create_inertia(ctn_ctx *ctx, const ctn_pattern *p, const ctn_la_options *o, void **impl)
 {
     (void)o;
-    return create_kind(ctx, p, CTN_PETSC_INERTIA, impl);
+    return create_kind(ctx, p, p->n, NULL, CTN_PETSC_INERTIA, impl);
 }
 
 static int create_cg(ctn_ctx *ctx, const ctn_pattern *p, const ctn_la_options *o, void **impl)
 {
     (void)o;
-    return create_kind(ctx, p, CTN_PETSC_CG, impl);
+    return create_kind(ctx, p, p->n, NULL, CTN_PETSC_CG, impl);
 }
 
 /* The largest diagonal entry of K + shift I (every process holds K whole): the scale
  * of MUMPS's null pivots, 1e-12 of it, as the stability check counts zero pivots. */
 static double max_diag(const ctn_petsc *c, const double *Kx, double shift)
 {
-    double m = 0;
-    for (PetscInt j = 0; j < c->n; j++) m = fmax(m, fabs(Kx[c->colptr[j + 1] - 1] + shift));
+    double m = 0, all = 0;
+    PetscInt n = c->by_cols ? (PetscInt)c->pcols.n : c->n;
+    for (PetscInt j = 0; j < n; j++)
+        if (c->colptr[j + 1] > c->colptr[j]) m = fmax(m, fabs(Kx[c->colptr[j + 1] - 1] + shift));
+    if (c->by_cols && MPI_Allreduce(&m, &all, 1, MPI_DOUBLE, MPI_MAX, c->comm) == MPI_SUCCESS) m = all;
     return m > 0 ? m : 1.0;
 }
 
@@ -233,6 +289,12 @@ static int set_values(ctn_petsc *c, const double *Kx, double shift)
 {
     int rc = CTN_OK;
     ctn_petsc_rows *r = &c->rows;
+    if (c->by_cols) {
+        PCALL(ctn_petsc_cols_set(c->A, &c->pcols, r->lo, Kx, shift, c->crow, c->cval));
+        PCALL(MatAssemblyBegin(c->A, MAT_FINAL_ASSEMBLY));
+        PCALL(MatAssemblyEnd(c->A, MAT_FINAL_ASSEMBLY));
+        goto done;
+    }
     ctn_petsc_rows_fill(r, Kx, shift);
     for (PetscInt i = r->lo; i < r->hi; i++) {
         PetscInt k0 = r->ptr[i - r->lo], len = r->ptr[i - r->lo + 1] - k0;
@@ -366,12 +428,14 @@ static double flops(const void *impl)
 static const char *label(const void *impl) { return ((const ctn_petsc *)impl)->label; }
 
 const ctn_linsolve_ops ctn_petsc_mumps_ops = {
-    .name = "petsc", .indefinite = 0, .create = create_mumps, .destroy = destroy, .factor = factor, .solve = solve,
+    .name = "petsc", .indefinite = 0, .create = create_mumps, .create_cols = cols_mumps, .destroy = destroy,
+    .factor = factor, .solve = solve,
     .inertia = inertia, .ordering = ordering, .factor_nnz = factor_nnz, .flops = flops, .label = label,
 };
 
 const ctn_linsolve_ops ctn_petsc_ldl_ops = {
-    .name = "petsc-ldl", .indefinite = 1, .create = create_ldl, .destroy = destroy, .factor = factor, .solve = solve,
+    .name = "petsc-ldl", .indefinite = 1, .create = create_ldl, .create_cols = cols_ldl, .destroy = destroy,
+    .factor = factor, .solve = solve,
     .inertia = inertia, .ordering = ordering, .factor_nnz = factor_nnz, .flops = flops, .label = label,
 };
 
@@ -381,6 +445,7 @@ const ctn_linsolve_ops ctn_petsc_cg_ops = {
 };
 
 const ctn_linsolve_ops ctn_petsc_inertia_ops = {
-    .name = "petsc-inertia", .indefinite = 1, .create = create_inertia, .destroy = destroy, .factor = factor,
+    .name = "petsc-inertia", .indefinite = 1, .create = create_inertia, .create_cols = cols_inertia, .destroy = destroy,
+    .factor = factor,
     .solve = solve, .inertia = inertia, .ordering = ordering, .factor_nnz = factor_nnz, .flops = flops, .label = label,
 };
