@@ -249,6 +249,23 @@ run_case() {
 }
 
 # ---- the committed corpus -------------------------------------------------------------
+# A sanitizer build (CTN_SANITIZE) runs the CRLF and CR-only copies of a quarter of the
+# corpus (by name hash; the lexer's line-ending path is the same for every file), the
+# LF file in every mode: each run costs a sanitized process start and leak check
+# (~0.1 s), and make test must stay under 10 minutes. The plain build runs every copy of
+# every file, so every assertion (codes, messages, lines) still runs.
+BUILD_DIR=$(cd "$(dirname "$BIN")" && pwd)
+SANITIZED=0
+grep -Eq '^CTN_SANITIZE:BOOL=ON' "$BUILD_DIR/CMakeCache.txt" 2>/dev/null && SANITIZED=1
+endings() {   # endings NAME: whether this build runs NAME's CRLF and CR-only copies
+    local s=$1 h=5381 i c
+    [ "$SANITIZED" = 0 ] && return 0
+    for ((i = 0; i < ${#s}; i++)); do
+        printf -v c '%d' "'${s:i:1}"
+        h=$(((h * 37 + c) % 1000003))
+    done
+    [ $((h % 4)) = 0 ]
+}
 mkdir -p "$T/crlf" "$T/cr"
 ncorpus=0
 for f in tests/errors/*.cable; do
@@ -280,14 +297,16 @@ for f in tests/errors/*.cable; do
     check_plain "$f" "$code" "${want//FILE/$f}" plain
     check_json "$f" "$code"
     check_outdir "$f" "$code" "$name"
-    # The same model with CRLF line endings.
-    c=$T/crlf/$name.cable
-    sed 's/\r*$/\r/' "$f" >"$c"
-    check_plain "$c" "$code" "${want//FILE/$c}" CRLF
-    # ... and with CR-only line endings.
-    c=$T/cr/$name.cable
-    sed 's/\r*$//' "$f" | tr '\n' '\r' >"$c"
-    check_plain "$c" "$code" "${want//FILE/$c}" CR
+    if endings "$name"; then
+        # The same model with CRLF line endings.
+        c=$T/crlf/$name.cable
+        sed 's/\r*$/\r/' "$f" >"$c"
+        check_plain "$c" "$code" "${want//FILE/$c}" CRLF
+        # ... and with CR-only line endings.
+        c=$T/cr/$name.cable
+        sed 's/\r*$//' "$f" | tr '\n' '\r' >"$c"
+        check_plain "$c" "$code" "${want//FILE/$c}" CR
+    fi
     case_done "$name"
 done
 if mine corpus_size && [ "$ncorpus" -lt 45 ]; then
