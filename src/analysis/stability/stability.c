@@ -31,30 +31,6 @@ static void locate(const ctn_problem *p, long col, ctn_stability *out)
     out->dir = p->a->map.dof_dir[col];
 }
 
-/* The weakest mode: inverse iteration x <- K^-1 x (LDL' factor) converges to the
- * eigenvector of the eigenvalue of least magnitude. When that eigenvalue (its Rayleigh
- * quotient) is negative, its largest component names the node and direction that fall;
- * otherwise the first negative pivot stays the report. */
-static int weakest_mode(ctn_problem *p, ctn_linsolve *ldl, ctn_stability *out)
-{
-    double *x = p->r, *y = p->w;                    /* ndof scratch, free after a solve */
-    for (size_t i = 0; i < p->ndof; i++) x[i] = 1.0 + 1e-3 * (double)(i % 7);
-    for (int it = 0; it < 30; it++) {
-        int rc = ctn_linsolve_solve(ldl, x, x);
-        if (rc) return rc;
-        double n = ctn_layout_norm(&p->eq, x);
-        if (!(n > 0) || !isfinite(n)) return CTN_OK;
-        for (size_t i = 0; i < p->ndof; i++) x[i] /= n;
-    }
-    ctn_problem_symv(p, p->Kx, x, y);
-    if (!(ctn_layout_dot(&p->eq, x, y) < 0)) return CTN_OK;
-    size_t imax = 0;
-    for (size_t i = 1; i < p->ndof; i++)
-        if (fabs(x[i]) > fabs(x[imax])) imax = i;
-    locate(p, (long)imax, out);
-    return CTN_OK;
-}
-
 /* A solver that names no pivot (MUMPS, which pivots) found a zero one: CHOLMOD's LDL'
  * without pivoting names its column, as in one process (every process holds the whole
  * tangent: docs/parallel.md). */
@@ -91,6 +67,22 @@ static int least_eigenvalue(ctn_problem *p, ctn_linsolve *ldl, double *lam)
     }
     ctn_problem_symv(p, p->Kx, x, y);
     *lam = ctn_layout_dot(&p->eq, x, y);
+    return CTN_OK;
+}
+
+/* The weakest mode: the eigenvector of least magnitude (least_eigenvalue's iterate, left
+ * in p->r). When that eigenvalue is negative, its largest component names the node and
+ * direction that fall; otherwise the first negative pivot stays the report. */
+static int weakest_mode(ctn_problem *p, ctn_linsolve *ldl, ctn_stability *out)
+{
+    double lam;
+    int rc = least_eigenvalue(p, ldl, &lam);
+    if (rc || !(lam < 0)) return rc;
+    const double *x = p->r;
+    size_t imax = 0;
+    for (size_t i = 1; i < p->ndof; i++)
+        if (fabs(x[i]) > fabs(x[imax])) imax = i;
+    locate(p, (long)imax, out);
     return CTN_OK;
 }
 
