@@ -72,6 +72,10 @@ int ctn_app_mpi_size(void);
 int ctn_app_mpi_attach(ctn_ctx *ctx);
 int ctn_app_mpi_finalize(int code);
 
+/* The command: argv[1] names the sub-command (dispatch.c); its exit code. What it prints
+ * goes to stdout and stderr; the caller flushes stdout (main.c). */
+int ctn_app_dispatch(int argc, char **argv);
+
 /* Exit code for a failed library call, after printing its message to stderr. */
 int ctn_app_fail(ctn_ctx *ctx, int status);
 /* The same for a failure about the model read from path: the message is printed with

@@ -22,9 +22,12 @@
 #   CR          the same file with old Mac line endings (a lone CR): likewise.
 # Hostile inputs that cannot be committed (empty, binary, huge lines, directories,
 # missing files) are generated into a temporary directory below.
+# The plain build runs each as a process; a sanitizer build runs them all in one process
+# (tests/corpus_runner.c, the command's own code once per run, a leak check after each:
+# crun in lib/common.sh), where a process start and exit-time leak check cost ~0.1 s.
 #
 # ctest-shards: 4
-# ctest-cost: 120 (about the seconds of one shard under ASan: ctest -j starts them first)
+# ctest-cost: 40 (about the seconds of one shard: ctest -j starts them first)
 # Shards: `errors.sh CATENA K/N` runs the cases whose name hashes to K of N (ctest runs
 # cli_errors_1 .. cli_errors_N side by side, see CMakeLists.txt); without K/N, every case.
 # The JSON documents of a run are checked together by one python3 at the end; each case
@@ -154,8 +157,8 @@ case_stderr() {
 # check_plain PATH CODE SUBSTRING MODE
 check_plain() {
     local path=$1 code=$2 want=$3 mode=$4 rc err=$T/err.$4
-    "$BIN" solve "$path" >"$T/out" 2>"$err"
-    rc=$?
+    crun "$T/out" "$err" solve "$path"
+    rc=$RC
     sanitizer_report "$err" "$mode"
     if [ "$rc" != "$code" ]; then
         WHY+=("$mode: expected exit $code, got $(describe "$rc"); stderr: $(head -c 300 "$err")")
@@ -182,8 +185,8 @@ check_plain() {
 check_json() {
     local path=$1 code=$2 rc
     local out=$T/json/${#CASES[@]}.json
-    "$BIN" solve "$path" --json >"$out" 2>"$T/err.json"
-    rc=$?
+    crun "$out" "$T/err.json" solve "$path" --json
+    rc=$RC
     sanitizer_report "$T/err.json" "--json"
     [ "$rc" = "$code" ] ||
         WHY+=("--json: expected exit $code, got $(describe "$rc"); stderr: $(head -c 300 "$T/err.json")")
@@ -197,8 +200,8 @@ check_json() {
 # check_outdir PATH CODE NAME
 check_outdir() {
     local path=$1 code=$2 dir=$T/outdir/$3 rc
-    "$BIN" solve "$path" -q -o "$dir" >/dev/null 2>"$T/err.o"
-    rc=$?
+    crun /dev/null "$T/err.o" solve "$path" -q -o "$dir"
+    rc=$RC
     sanitizer_report "$T/err.o" "-o"
     [ "$rc" = "$code" ] ||
         WHY+=("-o: expected exit $code, got $(describe "$rc"); stderr: $(head -c 300 "$T/err.o")")
@@ -249,23 +252,10 @@ run_case() {
 }
 
 # ---- the committed corpus -------------------------------------------------------------
-# A sanitizer build (CTN_SANITIZE) runs the CRLF and CR-only copies of a quarter of the
-# corpus (by name hash; the lexer's line-ending path is the same for every file), the
-# LF file in every mode: each run costs a sanitized process start and leak check
-# (~0.1 s), and make test must stay under 10 minutes. The plain build runs every copy of
-# every file, so every assertion (codes, messages, lines) still runs.
-BUILD_DIR=$(cd "$(dirname "$BIN")" && pwd)
-SANITIZED=0
-grep -Eq '^CTN_SANITIZE:BOOL=ON' "$BUILD_DIR/CMakeCache.txt" 2>/dev/null && SANITIZED=1
-endings() {   # endings NAME: whether this build runs NAME's CRLF and CR-only copies
-    local s=$1 h=5381 i c
-    [ "$SANITIZED" = 0 ] && return 0
-    for ((i = 0; i < ${#s}; i++)); do
-        printf -v c '%d' "'${s:i:1}"
-        h=$(((h * 37 + c) % 1000003))
-    done
-    [ $((h % 4)) = 0 ]
-}
+# Every file in every mode, and its CRLF and CR-only copies. A sanitizer build runs them
+# in one process (tests/corpus_runner.c through crun, lib/common.sh): a sanitized process
+# start and leak check cost ~0.1 s, and the corpus is ~1500 runs.
+cli_runner_start
 mkdir -p "$T/crlf" "$T/cr"
 ncorpus=0
 for f in tests/errors/*.cable; do
@@ -297,16 +287,14 @@ for f in tests/errors/*.cable; do
     check_plain "$f" "$code" "${want//FILE/$f}" plain
     check_json "$f" "$code"
     check_outdir "$f" "$code" "$name"
-    if endings "$name"; then
-        # The same model with CRLF line endings.
-        c=$T/crlf/$name.cable
-        sed 's/\r*$/\r/' "$f" >"$c"
-        check_plain "$c" "$code" "${want//FILE/$c}" CRLF
-        # ... and with CR-only line endings.
-        c=$T/cr/$name.cable
-        sed 's/\r*$//' "$f" | tr '\n' '\r' >"$c"
-        check_plain "$c" "$code" "${want//FILE/$c}" CR
-    fi
+    # The same model with CRLF line endings.
+    c=$T/crlf/$name.cable
+    sed 's/\r*$/\r/' "$f" >"$c"
+    check_plain "$c" "$code" "${want//FILE/$c}" CRLF
+    # ... and with CR-only line endings.
+    c=$T/cr/$name.cable
+    sed 's/\r*$//' "$f" | tr '\n' '\r' >"$c"
+    check_plain "$c" "$code" "${want//FILE/$c}" CR
     case_done "$name"
 done
 if mine corpus_size && [ "$ncorpus" -lt 45 ]; then
@@ -448,7 +436,9 @@ if mine gen_output_under_file; then
     case_done gen_output_under_file
 fi
 
-# ---- the JSON documents, then every case in the order it ran ---------------------------
+# ---- the runner's own end (a leak found at its exit), the JSON documents, then every
+# case in the order it ran ----------------------------------------------------------------
+cli_runner_stop || { rc=$?; WHY+=("the in-process runner (tests/corpus_runner.c) exited with $(describe "$rc")"); case_done corpus_runner; }
 check_all_json
 for i in "${!CASES[@]}"; do
     WHY=()

@@ -56,3 +56,60 @@ cli_shard() {
     SHARD_K=${BASH_REMATCH[1]}
     SHARD_N=${BASH_REMATCH[2]}
 }
+
+# The command run in one process (tests/corpus_runner.c) in a sanitizer build, where a
+# process start and its leak check cost ~0.1 s each: cli_runner_start starts the runner
+# built beside $BIN when that build is sanitized (CTN_SANITIZE) and sets RUNNER_ON=1;
+# crun OUT ERR ARGS... runs `catena ARGS >OUT 2>ERR` through it (as a process when there
+# is no runner) and sets RC. A run that ends the runner (a sanitizer's abort, a crash)
+# gets the runner's exit status as RC, its report in ERR, and a new runner for the next;
+# so does a run after which the runner's leak check found a leak (its report in ERR).
+# cli_runner_stop ends the runner: 0, or its exit status (a leak found at its exit).
+RUNNER_ON=0
+cli_runner_start() {
+    local dir
+    dir=$(cd "$(dirname "$BIN")" && pwd)
+    [ -x "$dir/corpus_runner" ] || return 0
+    grep -Eq '^CTN_SANITIZE:BOOL=ON' "$dir/CMakeCache.txt" 2>/dev/null || return 0
+    RUNNER_BIN=$dir/corpus_runner
+    cli_runner_spawn
+}
+cli_runner_spawn() {
+    coproc RUNNER { exec "$RUNNER_BIN" 3<&0 4>&1 </dev/null >/dev/null; }
+    RUNNER_IN=${RUNNER[1]}
+    RUNNER_OUT=${RUNNER[0]}
+    RUNNER_CHILD=$RUNNER_PID
+    RUNNER_ON=1
+}
+crun() {
+    local out=$1 err=$2
+    shift 2
+    if [ "$RUNNER_ON" = 0 ]; then
+        "$BIN" "$@" >"$out" 2>"$err"
+        RC=$?
+        return 0
+    fi
+    # (SIGPIPE ignored for the write: a runner that has ended must not end this script)
+    local sent=0
+    trap '' PIPE
+    printf '%s\0' "$out" "$err" "$#" "$@" >&"$RUNNER_IN" 2>/dev/null && sent=1
+    trap - PIPE
+    local ended=0
+    if [ "$sent" = 1 ] && read -r RC ended <&"$RUNNER_OUT"; then
+        if [ "$ended" = 1 ]; then           # a leak, reported: a new runner for the next
+            wait "$RUNNER_CHILD"
+            cli_runner_spawn
+        fi
+        return 0
+    fi
+    wait "$RUNNER_CHILD"
+    RC=$?
+    [ "$RC" = 0 ] && RC=125                  # it ended cleanly in the middle of a run
+    cli_runner_spawn
+}
+cli_runner_stop() {
+    [ "$RUNNER_ON" = 1 ] || return 0
+    RUNNER_ON=0
+    exec {RUNNER_IN}>&-
+    wait "$RUNNER_CHILD"
+}
