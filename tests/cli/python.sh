@@ -29,7 +29,7 @@ fi
 
 pythons=()
 declare -A seen
-for py in "$(command -v python3 || true)" /usr/bin/python3; do
+for py in "$(type -P python3 || true)" /usr/bin/python3; do
     [ -n "$py" ] && [ -x "$py" ] || continue
     real=$(readlink -f "$("$py" -c 'import sys; print(sys.executable)' 2>/dev/null || echo "$py")")
     [ -n "${seen[$real]:-}" ] && continue

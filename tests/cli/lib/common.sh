@@ -7,6 +7,15 @@
 #   cli_shard NAME K/N     set SHARD_K, SHARD_N (1/1 without K/N) for a script that ctest
 #                          runs as N tests ("# ctest-shards: N", CMakeLists.txt)
 
+# python3 in the scripts is Debian's interpreter when there is one (the one scripts/deps.sh
+# installs numpy and pytest for): a version manager's shim first in PATH (pyenv's, on
+# this project's machines) is a shell script that costs ~0.5 s of CPU per call, and the
+# scripts call python3 hundreds of times. tests/cli/python.sh still tests the first
+# python3 in PATH (type -P) besides Debian's.
+if [ -x /usr/bin/python3 ]; then
+    python3() { /usr/bin/python3 "$@"; }
+fi
+
 cli_init() {
     local name=$1
     BIN=${2:?usage: tests/cli/$name.sh PATH/TO/catena}
