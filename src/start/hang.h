@@ -15,7 +15,8 @@ typedef struct ctn_hang {
     double length;      /* the chain's unstressed length (the tolerances' scale) */
     const double *f;    /* 3 n loads on the free nodes 1..n (node n: the tip) */
     double a[3];        /* the anchor */
-    unsigned held;      /* the tip's held directions (bits 0..2; not all three) */
+    unsigned held;      /* the tip's held directions (bits 0..2; all three: a chain between
+                           two anchors, the tip the second) */
     double target[3];   /* the tip's coordinates in those directions */
 } ctn_hang;
 
