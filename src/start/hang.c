@@ -1,5 +1,6 @@
 /* The hanging place of a dangling chain, the tip held in some directions (a rope's end
- * on a slide or a plane).
+ * on a slide or a plane), or in all three (a chain between two anchors: the tip is the
+ * second anchor, its reaction the three unknowns).
  *
  * Walking from the tip to the anchor, member j carries the force F_j = r + S_j, the
  * loads S_j of the nodes from j to the tip plus the tip's reaction r (in its held
@@ -13,7 +14,9 @@
  * member is whatever gives its chord as such a gradient (element.h's `hang` op: a bar,
  * or an elastic catenary whose own weight bends it between its nodes). The
  * tip out of reach (held on a plane farther from the anchor than the chain is long) has
- * no minimizer: no placement. With the tip free there is no unknown: one walk. */
+ * no minimizer: no placement. With the tip free there is no unknown: one walk. Newton
+ * stops at |tip - t| <= HANG_TOL of the length, or where it no longer lowers it within
+ * HANG_STALL (a long chain's sum of chords at its round-off). */
 #include "start/hang.h"
 
 #include <float.h>

@@ -1,5 +1,6 @@
 /* The hanging place of a dangling chain (an anchor, then n members to a tip): the exact
- * equilibrium of the chain under its nodal loads, the tip held in some directions. */
+ * equilibrium of the chain under its nodal loads, the tip held in some directions (all
+ * three: a chain between two anchors). */
 #ifndef CTN_START_HANG_H
 #define CTN_START_HANG_H
 

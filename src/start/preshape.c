@@ -1,4 +1,5 @@
-/* Pre-shaping of slack chains (CTN_METHOD_AUTO, once before the first step).
+/* Pre-shaping of slack chains (CTN_METHOD_AUTO, once before the first step; and at the
+ * start of a later step or a load case, ctn_preshape_step at the end of this file).
  * A chain is a run of free nodes with exactly two elements each, between two anchor
  * nodes (supported, or joining more than two elements). A chain whose start polyline is
  * shorter than its unstressed length (a cable given straight, or as its unstressed
@@ -236,6 +237,28 @@ static int place_dangling(const ctn_problem *e, const chains *c, size_t n, const
     return 1;
 }
 
+/* An arch: a node of the chain at d beyond its chord against the load direction g (a
+ * von Mises truss, a shallow arch under its load: the hanging shape is another
+ * equilibrium, not its start). S: the chain's length (the tolerance's scale). */
+static int arch(const ctn_problem *e, const chains *c, size_t n, const double *d, const double g[3], double S)
+{
+    double a[3], b[3], ch[3], c2 = 0;
+    current(e, d, c->nodes[0], a);
+    current(e, d, c->nodes[n - 1], b);
+    for (int k = 0; k < 3; k++) {
+        ch[k] = b[k] - a[k];
+        c2 += ch[k] * ch[k];
+    }
+    for (size_t i = 1; i + 1 < n && c2 > 0; i++) {
+        double x[3], t = 0, side = 0;
+        current(e, d, c->nodes[i], x);
+        for (int k = 0; k < 3; k++) t += (x[k] - a[k]) * ch[k] / c2;
+        for (int k = 0; k < 3; k++) side += (x[k] - a[k] - t * ch[k]) * g[k];
+        if (side < -1e-12 * S) return 1;
+    }
+    return 0;
+}
+
 /* A chain between two supports (both ends held in every direction) whose members all
  * hang by a law (element.h's `hang` op): its funicular through the anchors is the exact
  * equilibrium of the chain under fixed loads, whatever its start. */
@@ -257,6 +280,19 @@ static int place_anchored(const ctn_problem *e, const chains *c, size_t n, const
                           const double *loads, double *d)
 {
     if (!anchored(e, c, n)) return 0;
+    double *fh = ctn_malloc(e->ctx, e->ns, sizeof(double)), W[3] = { 0, 0, 0 }, S = 0;
+    if (!fh) return 0;
+    ctn_follow_forces_sel(e, d, sel, fh);          /* the loads' direction, for the arch test */
+    for (size_t i = 1; i + 1 < n; i++) {
+        size_t q = ctn_dofmap_node(&e->a->map, (size_t)c->nodes[i]);
+        for (int k = 0; k < 3; k++) W[k] += loads[3 * (size_t)c->nodes[i] + (size_t)k] + fh[q + (size_t)k];
+    }
+    ctn_free(fh);
+    double wn = sqrt(W[0] * W[0] + W[1] * W[1] + W[2] * W[2]);
+    for (size_t i = 0; i + 1 < n; i++) S += rest_length(e, c->elems[i]);
+    if (!(wn > 0)) return 0;                       /* no load: no funicular */
+    for (int k = 0; k < 3; k++) W[k] /= wn;
+    if (arch(e, c, n, d, W, S)) return 0;
     return e->fl ? follow_funicular(e, c, n, 0, 1, sel, loads, d) : place_funicular(e, c, n, 0, 1, loads, NULL, d);
 }
 
@@ -405,20 +441,10 @@ static int place_loaded(const ctn_problem *e, const chains *c, size_t n, const d
         }
     }
     const ctn_section *sec = &m->sections.v[e0->section];
-    double a[3], b[3], ch[3], c2 = 0;
+    double a[3], b[3];
+    if (arch(e, c, n, d, g, S)) return 0;
     current(e, d, c->nodes[0], a);
     current(e, d, c->nodes[n - 1], b);
-    for (int k = 0; k < 3; k++) {
-        ch[k] = b[k] - a[k];
-        c2 += ch[k] * ch[k];
-    }
-    for (size_t i = 1; i + 1 < n && c2 > 0; i++) {  /* an arch (a node beyond the chord */
-        double x[3], t = 0, side = 0;                /* against the load) stays an arch */
-        current(e, d, c->nodes[i], x);
-        for (int k = 0; k < 3; k++) t += (x[k] - a[k]) * ch[k] / c2;
-        for (int k = 0; k < 3; k++) side += (x[k] - a[k] - t * ch[k]) * g[k];
-        if (side < -1e-12 * S) return 0;
-    }
     ctn_catenary_place cat;
     int ne = (int)(n - 1);
     if (ctn_catenary_start(e->ctx, a, b, g, w, m->materials.v[sec->material].E * sec->A, S, ne, CTN_LOADED_EPS, &cat))
@@ -597,10 +623,18 @@ static int turns(const ctn_problem *e, const chains *c, size_t n, const double *
 }
 
 /* The chain's polyline at d is shorter than its unstressed length (at the temperatures
- * the assembly holds): it cannot start in tension (a conductor heated). */
+ * the assembly holds): it cannot start in tension (a conductor heated). A chain with a
+ * member that hangs by its own law (a catenary element, whose chord is always shorter
+ * than it) counts as slack when the step changes a member's temperature. */
 static int slack(const ctn_problem *e, const chains *c, size_t n, const double *d)
 {
     double S = 0, poly = 0, x0[3], x1[3];
+    for (size_t i = 0; i + 1 < n; i++)
+        if (!(ctn_asm_block_of(e->a, (size_t)c->elems[i])->ops->flags & CTN_ELEM_FLEXIBLE)) {
+            for (size_t j = 0; e->dT0 && j + 1 < n; j++)
+                if (e->dT0[c->elems[j]] != e->dT1[c->elems[j]]) return 1;
+            return 0;
+        }
     for (size_t i = 0; i + 1 < n; i++) {
         S += rest_length(e, c->elems[i]);
         current(e, d, c->nodes[i], x0);
