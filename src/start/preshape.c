@@ -557,6 +557,15 @@ static int flexible(const ctn_problem *e, const chains *c, size_t n)
     return 1;
 }
 
+static void chains_free(chains *c)
+{
+    ctn_free(c->deg);
+    ctn_free(c->inc);
+    ctn_free(c->nodes);
+    ctn_free(c->elems);
+    ctn_free(c->seen);
+}
+
 int ctn_preshape(ctn_problem *e, double *d, int *count)
 {
     chains c = { NULL, NULL, NULL, NULL, NULL };
@@ -591,11 +600,7 @@ int ctn_preshape(ctn_problem *e, double *d, int *count)
                   place_chain(e, &c, n, d);
     }
     ctn_free(loadsw);
-    ctn_free(c.deg);
-    ctn_free(c.inc);
-    ctn_free(c.nodes);
-    ctn_free(c.elems);
-    ctn_free(c.seen);
+    chains_free(&c);
     return rc;
 }
 
@@ -669,10 +674,6 @@ int ctn_preshape_step(ctn_problem *e, const ctn_loadsel *from, const ctn_loadsel
     if (!rc && e->dT0) ctn_asm_set_temperatures(e->a, e->dT0);
     ctn_free(h0);
     ctn_free(h1);
-    ctn_free(c.deg);
-    ctn_free(c.inc);
-    ctn_free(c.nodes);
-    ctn_free(c.elems);
-    ctn_free(c.seen);
+    chains_free(&c);
     return rc;
 }
