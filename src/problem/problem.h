@@ -195,6 +195,11 @@ int ctn_arclength_run(ctn_problem *p, ctn_solution *s, double *d);
 /* Place slack chains on the arc of their unstressed length (see preshape.c); *count
  * gets the number of chains placed. */
 int ctn_preshape(ctn_problem *p, double *d, int *count);
+/* The start of a later load step or of a load case taken in one increment (its loads in
+ * f0/f1/dT0/dT1, its selections from and to): a chain between two supports that the
+ * step's temperature leaves slack, or whose loads turn (a wind), placed on its funicular
+ * under the end's loads (preshape.c); *count gets the number of chains placed. */
+int ctn_preshape_step(ctn_problem *p, const ctn_loadsel *from, const ctn_loadsel *to, double *d, int *count);
 /* Place the free anchors of meshed cables meeting at a free node on the equilibrium of
  * the model with each chain as one elastic catenary, and the chains on their catenaries
  * (junction.c); loads: the first step's dead loads (3 per node); the elements placed are

@@ -1,5 +1,6 @@
 /* The hanging place of a dangling chain, the tip held in some directions (a rope's end
- * on a slide or a plane).
+ * on a slide or a plane), or in all three (a chain between two anchors: the tip is the
+ * second anchor, its reaction the three unknowns).
  *
  * Walking from the tip to the anchor, member j carries the force F_j = r + S_j, the
  * loads S_j of the nodes from j to the tip plus the tip's reaction r (in its held
@@ -13,7 +14,9 @@
  * member is whatever gives its chord as such a gradient (element.h's `hang` op: a bar,
  * or an elastic catenary whose own weight bends it between its nodes). The
  * tip out of reach (held on a plane farther from the anchor than the chain is long) has
- * no minimizer: no placement. With the tip free there is no unknown: one walk. */
+ * no minimizer: no placement. With the tip free there is no unknown: one walk. Newton
+ * stops at |tip - t| <= HANG_TOL of the length, or where it no longer lowers it within
+ * HANG_STALL (a long chain's sum of chords at its round-off). */
 #include "start/hang.h"
 
 #include <float.h>
@@ -22,6 +25,7 @@
 
 #define HANG_ITERATIONS 100
 #define HANG_TOL 1e-12      /* |tip - t| relative to the chain's length */
+#define HANG_STALL 1e-9     /* the same where Newton no longer lowers it (its round-off) */
 
 /* One walk from the tip at reaction r: the tip's offset from the anchor (tip), psi's
  * energy part (*phi), its Hessian (H, 3x3); 0 if a member gives no chord. x (or NULL):
@@ -47,9 +51,42 @@ static int walk(const ctn_hang *h, const double r[3], double tip[3], double *phi
     return 1;
 }
 
-/* Solve the m x m system A z = b (m <= 2) of the held directions; 0 if singular. */
-static int solve_small(int m, const double A[4], const double b[2], double z[2])
+/* Solve the m x m system A z = b (m <= 3) of the held directions; 0 if singular. One or
+ * two directions directly; three (a chain between anchors) by elimination with partial
+ * pivoting. */
+static int solve_three(const double A[9], const double b[3], double z[3])
 {
+    double M[3][4], big = 0;
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++) big = fmax(big, fabs(M[i][j] = A[3 * i + j]));
+        M[i][3] = b[i];
+    }
+    for (int c = 0; c < 3; c++) {
+        int p = c;
+        for (int i = c + 1; i < 3; i++)
+            if (fabs(M[i][c]) > fabs(M[p][c])) p = i;
+        if (!(fabs(M[p][c]) > 1e-14 * big)) return 0;
+        for (int j = 0; j < 4; j++) {
+            double t = M[c][j];
+            M[c][j] = M[p][j];
+            M[p][j] = t;
+        }
+        for (int i = c + 1; i < 3; i++) {
+            double f = M[i][c] / M[c][c];
+            for (int j = c; j < 4; j++) M[i][j] -= f * M[c][j];
+        }
+    }
+    for (int i = 3; i-- > 0;) {
+        double t = M[i][3];
+        for (int j = i + 1; j < 3; j++) t -= M[i][j] * z[j];
+        z[i] = t / M[i][i];
+    }
+    return 1;
+}
+
+static int solve_small(int m, const double A[9], const double b[3], double z[3])
+{
+    if (m == 3) return solve_three(A, b, z);
     if (m == 1) {
         if (!(A[0] > 0)) return 0;
         z[0] = b[0] / A[0];
@@ -62,26 +99,51 @@ static int solve_small(int m, const double A[4], const double b[2], double z[2])
     return 1;
 }
 
+/* A tip held in every direction (a chain between two anchors): the first reaction is
+ * that of a parabola of moderate sag, H = |W| along the chord and half the loads W
+ * against them, so that every member starts with a force (at r = 0 the member at the
+ * tip has none). 0 if the chain carries no load (no funicular to find). */
+static int first_reaction(const ctn_hang *h, double r[3])
+{
+    double W[3] = { 0, 0, 0 }, c[3], cn = 0, wn = 0;
+    for (size_t j = 0; j < h->n; j++)
+        for (int k = 0; k < 3; k++) W[k] += h->f[3 * j + (size_t)k];
+    for (int k = 0; k < 3; k++) {
+        c[k] = h->target[k] - h->a[k];
+        cn += c[k] * c[k];
+        wn += W[k] * W[k];
+    }
+    cn = sqrt(cn);
+    wn = sqrt(wn);
+    if (!(wn > 0 && cn > 0)) return 0;
+    for (int k = 0; k < 3; k++) r[k] = wn * c[k] / cn - 0.5 * W[k];
+    return 1;
+}
+
 int ctn_hang_place(const ctn_hang *h, double *x)
 {
     int dirs[3], m = 0;
     double L = h->length;
     for (int k = 0; k < 3; k++)
         if (h->held & (1u << k)) dirs[m++] = k;
-    if (m == 3 || h->n == 0 || !(L > 0)) return 0;
+    if (h->n == 0 || !(L > 0)) return 0;
     double r[3] = { 0, 0, 0 }, tip[3], H[9], phi;
+    if (m == 3 && !first_reaction(h, r)) return 0;
     if (!walk(h, r, tip, &phi, H, NULL)) return 0;
+    double last = INFINITY;
     for (int it = 0; m > 0; it++) {
-        double g[2], A[4], z[2], psi = phi;
+        double g[3], A[9], z[3], psi = phi;
         for (int i = 0; i < m; i++) {
             g[i] = h->a[dirs[i]] + tip[dirs[i]] - h->target[dirs[i]];   /* psi's gradient */
             psi -= r[dirs[i]] * (h->target[dirs[i]] - h->a[dirs[i]]);
             for (int j = 0; j < m; j++) A[i * m + j] = H[3 * dirs[i] + dirs[j]];
         }
-        double gn = m == 1 ? fabs(g[0]) : hypot(g[0], g[1]);
-        if (gn <= HANG_TOL * L) break;
+        double gn = m == 1 ? fabs(g[0]) : m == 2 ? hypot(g[0], g[1]) : sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+        double slope = 0, t = 1, r1[3];
+        if (gn <= HANG_TOL * L || (gn >= last && gn <= HANG_STALL * L)) break;
+        last = gn;
         if (it == HANG_ITERATIONS || !solve_small(m, A, g, z)) return 0;
-        double t = 1, slope = -(g[0] * z[0] + (m == 2 ? g[1] * z[1] : 0)), r1[3];
+        slope = -(g[0] * z[0] + (m >= 2 ? g[1] * z[1] : 0) + (m == 3 ? g[2] * z[2] : 0));
         for (int ls = 0;; ls++, t *= 0.5) {            /* Armijo on psi */
             if (ls == 60) return 0;
             memcpy(r1, r, sizeof r1);

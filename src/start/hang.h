@@ -1,5 +1,6 @@
 /* The hanging place of a dangling chain (an anchor, then n members to a tip): the exact
- * equilibrium of the chain under its nodal loads, the tip held in some directions. */
+ * equilibrium of the chain under its nodal loads, the tip held in some directions (all
+ * three: a chain between two anchors). */
 #ifndef CTN_START_HANG_H
 #define CTN_START_HANG_H
 
@@ -15,7 +16,8 @@ typedef struct ctn_hang {
     double length;      /* the chain's unstressed length (the tolerances' scale) */
     const double *f;    /* 3 n loads on the free nodes 1..n (node n: the tip) */
     double a[3];        /* the anchor */
-    unsigned held;      /* the tip's held directions (bits 0..2; not all three) */
+    unsigned held;      /* the tip's held directions (bits 0..2; all three: a chain between
+                           two anchors, the tip the second) */
     double target[3];   /* the tip's coordinates in those directions */
 } ctn_hang;
 

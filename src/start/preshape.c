@@ -1,4 +1,5 @@
-/* Pre-shaping of slack chains (CTN_METHOD_AUTO, once before the first step).
+/* Pre-shaping of slack chains (CTN_METHOD_AUTO, once before the first step; and at the
+ * start of a later step or a load case, ctn_preshape_step at the end of this file).
  * A chain is a run of free nodes with exactly two elements each, between two anchor
  * nodes (supported, or joining more than two elements). A chain whose start polyline is
  * shorter than its unstressed length (a cable given straight, or as its unstressed
@@ -127,8 +128,11 @@ static double member(const void *ud, size_t j, const double S[3], double v[3], d
     return phi;
 }
 
-static int place_funicular(const ctn_problem *e, const chains *c, size_t n, int flip, const double *loads,
-                           const double *fh, double *d)
+/* anchored: the chain between two anchors (its last node the tip, held in every
+ * direction where it is: the exact equilibrium of the chain under the loads, its anchors
+ * where they are); else a dangling chain, its tip at node 0 when flip. */
+static int place_funicular(const ctn_problem *e, const chains *c, size_t n, int flip, int anchored,
+                           const double *loads, const double *fh, double *d)
 {
     size_t ne = n - 1;
     double *f = ctn_malloc(e->ctx, 6 * ne, sizeof(double));
@@ -155,7 +159,7 @@ static int place_funicular(const ctn_problem *e, const chains *c, size_t n, int 
     int tipn = c->nodes[flip ? 0 : n - 1], ok;
     current(e, d, c->nodes[flip ? n - 1 : 0], h.a);
     current(e, d, tipn, h.target);
-    h.held = e->m->nodes.v[tipn].fix & 7u;
+    h.held = anchored ? 7u : e->m->nodes.v[tipn].fix & 7u;
     ok = ctn_hang_place(&h, x);
     for (int pass = 0; ok && pass < 2; pass++)    /* check every node's place, then move */
         for (size_t i = 1; ok && i < n; i++) {
@@ -163,7 +167,7 @@ static int place_funicular(const ctn_problem *e, const chains *c, size_t n, int 
             double dn[3];
             for (int q = 0; q < 3; q++) dn[q] = x[3 * (i - 1) + (size_t)q] - e->m->nodes.v[node].X[q];
             if (pass == 0 && node != tipn && !admits(e, node, dn, S)) ok = 0;   /* held elsewhere */
-            if (pass == 1) place(e, d, node, dn);
+            if (pass == 1 && !(anchored && node == tipn)) place(e, d, node, dn);
         }
     ctn_free(f);
     ctn_free(el);
@@ -171,22 +175,24 @@ static int place_funicular(const ctn_problem *e, const chains *c, size_t n, int 
 }
 
 /* Loads that follow the geometry (a wind's drag on the chord's projection, an hload on the
- * deformed one) of the first step: the funicular is placed again under the dead loads and
+ * deformed one) of selection sel: the funicular is placed again under the dead loads and
  * those at its last place, until no node moves by more than CTN_FOLLOW_MOVE of the
  * chain's length (a fixed point: a pendant rope swung by a wind across it, whose drag
  * falls as it swings), at most CTN_FOLLOW_PLACES times. The last place is kept. */
 #define CTN_FOLLOW_PLACES 100
 #define CTN_FOLLOW_MOVE 1e-10
-static void follow_funicular(const ctn_problem *e, const chains *c, size_t n, int flip, const double *loads, double *d)
+static int follow_funicular(const ctn_problem *e, const chains *c, size_t n, int flip, int anchored,
+                             const ctn_loadsel *sel, const double *loads, double *d)
 {
     double *fh = ctn_malloc(e->ctx, e->ns, sizeof(double)), *x = ctn_malloc(e->ctx, 3 * n, sizeof(double)), S = 0;
-    ctn_loadsel first = ctn_loadsel_step(0);
+    int placed = 0;
     for (size_t i = 0; i + 1 < n; i++) S += rest_length(e, c->elems[i]);
     for (int it = 0; fh && x && it < CTN_FOLLOW_PLACES; it++) {
         double move = 0;
         for (size_t i = 0; i < n; i++) current(e, d, c->nodes[i], x + 3 * i);
-        ctn_follow_forces_sel(e, d, &first, fh);
-        if (!place_funicular(e, c, n, flip, loads, fh, d)) break;
+        ctn_follow_forces_sel(e, d, sel, fh);
+        if (!place_funicular(e, c, n, flip, anchored, loads, fh, d)) break;
+        placed = 1;
         for (size_t i = 0; i < n; i++) {
             double y[3];
             current(e, d, c->nodes[i], y);
@@ -196,14 +202,16 @@ static void follow_funicular(const ctn_problem *e, const chains *c, size_t n, in
     }
     ctn_free(fh);
     ctn_free(x);
+    return placed;
 }
 
 static int place_dangling(const ctn_problem *e, const chains *c, size_t n, const double *loads, double *d)
 {
     int flip = tip(e, c, c->nodes[0]);
     if (n < 2 || !(flip || tip(e, c, c->nodes[n - 1]))) return 0;
-    if (place_funicular(e, c, n, flip, loads, NULL, d)) {
-        if (e->fl) follow_funicular(e, c, n, flip, loads, d);
+    if (place_funicular(e, c, n, flip, 0, loads, NULL, d)) {
+        ctn_loadsel first = ctn_loadsel_step(0);
+        if (e->fl) follow_funicular(e, c, n, flip, 0, &first, loads, d);
         return 1;
     }
     double R[3] = { 0, 0, 0 }, a[3], rn = 0;
@@ -227,6 +235,65 @@ static int place_dangling(const ctn_problem *e, const chains *c, size_t n, const
         }
     }
     return 1;
+}
+
+/* An arch: a node of the chain at d beyond its chord against the load direction g (a
+ * von Mises truss, a shallow arch under its load: the hanging shape is another
+ * equilibrium, not its start). S: the chain's length (the tolerance's scale). */
+static int arch(const ctn_problem *e, const chains *c, size_t n, const double *d, const double g[3], double S)
+{
+    double a[3], b[3], ch[3], c2 = 0;
+    current(e, d, c->nodes[0], a);
+    current(e, d, c->nodes[n - 1], b);
+    for (int k = 0; k < 3; k++) {
+        ch[k] = b[k] - a[k];
+        c2 += ch[k] * ch[k];
+    }
+    for (size_t i = 1; i + 1 < n && c2 > 0; i++) {
+        double x[3], t = 0, side = 0;
+        current(e, d, c->nodes[i], x);
+        for (int k = 0; k < 3; k++) t += (x[k] - a[k]) * ch[k] / c2;
+        for (int k = 0; k < 3; k++) side += (x[k] - a[k] - t * ch[k]) * g[k];
+        if (side < -1e-12 * S) return 1;
+    }
+    return 0;
+}
+
+/* A chain between two supports (both ends held in every direction) whose members all
+ * hang by a law (element.h's `hang` op): its funicular through the anchors is the exact
+ * equilibrium of the chain under fixed loads, whatever its start. */
+static int anchored(const ctn_problem *e, const chains *c, size_t n)
+{
+    const ctn_model *m = e->m;
+    if (n < 3 || c->nodes[0] == c->nodes[n - 1] || (m->nodes.v[c->nodes[0]].fix & 7u) != 7u ||
+        (m->nodes.v[c->nodes[n - 1]].fix & 7u) != 7u)
+        return 0;
+    for (size_t i = 0; i + 1 < n; i++)
+        if (!ctn_asm_block_of(e->a, (size_t)c->elems[i])->ops->hang) return 0;
+    return 1;
+}
+
+/* Place an anchored chain on its funicular under the dead loads and those of selection
+ * sel that follow the geometry (a wind's drag: the fixed point of follow_funicular, from
+ * the drag on its current chords). 1 if placed. */
+static int place_anchored(const ctn_problem *e, const chains *c, size_t n, const ctn_loadsel *sel,
+                          const double *loads, double *d)
+{
+    if (!anchored(e, c, n)) return 0;
+    double *fh = ctn_malloc(e->ctx, e->ns, sizeof(double)), W[3] = { 0, 0, 0 }, S = 0;
+    if (!fh) return 0;
+    ctn_follow_forces_sel(e, d, sel, fh);          /* the loads' direction, for the arch test */
+    for (size_t i = 1; i + 1 < n; i++) {
+        size_t q = ctn_dofmap_node(&e->a->map, (size_t)c->nodes[i]);
+        for (int k = 0; k < 3; k++) W[k] += loads[3 * (size_t)c->nodes[i] + (size_t)k] + fh[q + (size_t)k];
+    }
+    ctn_free(fh);
+    double wn = sqrt(W[0] * W[0] + W[1] * W[1] + W[2] * W[2]);
+    for (size_t i = 0; i + 1 < n; i++) S += rest_length(e, c->elems[i]);
+    if (!(wn > 0)) return 0;                       /* no load: no funicular */
+    for (int k = 0; k < 3; k++) W[k] /= wn;
+    if (arch(e, c, n, d, W, S)) return 0;
+    return e->fl ? follow_funicular(e, c, n, 0, 1, sel, loads, d) : place_funicular(e, c, n, 0, 1, loads, NULL, d);
 }
 
 /* Place one chain of n nodes on its arc if it is slack; 1 if placed. */
@@ -374,20 +441,10 @@ static int place_loaded(const ctn_problem *e, const chains *c, size_t n, const d
         }
     }
     const ctn_section *sec = &m->sections.v[e0->section];
-    double a[3], b[3], ch[3], c2 = 0;
+    double a[3], b[3];
+    if (arch(e, c, n, d, g, S)) return 0;
     current(e, d, c->nodes[0], a);
     current(e, d, c->nodes[n - 1], b);
-    for (int k = 0; k < 3; k++) {
-        ch[k] = b[k] - a[k];
-        c2 += ch[k] * ch[k];
-    }
-    for (size_t i = 1; i + 1 < n && c2 > 0; i++) {  /* an arch (a node beyond the chord */
-        double x[3], t = 0, side = 0;                /* against the load) stays an arch */
-        current(e, d, c->nodes[i], x);
-        for (int k = 0; k < 3; k++) t += (x[k] - a[k]) * ch[k] / c2;
-        for (int k = 0; k < 3; k++) side += (x[k] - a[k] - t * ch[k]) * g[k];
-        if (side < -1e-12 * S) return 0;
-    }
     ctn_catenary_place cat;
     int ne = (int)(n - 1);
     if (ctn_catenary_start(e->ctx, a, b, g, w, m->materials.v[sec->material].E * sec->A, S, ne, CTN_LOADED_EPS, &cat))
@@ -500,6 +557,15 @@ static int flexible(const ctn_problem *e, const chains *c, size_t n)
     return 1;
 }
 
+static void chains_free(chains *c)
+{
+    ctn_free(c->deg);
+    ctn_free(c->inc);
+    ctn_free(c->nodes);
+    ctn_free(c->elems);
+    ctn_free(c->seen);
+}
+
 int ctn_preshape(ctn_problem *e, double *d, int *count)
 {
     chains c = { NULL, NULL, NULL, NULL, NULL };
@@ -510,6 +576,7 @@ int ctn_preshape(ctn_problem *e, double *d, int *count)
     if (!rc && !loadsw) rc = CTN_ERR_NOMEM;
     *count = 0;
     int junction = 0;
+    ctn_loadsel first = ctn_loadsel_step(0);
     if (!rc) ctn_model_step_loads_ex(m, 0, 1, loads, NULL);
     if (!rc) ctn_model_step_loads_ex(m, 0, 0, loadsw, NULL);
     if (!rc) rc = ctn_junction_place(e, loads, d, c.seen, &junction);
@@ -527,15 +594,86 @@ int ctn_preshape(ctn_problem *e, double *d, int *count)
             continue;
         }
         *count += place_dangling(e, &c, n, loads, d) || place_loaded(e, &c, n, loadsw, 0, d) ||
+                  (chain_windy(&c, n, loads, loadsw) && place_anchored(e, &c, n, &first, loads, d)) ||
                   (chain_windy(&c, n, loads, loadsw) && place_loaded(e, &c, n, loadsw, 1, d)) ||
                   (cb && windy(m, cb, loads, loadsw) && catenary_of_weight(e, cb, &c, loads, d)) ||
                   place_chain(e, &c, n, d);
     }
     ctn_free(loadsw);
-    ctn_free(c.deg);
-    ctn_free(c.inc);
-    ctn_free(c.nodes);
-    ctn_free(c.elems);
-    ctn_free(c.seen);
+    chains_free(&c);
+    return rc;
+}
+
+/* The direction of the loads on the chain's interior nodes turns by more than
+ * CTN_TURN_COS's angle (1 degree) from the step's start (f0: dead loads, h0: those that
+ * follow the geometry, at d) to its end (f1, h1): a wind that swings the span. */
+#define CTN_TURN_COS 0.99984769515639127     /* cos(1 degree) */
+static int turns(const ctn_problem *e, const chains *c, size_t n, const double *f0, const double *h0,
+                 const double *f1, const double *h1)
+{
+    double W0[3] = { 0, 0, 0 }, W1[3] = { 0, 0, 0 }, a = 0, b = 0, ab = 0;
+    for (size_t i = 1; i + 1 < n; i++) {
+        size_t s = ctn_dofmap_node(&e->a->map, (size_t)c->nodes[i]);
+        for (int k = 0; k < 3; k++) {
+            W0[k] += f0[s + (size_t)k] + h0[s + (size_t)k];
+            W1[k] += f1[s + (size_t)k] + h1[s + (size_t)k];
+        }
+    }
+    for (int k = 0; k < 3; k++) {
+        a += W0[k] * W0[k];
+        b += W1[k] * W1[k];
+        ab += W0[k] * W1[k];
+    }
+    return b > 0 && !(ab > CTN_TURN_COS * sqrt(a * b));
+}
+
+/* The chain's polyline at d is shorter than its unstressed length (at the temperatures
+ * the assembly holds): it cannot start in tension (a conductor heated). A chain with a
+ * member that hangs by its own law (a catenary element, whose chord is always shorter
+ * than it) counts as slack when the step changes a member's temperature. */
+static int slack(const ctn_problem *e, const chains *c, size_t n, const double *d)
+{
+    double S = 0, poly = 0, x0[3], x1[3];
+    for (size_t i = 0; i + 1 < n; i++)
+        if (!(ctn_asm_block_of(e->a, (size_t)c->elems[i])->ops->flags & CTN_ELEM_FLEXIBLE)) {
+            for (size_t j = 0; e->dT0 && j + 1 < n; j++)
+                if (e->dT0[c->elems[j]] != e->dT1[c->elems[j]]) return 1;
+            return 0;
+        }
+    for (size_t i = 0; i + 1 < n; i++) {
+        S += rest_length(e, c->elems[i]);
+        current(e, d, c->nodes[i], x0);
+        current(e, d, c->nodes[i + 1], x1);
+        poly += sqrt((x1[0] - x0[0]) * (x1[0] - x0[0]) + (x1[1] - x0[1]) * (x1[1] - x0[1]) +
+                     (x1[2] - x0[2]) * (x1[2] - x0[2]));
+    }
+    return poly < S;
+}
+
+int ctn_preshape_step(ctn_problem *e, const ctn_loadsel *from, const ctn_loadsel *to, double *d, int *count)
+{
+    chains c = { NULL, NULL, NULL, NULL, NULL };
+    int rc = incidence(e, &c);
+    double *h0 = ctn_malloc(e->ctx, e->ns, sizeof(double)), *h1 = ctn_malloc(e->ctx, e->ns, sizeof(double));
+    double *loads = e->v3;                         /* the step's end dead loads, per node */
+    *count = 0;
+    if (!rc && (!h0 || !h1)) rc = CTN_ERR_NOMEM;
+    if (!rc) {
+        ctn_dofmap_to3(&e->a->map, e->f1, loads);
+        ctn_follow_forces_sel(e, d, from, h0);
+        ctn_follow_forces_sel(e, d, to, h1);
+        if (e->dT1) ctn_asm_set_temperatures(e->a, e->dT1);   /* the end's rest lengths */
+    }
+    for (size_t i = 0; !rc && i < e->a->ne; i++) {
+        if (c.seen[i]) continue;
+        size_t n = walk(e, &c, (int)i);
+        c.seen[i] = 1;
+        if (n && anchored(e, &c, n) && (slack(e, &c, n, d) || turns(e, &c, n, e->f0, h0, e->f1, h1)))
+            *count += place_anchored(e, &c, n, to, loads, d);
+    }
+    if (!rc && e->dT0) ctn_asm_set_temperatures(e->a, e->dT0);
+    ctn_free(h0);
+    ctn_free(h1);
+    chains_free(&c);
     return rc;
 }

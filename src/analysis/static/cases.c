@@ -42,8 +42,14 @@ static int solve_case(ctn_problem *p, const ctn_solution *s, size_t i, double *d
     memcpy(p->p0, p->p1, p->ns * sizeof(double));
     ctn_problem_sel_loads(p, &sel);                 /* and the case's */
     installed_state(p, s, (size_t)from, d);
+    int sub = comb ? 0 : m->cases.v[i].substeps;
+    if (p->strategy->preshape && (sub > 0 ? sub : p->opt.steps) == 1) {   /* as a further step */
+        ctn_loadsel base = ctn_loadsel_step((size_t)from);               /* would start */
+        int placed = 0;
+        if ((rc = ctn_preshape_step(p, &base, &sel, d, &placed))) goto done;
+    }
     p->sum = &cs->sum;
-    rc = ctn_problem_run_step(p, cs, idx, comb ? 0 : m->cases.v[i].substeps, d, dstep);
+    rc = ctn_problem_run_step(p, cs, idx, sub, d, dstep);
     cs->sum.step = 0;
     cs->sum.reason = cs->steps[idx].reason;
     cs->sum.load_factor = cs->steps[idx].t;

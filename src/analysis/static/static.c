@@ -74,7 +74,13 @@ static int run_steps(ctn_problem *p, ctn_solution *s, double *d)
         memcpy(p->p0, p->p1, p->ns * sizeof(double));
         ctn_problem_step_loads(p, k);
         double target = step_load_norm(p);
-        if ((rc = ctn_problem_run_step(p, s, idx, ctn_model_step_substeps(p->m, k), d, dstep))) break;
+        int sub = ctn_model_step_substeps(p->m, k);
+        if (k > 0 && p->strategy->preshape && (sub > 0 ? sub : p->opt.steps) == 1) {   /* a chain heated */
+            ctn_loadsel from = ctn_loadsel_step(k - 1), to = ctn_loadsel_step(k);   /* slack, a wind */
+            int placed = 0;                                                          /* that turns */
+            if ((rc = ctn_preshape_step(p, &from, &to, d, &placed))) break;
+        }
+        if ((rc = ctn_problem_run_step(p, s, idx, sub, d, dstep))) break;
         s->sum.step = k;
         s->sum.fext_norm = s->steps[idx].reason == CTN_CONVERGED || !(target > 0) ? ctn_problem_fref(p) : target;
         s->sum.reason = s->steps[idx].reason;
