@@ -71,6 +71,10 @@ int ctn_app_mpi_rank(void);
 int ctn_app_mpi_size(void);
 int ctn_app_mpi_attach(ctn_ctx *ctx);
 int ctn_app_mpi_finalize(int code);
+/* With CATENA_MPI_DEBUG=1 in the environment, in a job: one line on stderr (rank 0's)
+ * saying how the static analysis held the tangent ("by columns" or "whole on every
+ * rank"), the check tests/cli/mpi.sh makes that the distributed path is taken. */
+void ctn_app_mpi_report(const ctn_solution *s);
 
 /* Exit code for a failed library call, after printing its message to stderr. */
 int ctn_app_fail(ctn_ctx *ctx, int status);
