@@ -57,10 +57,12 @@ int ctn_problem_dist_setup(ctn_problem *p, const char *name)
         if (!(p->lcolptr = ctn_malloc(p->ctx, m + 1, sizeof(int)))) return CTN_ERR_NOMEM;
         for (size_t j = 0; j <= m; j++) p->lcolptr[j] = p->a->colptr[p->c0 + j] - p->a->colptr[p->c0];
         nnz = (size_t)p->lcolptr[m];
-        if (!(p->lrowind = ctn_malloc(p->ctx, nnz ? nnz : 1, sizeof(int)))) return CTN_ERR_NOMEM;
-        memcpy(p->lrowind, p->a->rowind + p->a->colptr[p->c0], nnz * sizeof(int));
-        ctn_free(p->a->rowind);                 /* the other ranks' columns' rows */
-        p->a->rowind = NULL;
+        if (m < p->ndof) {                      /* the other ranks' columns' rows released */
+            if (!(p->lrowind = ctn_malloc(p->ctx, nnz ? nnz : 1, sizeof(int)))) return CTN_ERR_NOMEM;
+            memcpy(p->lrowind, p->a->rowind + p->a->colptr[p->c0], nnz * sizeof(int));
+            ctn_free(p->a->rowind);
+            p->a->rowind = NULL;
+        }
         int rc = ctn_asm_gather_keep(p->a, p->q0, p->q1);   /* the other ranks' nodes' lists */
         if (rc) return rc;
     }
@@ -72,7 +74,7 @@ int ctn_problem_dist_setup(ctn_problem *p, const char *name)
 /* this rank's columns of the pattern */
 static ctn_pattern local_pattern(const ctn_problem *p)
 {
-    return (ctn_pattern){ p->c1 - p->c0, p->lcolptr, p->lrowind };
+    return (ctn_pattern){ p->c1 - p->c0, p->lcolptr, p->lrowind ? p->lrowind : p->a->rowind };
 }
 
 int ctn_problem_solver_create(ctn_problem *p, const char *name, ctn_la_ordering ord, ctn_linsolve **out)
@@ -121,7 +123,7 @@ double ctn_problem_dist_max_diag(const ctn_problem *p)
 void ctn_problem_dist_symv(const ctn_problem *p, const double *Ax, const double *x, double *y)
 {
     const ctn_comm *c = ctn_ctx_comm(p->ctx);
-    const int *ri = p->lrowind;
+    const int *ri = p->lrowind ? p->lrowind : p->a->rowind;
     for (size_t i = 0; i < p->ndof; i++) y[i] = 0;
     for (size_t j = 0; j < p->c1 - p->c0; j++) {
         size_t col = p->c0 + j;
@@ -158,7 +160,7 @@ int ctn_problem_whole_K(ctn_problem *p, ctn_pattern *pat, double **Kx)
 {
     *pat = (ctn_pattern){ p->ndof, p->a->colptr, p->a->rowind };
     *Kx = p->Kx;
-    if (!p->dist) return CTN_OK;
+    if (!p->dist || p->a->rowind) return CTN_OK;             /* one rank: its columns are all */
     const ctn_comm *c = ctn_ctx_comm(p->ctx);
     size_t k0 = (size_t)p->a->colptr[p->c0], k1 = (size_t)p->a->colptr[p->c1];
     double *all = ctn_malloc(p->ctx, p->a->nnz ? p->a->nnz : 1, sizeof(double));

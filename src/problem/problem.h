@@ -99,8 +99,8 @@ struct ctn_problem {
     size_t q0, q1;             /* dist: this rank's nodes */
     size_t c0, c1;             /* dist: their columns (free DOFs), consecutive */
     int *lcolptr;              /* dist: c1 - c0 + 1, those columns' positions from 0 */
-    int *lrowind;              /* dist: their row indices (the assembly's a->rowind is
-                                  released: NULL) */
+    int *lrowind;              /* dist: their row indices, the assembly's a->rowind then
+                                  released (NULL); NULL when they are every column */
 };
 
 /* ctn_problem_create without the check that every cable target is resolved (for the

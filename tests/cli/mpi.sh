@@ -32,6 +32,10 @@
 # paper_E2e22, arclength_singular_start on 1 and 3 ranks) run with the tangent distributed
 # by columns (src/problem/dist.c): each rank assembles its own nodes' columns; the
 # semi-definite stability check of slack_held_node gathers the tangent to name its node.
+# Every check_ranks run sets CATENA_MPI_DEBUG=1 and checks the line it prints (app/mpi.c):
+# the tangent "by columns" for those, "whole on every rank" for the beams, pulleys,
+# catenary elements, modes and buckling (tangent_of), so a change that silently drops a
+# net back to the replicated tangent fails here.
 # Two models are compared by their verdicts only (converged, reason, stable), their
 # answers being round-off: tests/models/trust/paper_E2e14.cable (E = 2e14: the forces
 # are resolved to 1e-6 by any solver, the round-off floor) and the mode shapes of
