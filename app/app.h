@@ -71,6 +71,10 @@ int ctn_app_mpi_rank(void);
 int ctn_app_mpi_size(void);
 int ctn_app_mpi_attach(ctn_ctx *ctx);
 int ctn_app_mpi_finalize(int code);
+/* With CATENA_MPI_DEBUG=1 in the environment, in a job: one line on stderr (rank 0's)
+ * saying how the static analysis held the tangent ("by columns" or "whole on every
+ * rank"), the check tests/cli/mpi.sh makes that the distributed path is taken. */
+void ctn_app_mpi_report(const ctn_solution *s);
 
 /* The command: argv[1] names the sub-command (dispatch.c); its exit code. What it prints
  * goes to stdout and stderr; the caller flushes stdout (main.c). */

@@ -136,7 +136,8 @@ int ctn_cmd_solve(int argc, char **argv)
         ctn_app_progress_done(&progress);
     }
     if (rc) code = ctn_app_fail(ctx, rc);
-    else if (!(code = emit(ctx, &a, m, s, &progress))) {
+    else ctn_app_mpi_report(s);
+    if (!rc && !(code = emit(ctx, &a, m, s, &progress))) {
         ctn_solve_summary sum;
         ctn_solution_summary(s, &sum);
         code = sum.reason == CTN_CONVERGED ? CTN_EXIT_OK : CTN_EXIT_NOCONV;

@@ -66,6 +66,15 @@ int ctn_app_mpi_size(void) { return job.par ? ctn_parallel_size(job.par) : 1; }
 
 int ctn_app_mpi_attach(ctn_ctx *ctx) { return job.par ? ctn_parallel_attach(job.par, ctx) : CTN_OK; }
 
+void ctn_app_mpi_report(const ctn_solution *s)
+{
+    const char *on = getenv("CATENA_MPI_DEBUG");
+    if (!job.par || !s || !on || strcmp(on, "1")) return;
+    int n = ctn_parallel_size(job.par);
+    fprintf(stderr, "catena: mpi: %d rank%s, the tangent %s\n", n, n == 1 ? "" : "s",
+            ctn_solution_by_columns(s) ? "by columns" : "whole on every rank");
+}
+
 int ctn_app_mpi_finalize(int code)
 {
     if (job.par && ctn_parallel_max(job.par, &code)) code = CTN_EXIT_IO;

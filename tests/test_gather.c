@@ -12,6 +12,9 @@
  *   elements (the generic loop adds those after the node-by-node path);
  * - a collapsed element is reported as the same (first) element;
  * - each family's eval_axial gives eval's forces and tangent bit for bit;
+ * - a process's share (ctn_asm_gather_eval_nodes over a node range) gives the same bits
+ *   after ctn_asm_gather_keep has dropped the other nodes' lists, and ctn_asm_eval then
+ *   (the generic loop) the forces of every node bit for bit;
  * - every allocation of the assembler may fail: CTN_ERR_NOMEM, no leak. */
 #include "assemble/asm.h"
 #include "element/axial.h"
@@ -262,6 +265,60 @@ static void test_axial_ops(ctn_ctx *ctx)
     ctn_model_destroy(&m);
 }
 
+/* The first column of node q or a later one (problem/dist.c's). */
+static size_t first_column(const ctn_asm *a, size_t q)
+{
+    for (; q < a->nn; q++)
+        for (int j = 0; j < 3; j++)
+            if (a->map.eq[3 * q + (size_t)j] >= 0) return (size_t)a->map.eq[3 * q + (size_t)j];
+    return a->ndof;
+}
+
+/* Node ranges [q0, q1) of parts of m evaluated before and after ctn_asm_gather_keep. */
+static void keep_parts(ctn_ctx *ctx, const ctn_model *m, int parts, const char *what)
+{
+    ctn_asm *r = NULL;
+    CHECK(ctn_asm_create_ex(ctx, m, CTN_ASM_ONE_THREAD, &r) == CTN_OK && r->gather);
+    size_t ns = r->map.nstate, nz = r->nnz;
+    double *d = calloc(ns, sizeof(double)), *f0 = calloc(ns, sizeof(double)), *f1 = calloc(ns, sizeof(double));
+    double *K0 = calloc(nz + 1, sizeof(double)), *K1 = calloc(nz + 1, sizeof(double)), *fr = calloc(ns, sizeof(double));
+    unsigned seed = 11;
+    for (size_t i = 0; i < ns; i++) {
+        seed = seed * 1103515245u + 12345u;
+        d[i] = 0.3 * ((double)(seed >> 16 & 0x7fff) / 0x7fff - 0.5);
+    }
+    ctn_asm_eval(r, d, 0, fr, NULL, NULL, NULL);
+    for (int k = 0; k < parts; k++) {
+        ctn_asm *a = NULL;
+        size_t q0 = r->nn * (size_t)k / (size_t)parts, q1 = r->nn * (size_t)(k + 1) / (size_t)parts, b0, b1;
+        CHECK(ctn_asm_create_ex(ctx, m, CTN_ASM_ONE_THREAD, &a) == CTN_OK && a->gather);
+        if (!a) continue;
+        size_t k0 = (size_t)a->colptr[first_column(a, q0)], k1 = (size_t)a->colptr[first_column(a, q1)];
+        double U0 = 0, U1 = 0;
+        int c0 = ctn_asm_gather_eval_nodes(a, d, 0, q0, q1, f0, K0, &U0, &b0);
+        CHECK(ctn_asm_gather_keep(a, q0, q1) == CTN_OK);
+        int c1 = ctn_asm_gather_eval_nodes(a, d, 0, q0, q1, f1, K1, &U1, &b1);
+        CHECK_MSG(c0 == c1 && U0 == U1 && !memcmp(f0 + 3 * q0, f1 + 3 * q0, 3 * (q1 - q0) * sizeof(double)) &&
+                      !memcmp(K0, K1, (k1 - k0) * sizeof(double)), "%s: part %d of %d", what, k, parts);
+        memset(f1, 0x7f, ns * sizeof(double));
+        CHECK(ctn_asm_eval(a, d, 0, f1, NULL, NULL, NULL) == 0);       /* the generic loop */
+        CHECK_MSG(!memcmp(f1, fr, ns * sizeof(double)), "%s: part %d: every node's forces", what, k);
+        ctn_asm_destroy(&a);
+    }
+    free(d); free(f0); free(f1); free(K0); free(K1); free(fr);
+    ctn_asm_destroy(&r);
+}
+
+static void test_keep(ctn_ctx *ctx)
+{
+    ctn_model *m = read_model(ctx, NET);
+    keep_parts(ctx, m, 3, "net");
+    ctn_model_destroy(&m);
+    m = chain(ctx, 40);
+    keep_parts(ctx, m, 2, "chain 40");
+    ctn_model_destroy(&m);
+}
+
 /* Every allocation of the assembler with its node-by-node path may fail. */
 static void test_alloc_failures(ctn_ctx *ctx)
 {
@@ -292,6 +349,7 @@ int main(void)
     test_models(ctx);
     test_collapse(ctx);
     test_axial_ops(ctx);
+    test_keep(ctx);
     test_alloc_failures(ctx);
     ctn_ctx_destroy(&ctx);
     CHECK_DONE();

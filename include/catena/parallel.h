@@ -56,6 +56,10 @@ void ctn_parallel_job_finalize(ctn_parallel_job **job);
 
 /* The processes a solution was computed on (1 without a communicator). */
 int ctn_solution_ranks(const ctn_solution *s);
+/* 1 if its static analysis held the tangent by columns over the ranks (each rank
+ * assembled and held only its own nodes' columns: a net on MUMPS, docs/parallel.md), 0
+ * if every rank held the whole tangent (or one process solved it). */
+int ctn_solution_by_columns(const ctn_solution *s);
 /* The linear solver of its static analysis as the results name it ("cholmod",
  * "petsc-mumps", "petsc-cg-gamg", ...); "" if none was used. */
 const char *ctn_solution_linear_solver(const ctn_solution *s);

@@ -167,7 +167,7 @@ int ctn_asm_eval(const ctn_asm *a, const double *d, unsigned mode, double *f, do
                  double *U, size_t *bad)
 {
     assembly as = { f, Kx, 0.0 };
-    if (a->gather) {                                /* axial members node by node */
+    if (a->gather && a->gather->q0 == 0 && a->gather->q1 == a->nn) {   /* axial members node by node */
         size_t first = SIZE_MAX, later = SIZE_MAX;
         int collapsed = ctn_asm_gather_eval(a, d, mode, f, Kx, &as.U, &first);
         if (a->gather->mixed) collapsed |= loop(a, d, mode, Kx != NULL, assemble_visit, &as, &later, 1);

@@ -74,6 +74,8 @@ typedef struct ctn_asm_gather {
     int mixed;                         /* other families too: the generic loop adds them */
     int *ev_ptr;                       /* nn + 1: the elements whose lower node is q, */
     ctn_asm_ev *ev;                    /* in model order */
+    size_t q0, q1;                     /* the nodes whose lists are held: 0 .. nn, or a
+                                          process's range (ctn_asm_gather_keep) */
 } ctn_asm_gather;
 
 typedef struct ctn_asm {
@@ -195,6 +197,13 @@ int ctn_asm_eval_feed(const ctn_asm *a, const double *d, unsigned mode, double *
  * collapsed element of theirs in *bad (SIZE_MAX if none). */
 int ctn_asm_gather_eval_nodes(const ctn_asm *a, const double *d, unsigned mode, size_t q0, size_t q1, double *f,
                               double *Kx, double *U, size_t *bad);
+/* The node-by-node tables of nodes q0 .. q1 - 1 kept alone (a process that assembles
+ * those only: problem/dist.c): their element lists and adjacency moved to the front and
+ * the rest released. Afterwards only ctn_asm_gather_eval_nodes within that range reads
+ * them; ctn_asm_eval takes the generic element loop, for the internal forces alone (Kx
+ * NULL: no scatter map is built). CTN_OK (a shrink the allocator refuses keeps the
+ * larger blocks). */
+int ctn_asm_gather_keep(ctn_asm *a, size_t q0, size_t q1);
 /* The threads= option the assembly was created under, as the thread policy is asked
  * (core/threads.h): 1 (CTN_ASM_ONE_THREAD), or 0 (auto). */
 int ctn_asm_threads(const ctn_asm *a);

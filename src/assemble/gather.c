@@ -18,7 +18,7 @@
 #include "element/cable2.h"
 
 #include <stdint.h>
-#include <stdlib.h>
+#include <stdlib.h>   /* realloc: ctn_free is free (core/ctx.c) */
 #include <string.h>
 
 #define KEEP 4096                     /* elements kept per thread (448 KB: within L2) */
@@ -194,7 +194,39 @@ int ctn_asm_gather_build(ctn_ctx *ctx, ctn_asm *a, int **ptr, int **adj)
     g->adj_ptr = *ptr;                                 /* taken over */
     g->adj = *adj;
     *ptr = *adj = NULL;
+    g->q1 = a->nn;
     a->gather = g;
+    return CTN_OK;
+}
+
+/* The entries [ptr[q0], ptr[q1]) of list *v (elements of size bytes) moved to its front,
+ * ptr[q0 .. q1] rebased on them, and the list shrunk to them. */
+static void keep_range(void **v, size_t size, int *ptr, size_t q0, size_t q1)
+{
+    size_t t0 = (size_t)ptr[q0], n = (size_t)ptr[q1] - t0;
+    memmove(*v, (char *)*v + t0 * size, n * size);
+    for (size_t q = q0; q <= q1; q++) ptr[q] -= (int)t0;
+    void *w = realloc(*v, n ? n * size : 1);          /* ctn_free is free */
+    if (w) *v = w;
+}
+
+int ctn_asm_gather_keep(ctn_asm *a, size_t q0, size_t q1)
+{
+    ctn_asm_gather *g = a->gather;
+    if (!g || q0 > q1 || q1 > a->nn) return CTN_ERR_INVALID;
+    void *inc = g->inc, *ev = g->ev, *adj = g->adj;
+    int *order = g->order, t0 = g->inc_ptr[q0];        /* order is relative: kept as is */
+    memmove(order, order + t0, (size_t)(g->inc_ptr[q1] - t0) * sizeof(int));
+    keep_range(&inc, sizeof(ctn_asm_inc), g->inc_ptr, q0, q1);
+    keep_range(&ev, sizeof(ctn_asm_ev), g->ev_ptr, q0, q1);
+    keep_range(&adj, sizeof(int), g->adj_ptr, q0, q1);
+    int *o = realloc(order, (size_t)(g->inc_ptr[q1] > 0 ? g->inc_ptr[q1] : 1) * sizeof(int));
+    g->order = o ? o : order;
+    g->inc = inc;
+    g->ev = ev;
+    g->adj = adj;
+    g->q0 = q0;
+    g->q1 = q1;
     return CTN_OK;
 }
 

@@ -11,7 +11,11 @@
  * order). Taken when the model is assembled node by node alone (cables, bars, springs
  * of two 3-DOF nodes), the solver is MUMPS (petsc, petsc-ldl) and no analysis that
  * reads the tangent as one array follows (modes, buckling, dynamics) nor any follower
- * load; otherwise the tangent is replicated as before (docs/parallel.md). */
+ * load; otherwise the tangent is replicated as before (docs/parallel.md). A rank keeps
+ * the pattern's row indices of its own columns only (the assembly's whole array is
+ * released): the two rare paths that factor the whole tangent with CHOLMOD gather it;
+ * and the node-by-node tables of its own nodes (ctn_asm_gather_keep): the internal
+ * forces of every node, which the results want, come from the generic element loop. */
 #include "problem/problem.h"
 
 #include "problem/dynamics_options.h"
@@ -53,6 +57,14 @@ int ctn_problem_dist_setup(ctn_problem *p, const char *name)
         if (!(p->lcolptr = ctn_malloc(p->ctx, m + 1, sizeof(int)))) return CTN_ERR_NOMEM;
         for (size_t j = 0; j <= m; j++) p->lcolptr[j] = p->a->colptr[p->c0 + j] - p->a->colptr[p->c0];
         nnz = (size_t)p->lcolptr[m];
+        if (m < p->ndof) {                      /* the other ranks' columns' rows released */
+            if (!(p->lrowind = ctn_malloc(p->ctx, nnz ? nnz : 1, sizeof(int)))) return CTN_ERR_NOMEM;
+            memcpy(p->lrowind, p->a->rowind + p->a->colptr[p->c0], nnz * sizeof(int));
+            ctn_free(p->a->rowind);
+            p->a->rowind = NULL;
+        }
+        int rc = ctn_asm_gather_keep(p->a, p->q0, p->q1);   /* the other ranks' nodes' lists */
+        if (rc) return rc;
     }
     if (!(p->Kx = ctn_calloc(p->ctx, nnz ? nnz : 1, sizeof(double)))) return CTN_ERR_NOMEM;
     p->K = (ctn_dmat){ &p->eq, p->a->colptr, p->a->rowind, p->Kx };
@@ -62,7 +74,7 @@ int ctn_problem_dist_setup(ctn_problem *p, const char *name)
 /* this rank's columns of the pattern */
 static ctn_pattern local_pattern(const ctn_problem *p)
 {
-    return (ctn_pattern){ p->c1 - p->c0, p->lcolptr, p->a->rowind + p->a->colptr[p->c0] };
+    return (ctn_pattern){ p->c1 - p->c0, p->lcolptr, p->lrowind ? p->lrowind : p->a->rowind };
 }
 
 int ctn_problem_solver_create(ctn_problem *p, const char *name, ctn_la_ordering ord, ctn_linsolve **out)
@@ -111,7 +123,7 @@ double ctn_problem_dist_max_diag(const ctn_problem *p)
 void ctn_problem_dist_symv(const ctn_problem *p, const double *Ax, const double *x, double *y)
 {
     const ctn_comm *c = ctn_ctx_comm(p->ctx);
-    const int *ri = p->a->rowind + p->a->colptr[p->c0];
+    const int *ri = p->lrowind ? p->lrowind : p->a->rowind;
     for (size_t i = 0; i < p->ndof; i++) y[i] = 0;
     for (size_t j = 0; j < p->c1 - p->c0; j++) {
         size_t col = p->c0 + j;
@@ -127,27 +139,53 @@ void ctn_problem_dist_symv(const ctn_problem *p, const double *Ax, const double 
         for (size_t i = 0; i < p->ndof; i++) y[i] = NAN;
 }
 
-int ctn_problem_whole_K(ctn_problem *p, double **Kx)
+/* every rank's columns' row indices into a new *rows, gathered through buf (nnz: as
+ * doubles, exact below 2^53) */
+static int whole_rows(ctn_problem *p, double *buf, size_t k0, size_t k1, int **rows)
 {
+    const ctn_comm *c = ctn_ctx_comm(p->ctx);
+    if (!(*rows = ctn_malloc(p->ctx, p->a->nnz ? p->a->nnz : 1, sizeof(int)))) return CTN_ERR_NOMEM;
+    for (size_t k = k0; k < k1; k++) buf[k] = p->lrowind[k - k0];
+    int rc = c->ops->allgather(c->impl, buf, k0, k1);
+    if (rc) {
+        ctn_free(*rows);
+        *rows = NULL;
+        return ctn_error(p->ctx, rc, "the ranks could not gather the tangent's pattern");
+    }
+    for (size_t k = 0; k < p->a->nnz; k++) (*rows)[k] = (int)buf[k];
+    return CTN_OK;
+}
+
+int ctn_problem_whole_K(ctn_problem *p, ctn_pattern *pat, double **Kx)
+{
+    *pat = (ctn_pattern){ p->ndof, p->a->colptr, p->a->rowind };
     *Kx = p->Kx;
-    if (!p->dist) return CTN_OK;
+    if (!p->dist || p->a->rowind) return CTN_OK;             /* one rank: its columns are all */
     const ctn_comm *c = ctn_ctx_comm(p->ctx);
     size_t k0 = (size_t)p->a->colptr[p->c0], k1 = (size_t)p->a->colptr[p->c1];
     double *all = ctn_malloc(p->ctx, p->a->nnz ? p->a->nnz : 1, sizeof(double));
     if (!all) return CTN_ERR_NOMEM;
-    memcpy(all + k0, p->Kx, (k1 - k0) * sizeof(double));
-    int rc = c->ops->allgather(c->impl, all, k0, k1);
+    int *rows = NULL, rc = whole_rows(p, all, k0, k1, &rows);
     if (rc) {
         ctn_free(all);
+        return rc;
+    }
+    memcpy(all + k0, p->Kx, (k1 - k0) * sizeof(double));
+    rc = c->ops->allgather(c->impl, all, k0, k1);
+    if (rc) {
+        ctn_free(all);
+        ctn_free(rows);
         return ctn_error(p->ctx, rc, "the ranks could not gather the tangent");
     }
+    pat->rowind = rows;
     *Kx = all;
     return CTN_OK;
 }
 
-void ctn_problem_whole_K_done(const ctn_problem *p, double *Kx)
+void ctn_problem_whole_K_done(const ctn_problem *p, const ctn_pattern *pat, double *Kx)
 {
     if (Kx != p->Kx) ctn_free(Kx);
+    if (pat->rowind != p->a->rowind) ctn_free((int *)pat->rowind);
 }
 
 int ctn_problem_eval_tangent(ctn_problem *p, const double *d)

@@ -187,6 +187,7 @@ void ctn_problem_destroy(ctn_problem **pp)
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
     ctn_free(p->in_chain);
     ctn_free(p->lcolptr);
+    ctn_free(p->lrowind);
     ctn_free(p);
     *pp = NULL;
 }

@@ -99,6 +99,8 @@ struct ctn_problem {
     size_t q0, q1;             /* dist: this rank's nodes */
     size_t c0, c1;             /* dist: their columns (free DOFs), consecutive */
     int *lcolptr;              /* dist: c1 - c0 + 1, those columns' positions from 0 */
+    int *lrowind;              /* dist: their row indices, the assembly's a->rowind then
+                                  released (NULL); NULL when they are every column */
 };
 
 /* ctn_problem_create without the check that every cable target is resolved (for the
@@ -152,11 +154,11 @@ int ctn_problem_solver_create(ctn_problem *p, const char *name, ctn_la_ordering 
 int ctn_problem_dist_eval(ctn_problem *p, const double *d, unsigned mode, double *Kx, double *U, size_t *bad);
 double ctn_problem_dist_max_diag(const ctn_problem *p);
 void ctn_problem_dist_symv(const ctn_problem *p, const double *Ax, const double *x, double *y);
-/* The whole tangent's values (pattern order) on every rank: p->Kx, or when p->dist a
- * new array gathered from the ranks (the rare paths that name a node by CHOLMOD), to be
- * released by ctn_problem_whole_K_done. */
-int ctn_problem_whole_K(ctn_problem *p, double **Kx);
-void ctn_problem_whole_K_done(const ctn_problem *p, double *Kx);
+/* The whole tangent on every rank, its pattern in *pat and values (pattern order) in
+ * *Kx: the assembly's and p->Kx, or when p->dist new arrays gathered from the ranks (the
+ * rare paths that name a node by CHOLMOD), to be released by ctn_problem_whole_K_done. */
+int ctn_problem_whole_K(ctn_problem *p, ctn_pattern *pat, double **Kx);
+void ctn_problem_whole_K_done(const ctn_problem *p, const ctn_pattern *pat, double *Kx);
 /* The tangent at state d, assembled (the whole of it or this rank's columns, p->Kx),
  * and f_int; 1 if an element collapsed there. */
 int ctn_problem_eval_tangent(ctn_problem *p, const double *d);

@@ -69,6 +69,8 @@ struct ctn_solution {
     int threads;               /* the threads= option of the solve that made it (0 auto,
                                   1, n): the writers ask the thread policy with it */
     int ranks;                 /* the processes it was solved on (catena/parallel.h) */
+    int by_columns;            /* its tangent was held by columns over the ranks (each its
+                                  own nodes' columns: problem/dist.c), not whole on each */
     char linsolver[48];        /* the linear solver's label (ctn_linsolve_label), "" none */
 };
 

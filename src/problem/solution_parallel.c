@@ -5,4 +5,6 @@
 
 int ctn_solution_ranks(const ctn_solution *s) { return s && s->ranks > 1 ? s->ranks : 1; }
 
+int ctn_solution_by_columns(const ctn_solution *s) { return s && s->by_columns; }
+
 const char *ctn_solution_linear_solver(const ctn_solution *s) { return s ? s->linsolver : ""; }

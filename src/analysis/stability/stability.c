@@ -37,14 +37,14 @@ static void locate(const ctn_problem *p, long col, ctn_stability *out)
 static int locate_zero(ctn_problem *p, ctn_stability *out)
 {
     ctn_linsolve *ldl = NULL;
-    ctn_pattern pat = { p->ndof, p->a->colptr, p->a->rowind };
+    ctn_pattern pat;
     ctn_factor_info info;
     long neg = 0, zero = 0, first = -1;
     double *Kx = NULL;
-    int rc = ctn_problem_whole_K(p, &Kx);
+    int rc = ctn_problem_whole_K(p, &pat, &Kx);
     if (!rc) rc = ctn_linsolve_create_threads(p->ctx, "cholmod-ldl", &pat, CTN_LA_ORDER_AUTO, p->opt.threads, &ldl);
     if (!rc) rc = ctn_linsolve_factor(ldl, Kx, 0.0, &info);
-    if (Kx) ctn_problem_whole_K_done(p, Kx);
+    if (Kx) ctn_problem_whole_K_done(p, &pat, Kx);
     if (!rc && info.ok) rc = ctn_linsolve_inertia(ldl, 1e-12 * ctn_problem_max_diag(p), &neg, &zero, &first);
     locate(p, !rc && info.ok ? first : info.fail_col, out);
     ctn_linsolve_destroy(&ldl);

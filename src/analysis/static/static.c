@@ -229,6 +229,7 @@ static int static_solve(ctn_problem *p, ctn_solution **out)
         s->sum.solve_threads = p->ls ? ctn_linsolve_solve_threads(p->ls) : 1;
         ctn_blas_name(s->sum.blas, sizeof s->sum.blas);
         s->ranks = ctn_comm_size(ctn_ctx_comm(p->ctx));
+        s->by_columns = p->dist;
         snprintf(s->linsolver, sizeof s->linsolver, "%s", p->ls ? ctn_linsolve_label(p->ls) : p->ls_name ? p->ls_name : "");
     }
     ctn_free(d);

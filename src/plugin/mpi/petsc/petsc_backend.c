@@ -22,8 +22,10 @@ typedef struct ctn_petsc {
     PetscInt *crow;            /* by columns: scratch of the longest column */
     PetscScalar *cval;
     Mat A;
-    Vec b, x, xall;
-    VecScatter toall;
+    Vec b, x;
+    int *counts;               /* every rank's rows: count, then first (the solution's
+                                  MPI_Allgatherv straight into the caller's vector: no
+                                  gathered copy held beside it) */
     KSP ksp;
     Mat F;                     /* MUMPS's factor (NULL for a Krylov solve) */
     int relax;                 /* MUMPS's ICNTL(14): workspace above its estimate, % */
@@ -55,6 +57,25 @@ static void split(PetscInt n, int rank, int size, PetscInt *lo, PetscInt *hi)
     *hi = (PetscInt)((long long)n * (rank + 1) / size);
 }
 
+static int gather_counts(ctn_petsc *c)
+{
+    int size = 1, mine[2] = { (int)(c->rows.hi - c->rows.lo), (int)c->rows.lo };
+    MPI_Comm_size(c->comm, &size);
+    int *all = ctn_malloc(c->ctx, 2 * (size_t)size, sizeof(int));
+    if (!(c->counts = ctn_malloc(c->ctx, 2 * (size_t)size, sizeof(int))) || !all) {
+        ctn_free(all);
+        return CTN_ERR_NOMEM;
+    }
+    int rc = MPI_Allgather(mine, 2, MPI_INT, all, 2, MPI_INT, c->comm) == MPI_SUCCESS
+                 ? CTN_OK : ctn_error(c->ctx, CTN_ERR_IO, "PETSc: the ranks' rows could not be exchanged");
+    for (int r = 0; r < size; r++) {
+        c->counts[r] = all[2 * r];
+        c->counts[size + r] = all[2 * r + 1];
+    }
+    ctn_free(all);
+    return rc;
+}
+
 static int make_matrix(ctn_petsc *c)
 {
     int rc = CTN_OK;
@@ -82,7 +103,7 @@ static int make_matrix(ctn_petsc *c)
     PCALL(MatSetOption(c->A, MAT_SYMMETRIC, PETSC_TRUE));
     PCALL(MatSetOption(c->A, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
     PCALL(MatCreateVecs(c->A, &c->x, &c->b));
-    PCALL(VecScatterCreateToAll(c->x, &c->toall, &c->xall));
+    rc = gather_counts(c);
 done:
     ctn_free(d);
     return rc;
@@ -114,8 +135,6 @@ static void destroy(void *impl)
     if (!c) return;
     PetscPushErrorHandler(PetscReturnErrorHandler, NULL);
     KSPDestroy(&c->ksp);
-    VecScatterDestroy(&c->toall);
-    VecDestroy(&c->xall);
     VecDestroy(&c->x);
     VecDestroy(&c->b);
     MatDestroy(&c->A);
@@ -123,6 +142,7 @@ static void destroy(void *impl)
     ctn_petsc_rows_free(&c->rows);
     ctn_free(c->crow);
     ctn_free(c->cval);
+    ctn_free(c->counts);
     ctn_free(c);
 }
 
@@ -376,11 +396,12 @@ static int solve(void *impl, const double *bv, double *xv)
         rc = ctn_error(c->ctx, CTN_ERR_IO, "%s: the linear solve did not converge (%s)", c->label, KSPConvergedReasons[why]);
         goto done;
     }
-    PCALL(VecScatterBegin(c->toall, c->x, c->xall, INSERT_VALUES, SCATTER_FORWARD));
-    PCALL(VecScatterEnd(c->toall, c->x, c->xall, INSERT_VALUES, SCATTER_FORWARD));
-    PCALL(VecGetArrayRead(c->xall, &ca));
-    memcpy(xv, ca, (size_t)c->n * sizeof *xv);
-    PCALL(VecRestoreArrayRead(c->xall, &ca));
+    PCALL(VecGetArrayRead(c->x, &ca));
+    int size = 1, e = MPI_Comm_size(c->comm, &size);
+    if (!e) e = MPI_Allgatherv(ca, (int)(c->rows.hi - c->rows.lo), MPI_DOUBLE, xv, c->counts, c->counts + size, MPI_DOUBLE,
+                               c->comm);
+    PCALL(VecRestoreArrayRead(c->x, &ca));
+    if (e != MPI_SUCCESS) rc = ctn_error(c->ctx, CTN_ERR_IO, "%s: the ranks could not gather the solution", c->label);
 done:
     PetscPopErrorHandler();
     return rc;
