@@ -198,17 +198,19 @@ double ctn_beam_stretch(const ctn_beam_props *p, double l, const double t[2][3])
     return s;
 }
 
-/* The jet variable of each of the 12 DOFs and its sign (the chord is x2 - x1). */
-static const int dof_var[12] = { 0, 1, 2, 3, 4, 5, 0, 1, 2, 6, 7, 8 };
-static const double dof_sign[12] = { -1, -1, -1, 1, 1, 1, 1, 1, 1, 1, 1, 1 };
+/* The jet variable of each of the 12 DOFs and its sign (beam3.h). */
+const int ctn_beam_dof_var[12] = { 0, 1, 2, 3, 4, 5, 0, 1, 2, 6, 7, 8 };
+const double ctn_beam_dof_sign[12] = { -1, -1, -1, 1, 1, 1, 1, 1, 1, 1, 1, 1 };
 
 void ctn_beam_dofs(const ctn_jet *U, double *f, double *K)
 {
-    for (int i = 0; i < 12; i++) f[i] = dof_sign[i] * U->g[dof_var[i]];
+    const int *v = ctn_beam_dof_var;
+    const double *sg = ctn_beam_dof_sign;
+    for (int i = 0; i < 12; i++) f[i] = sg[i] * U->g[v[i]];
     for (int i = 0; K && i < 12; i++)
         for (int j = i; j < 12; j++) {
-            int a = dof_var[i] < dof_var[j] ? dof_var[i] : dof_var[j], b = dof_var[i] + dof_var[j] - a;
-            K[ctn_packed_index(12, i, j)] = dof_sign[i] * dof_sign[j] * U->h[ctn_packed_index(CTN_JET_N, a, b)];
+            int a = v[i] < v[j] ? v[i] : v[j], b = v[i] + v[j] - a;
+            K[ctn_packed_index(12, i, j)] = sg[i] * sg[j] * U->h[ctn_packed_index(CTN_JET_N, a, b)];
         }
 }
 

@@ -68,6 +68,10 @@ int ctn_beam_kinematics(const ctn_beam_props *p, const double *X, const double *
 void ctn_beam_energy(const ctn_beam_props *p, const ctn_jet *l, ctn_jet th[2][3], ctn_jet *U);
 double ctn_beam_stretch(const ctn_beam_props *p, double l, const double t[2][3]);
 void ctn_beam_dofs(const ctn_jet *U, double *f, double *K);
+/* The kernel variable of each of the 12 DOFs (0..2 the chord x2 - x1, 3..5 and 6..8 the
+ * ends' rotations) and its sign (-1 on node 1's translations). */
+extern const int ctn_beam_dof_var[12];
+extern const double ctn_beam_dof_sign[12];
 
 /* A member with bending releases (p->rel & CTN_BEAM_REL_BEND), beam3_release.c: the
  * local rotations the energy takes, from the kinematics' th, into t: a rotation released

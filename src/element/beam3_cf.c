@@ -197,10 +197,6 @@ static double energy(const ctn_beam_props *p, double N, const ctn_dual t[2][3])
     return U + 0.5 * p->kt * d * d;
 }
 
-/* The variable of each of the 12 DOFs and its sign (the chord is x2 - x1). */
-static const int dof_var[12] = { 0, 1, 2, 3, 4, 5, 0, 1, 2, 6, 7, 8 };
-static const double dof_sign[12] = { -1, -1, -1, 1, 1, 1, 1, 1, 1, 1, 1, 1 };
-
 int ctn_beam_eval_cf(const ctn_beam_props *p, unsigned mode, const double *X, const double *u, double *f, double *K,
                      ctn_elem_state *out)
 {
@@ -210,12 +206,12 @@ int ctn_beam_eval_cf(const ctn_beam_props *p, unsigned mode, const double *X, co
     if (frame(X, u, &k) || local(&k, 0) || local(&k, 1)) return 1;
     energy_gradient(p, &k, t, &N, m);
     forces(&k, N, m, fv);
-    for (int i = 0; i < 12; i++) f[i] = dof_sign[i] * fv[dof_var[i]].v;
+    const int *v = ctn_beam_dof_var;
+    const double *sg = ctn_beam_dof_sign;
+    for (int i = 0; i < 12; i++) f[i] = sg[i] * fv[v[i]].v;
     for (int i = 0; K && i < 12; i++)                  /* the Jacobian's symmetric part */
-        for (int j = i; j < 12; j++) {
-            int a = dof_var[i], b = dof_var[j];
-            K[ctn_packed_index(12, i, j)] = dof_sign[i] * dof_sign[j] * 0.5 * (fv[a].g[b] + fv[b].g[a]);
-        }
+        for (int j = i; j < 12; j++)
+            K[ctn_packed_index(12, i, j)] = sg[i] * sg[j] * 0.5 * (fv[v[i]].g[v[j]] + fv[v[j]].g[v[i]]);
     if (out) {
         double eps = N.v / p->EA;
         *out = (ctn_elem_state){ k.l.v, eps, N.v, (mode & CTN_EVAL_STRESS) ? N.v / p->A : 0, energy(p, N.v, t), 0 };
