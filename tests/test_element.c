@@ -15,8 +15,9 @@
  * has its nodes' rotations composed with the rigid rotation too, its energy unchanged
  * and its moments (from the generalized forces of the rotation vectors) rotated and in
  * balance with its forces.
- * Then the closed-form laws of each family: the cable's two strain measures and
- * tension-only slack, the spring's N = k (l - l0). */
+ * The beam's closed-form kernel against its energy on jets, and rigid motions of it
+ * (test_beam_closed_form). Then the closed-form laws of each family: the cable's two
+ * strain measures and tension-only slack, the spring's N = k (l - l0). */
 #include "check.h"
 #include "assemble/dofmap.h"
 #include "element/beam3.h"
@@ -425,8 +426,9 @@ static double rel_diff(int n, const double *a, const double *b)
 /* The beam's closed-form kernel (beam3_cf.c, taken when both nodes take spins) against
  * the energy on second-order jets (ctn_beam_eval_jet, the reference) at 500 random
  * states, a third of them with end releases: the same outcome, forces, tangent, energy
- * and axial force to round-off (1e-10), and the tangent against central differences
- * (tangent_error); and a stress-free member (L0 the chord) moved rigidly by any
+ * and axial force to round-off (1e-10), and at 250 of them the tangent against central
+ * differences (tangent_error; test_tangent_fd samples the closed form too, wherever both
+ * nodes take spins); and a stress-free member (L0 the chord) moved rigidly by any
  * rotation (up to pi about a random axis) and translation: no force, no moment. */
 static void test_beam_closed_form(void)
 {
@@ -449,10 +451,10 @@ static void test_beam_closed_form(void)
         CHECK(rc == ctn_beam_eval_jet(p, CTN_EVAL_STRESS, s.X, u, fj, Kj, &sj));
         if (!rc) {
             done++;
-            double ef = rel_diff(12, fc, fj), eK = rel_diff(78, Kc, Kj), err = tangent_error(&s, u);
+            double ef = rel_diff(12, fc, fj), eK = rel_diff(78, Kc, Kj), err = done % 2 ? tangent_error(&s, u) : 0;
             CHECK_MSG(ef < 1e-10 && eK < 1e-10, "trial %d (release %u): forces %.3g, tangent %.3g off the jets'", trial,
                       rel, ef, eK);
-            CHECK_MSG(err < 1e-6, "trial %d: relative tangent error %.3g", trial, err);
+            CHECK_MSG(err < 1e-6, "trial %d: relative tangent error %.3g", trial, err);   /* every other state */
             CHECK_CLOSE(sc.N, sj.N, 1e-10, 1e-10 * p->EA);
             CHECK_CLOSE(sc.energy, sj.energy, 1e-10, 1e-12 * p->EA * p->L0);
             CHECK_CLOSE(sc.l, sj.l, 1e-14, 0);
