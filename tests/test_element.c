@@ -15,8 +15,9 @@
  * has its nodes' rotations composed with the rigid rotation too, its energy unchanged
  * and its moments (from the generalized forces of the rotation vectors) rotated and in
  * balance with its forces.
- * Then the closed-form laws of each family: the cable's two strain measures and
- * tension-only slack, the spring's N = k (l - l0). */
+ * The beam's closed-form kernel against its energy on jets, and rigid motions of it
+ * (test_beam_closed_form). Then the closed-form laws of each family: the cable's two
+ * strain measures and tension-only slack, the spring's N = k (l - l0). */
 #include "check.h"
 #include "assemble/dofmap.h"
 #include "element/beam3.h"
@@ -411,6 +412,78 @@ static void test_beam_releases(void)
     }
 }
 
+/* The largest |a_i - b_i| over the largest |b_i|. */
+static double rel_diff(int n, const double *a, const double *b)
+{
+    double d = 0, m = 0;
+    for (int i = 0; i < n; i++) {
+        d = fmax(d, fabs(a[i] - b[i]));
+        m = fmax(m, fabs(b[i]));
+    }
+    return m > 0 ? d / m : d;
+}
+
+/* The beam's closed-form kernel (beam3_cf.c, taken when both nodes take spins) against
+ * the energy on second-order jets (ctn_beam_eval_jet, the reference) at 500 random
+ * states, a third of them with end releases: the same outcome, forces, tangent, energy
+ * and axial force to round-off (1e-10), and at 250 of them the tangent against central
+ * differences (tangent_error; test_tangent_fd samples the closed form too, wherever both
+ * nodes take spins); and a stress-free member (L0 the chord) moved rigidly by any
+ * rotation (up to pi about a random axis) and translation: no force, no moment. */
+static void test_beam_closed_form(void)
+{
+    int type = ctn_element_family_find("beam"), done = 0;
+    unsigned seed = 2026u;
+    double worst[2] = { 0, 0 };
+    for (int trial = 0; done < 500 && trial < 5000; trial++) {
+        sample s;
+        unsigned rel = trial % 3 ? 0 : 1 + (unsigned)trial % 63;
+        if (make_sample(&s, type, (int)(rel << 4), &seed)) return;
+        if (!s.spin[0] || !s.spin[1]) {
+            free_sample(&s);
+            continue;
+        }
+        const ctn_beam_props *p = (const ctn_beam_props *)s.props;
+        double u[12], fc[12], fj[12], Kc[78], Kj[78];
+        ctn_elem_state sc, sj;
+        random_u(&s, &seed, 0.5, u);
+        int rc = ctn_beam_eval_cf(p, CTN_EVAL_STRESS, s.X, u, fc, Kc, &sc);
+        CHECK(rc == ctn_beam_eval_jet(p, CTN_EVAL_STRESS, s.X, u, fj, Kj, &sj));
+        if (!rc) {
+            done++;
+            double ef = rel_diff(12, fc, fj), eK = rel_diff(78, Kc, Kj), err = done % 2 ? tangent_error(&s, u) : 0;
+            CHECK_MSG(ef < 1e-10 && eK < 1e-10, "trial %d (release %u): forces %.3g, tangent %.3g off the jets'", trial,
+                      rel, ef, eK);
+            CHECK_MSG(err < 1e-6, "trial %d: relative tangent error %.3g", trial, err);   /* every other state */
+            CHECK_CLOSE(sc.N, sj.N, 1e-10, 1e-10 * p->EA);
+            CHECK_CLOSE(sc.energy, sj.energy, 1e-10, 1e-12 * p->EA * p->L0);
+            CHECK_CLOSE(sc.l, sj.l, 1e-14, 0);
+            CHECK_CLOSE(sc.stress, sc.N / p->A, 1e-14, 0);
+            worst[0] = fmax(worst[0], ef);
+            worst[1] = fmax(worst[1], eK);
+        }
+        ctn_beam_props q = *p;                          /* stress-free, moved rigidly */
+        double R[9], n[3], fr[12], Kr[78], fbig = 0;
+        for (int k = 0; k < 3; k++) n[k] = urand(&seed, -1, 1);
+        double nn = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), t = urand(&seed, -3.14159265358979323846, 3.14159265358979323846);
+        q.L0 = sqrt(pow(s.X[3] - s.X[0], 2) + pow(s.X[4] - s.X[1], 2) + pow(s.X[5] - s.X[2], 2));
+        for (int k = 0; k < 3; k++) n[k] /= nn;
+        rotation(n, t, R);
+        for (int a = 0; a < 2; a++)
+            for (int i = 0; i < 3; i++) {
+                u[6 * a + i] = 3.0 * (i + 1) - s.X[3 * a + i];
+                for (int j = 0; j < 3; j++) u[6 * a + i] += R[3 * i + j] * s.X[3 * a + j];
+                u[6 * a + 3 + i] = t * n[i];
+            }
+        CHECK(ctn_beam_eval_cf(&q, 0, s.X, u, fr, Kr, NULL) == 0);
+        for (int k = 0; k < 12; k++) fbig = fmax(fbig, fabs(fr[k]));
+        CHECK_MSG(fbig < 1e-13 * q.EA * fmax(1, q.L0), "trial %d: a rigid motion gives the force %.3g", trial, fbig);
+        free_sample(&s);
+    }
+    CHECK(done == 500);
+    printf("beam closed form against the jets, 500 states: forces %.3g, tangent %.3g (relative)\n", worst[0], worst[1]);
+}
+
 /* Cable: the axial laws of both strain measures against their closed forms. */
 static void test_cable_laws(void)
 {
@@ -487,6 +560,7 @@ int main(void)
         test_energy_gradient(t);
     }
     test_beam_releases();
+    test_beam_closed_form();
     test_cable_laws();
     test_cable_tension_only();
     test_spring_law();

@@ -44,16 +44,23 @@ static void rotate(ctn_jet x[3], const ctn_jet psi[3], const ctn_jet c[3], const
     }
 }
 
-void ctn_beam_rotate(const double psi[3], const double e[3], double x[3])
+void ctn_beam_rotate_n(const double psi[3], int n, const double (*e)[3], double (*x)[3])
 {
     double y = psi[0] * psi[0] + psi[1] * psi[1] + psi[2] * psi[2], fa[3], fb[3];
     ctn_beam_rod_a(y, fa);
     ctn_beam_rod_b(y, fb);
-    double pe = psi[0] * e[0] + psi[1] * e[1] + psi[2] * e[2];
-    for (int k = 0; k < 3; k++) {
-        int i = (k + 1) % 3, j = (k + 2) % 3;
-        x[k] = (1 - fb[0] * y) * e[k] + fa[0] * (psi[i] * e[j] - psi[j] * e[i]) + fb[0] * pe * psi[k];
+    for (int v = 0; v < n; v++) {
+        double pe = psi[0] * e[v][0] + psi[1] * e[v][1] + psi[2] * e[v][2];
+        for (int k = 0; k < 3; k++) {
+            int i = (k + 1) % 3, j = (k + 2) % 3;
+            x[v][k] = (1 - fb[0] * y) * e[v][k] + fa[0] * (psi[i] * e[v][j] - psi[j] * e[v][i]) + fb[0] * pe * psi[k];
+        }
     }
+}
+
+void ctn_beam_rotate(const double psi[3], const double e[3], double x[3])
+{
+    ctn_beam_rotate_n(psi, 1, (const double(*)[3])e, (double(*)[3])x);
 }
 
 int ctn_beam_spin_node(unsigned fix)
@@ -90,7 +97,7 @@ static void node_triad(const ctn_beam_props *p, int a, const double *psi, const 
         return;
     }
     double E[3][3];
-    for (int j = 0; j < 3; j++) ctn_beam_rotate(psi, E0[j], E[j]);
+    ctn_beam_rotate_n(psi, 3, E0, E);
     triad(zero, 3 + 3 * a, (const double(*)[3])E, t);
 }
 
@@ -191,17 +198,19 @@ double ctn_beam_stretch(const ctn_beam_props *p, double l, const double t[2][3])
     return s;
 }
 
-/* The jet variable of each of the 12 DOFs and its sign (the chord is x2 - x1). */
-static const int dof_var[12] = { 0, 1, 2, 3, 4, 5, 0, 1, 2, 6, 7, 8 };
-static const double dof_sign[12] = { -1, -1, -1, 1, 1, 1, 1, 1, 1, 1, 1, 1 };
+/* The jet variable of each of the 12 DOFs and its sign (beam3.h). */
+const int ctn_beam_dof_var[12] = { 0, 1, 2, 3, 4, 5, 0, 1, 2, 6, 7, 8 };
+const double ctn_beam_dof_sign[12] = { -1, -1, -1, 1, 1, 1, 1, 1, 1, 1, 1, 1 };
 
 void ctn_beam_dofs(const ctn_jet *U, double *f, double *K)
 {
-    for (int i = 0; i < 12; i++) f[i] = dof_sign[i] * U->g[dof_var[i]];
+    const int *v = ctn_beam_dof_var;
+    const double *sg = ctn_beam_dof_sign;
+    for (int i = 0; i < 12; i++) f[i] = sg[i] * U->g[v[i]];
     for (int i = 0; K && i < 12; i++)
         for (int j = i; j < 12; j++) {
-            int a = dof_var[i] < dof_var[j] ? dof_var[i] : dof_var[j], b = dof_var[i] + dof_var[j] - a;
-            K[ctn_packed_index(12, i, j)] = dof_sign[i] * dof_sign[j] * U->h[ctn_packed_index(CTN_JET_N, a, b)];
+            int a = v[i] < v[j] ? v[i] : v[j], b = v[i] + v[j] - a;
+            K[ctn_packed_index(12, i, j)] = sg[i] * sg[j] * U->h[ctn_packed_index(CTN_JET_N, a, b)];
         }
 }
 
@@ -209,6 +218,13 @@ int ctn_beam_eval(const void *props, unsigned mode, const double *X, const doubl
                   ctn_elem_state *out)
 {
     const ctn_beam_props *p = props;
+    if (p->spin == 3u) return ctn_beam_eval_cf(p, mode, X, u, f, K, out);
+    return ctn_beam_eval_jet(p, mode, X, u, f, K, out);
+}
+
+int ctn_beam_eval_jet(const ctn_beam_props *p, unsigned mode, const double *X, const double *u, double *f, double *K,
+                      ctn_elem_state *out)
+{
     ctn_jet l, th[2][3], U;
     if (p->rel & CTN_BEAM_REL_BEND) return ctn_beam_eval_released(p, mode, X, u, f, K, out);
     if (ctn_beam_kinematics(p, X, u, &l, th, NULL)) return 1;

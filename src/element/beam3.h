@@ -29,16 +29,24 @@ typedef struct ctn_beam_props {
  * fixed (the rule the DOF map's update follows, assemble/rot_compose.c). */
 int ctn_beam_spin_node(unsigned fix);
 
-/* x = exp(psi) e (Rodrigues, any |psi|). */
+/* x = exp(psi) e (Rodrigues, any |psi|); the _n form turns n vectors e[v] into x[v]. */
 void ctn_beam_rotate(const double psi[3], const double e[3], double x[3]);
+void ctn_beam_rotate_n(const double psi[3], int n, const double (*e)[3], double (*x)[3]);
 
 /* The releases of bending (about local y or z, at either end): the kernel then takes
  * the condensed energy (beam3_release.c). */
 #define CTN_BEAM_REL_BEND (CTN_RELEASE_RY1 | CTN_RELEASE_RZ1 | CTN_RELEASE_RY2 | CTN_RELEASE_RZ2)
 
-/* The kernel (the family's eval, element.h). */
+/* The kernel (the family's eval, element.h): ctn_beam_eval_cf for a member whose nodes
+ * both take spins (the closed-form forces, their Jacobian the tangent), else
+ * ctn_beam_eval_jet (the energy on second-order jets: any node, and the reference the
+ * closed form is tested against, tests/test_beam_cf.c). The same contract and answers. */
 int ctn_beam_eval(const void *props, unsigned mode, const double *X, const double *u, double *f, double *K,
                   ctn_elem_state *out);
+int ctn_beam_eval_jet(const ctn_beam_props *p, unsigned mode, const double *X, const double *u, double *f, double *K,
+                      ctn_elem_state *out);
+int ctn_beam_eval_cf(const ctn_beam_props *p, unsigned mode, const double *X, const double *u, double *f, double *K,
+                     ctn_elem_state *out);
 
 /* The element's end forces at displacements u (12: x, y, z, rx, ry, rz per node):
  * out[0..5] at node 1 and out[6..11] at node 2, each (Fx, Fy, Fz, Mx, My, Mz) in the
@@ -60,6 +68,10 @@ int ctn_beam_kinematics(const ctn_beam_props *p, const double *X, const double *
 void ctn_beam_energy(const ctn_beam_props *p, const ctn_jet *l, ctn_jet th[2][3], ctn_jet *U);
 double ctn_beam_stretch(const ctn_beam_props *p, double l, const double t[2][3]);
 void ctn_beam_dofs(const ctn_jet *U, double *f, double *K);
+/* The kernel variable of each of the 12 DOFs (0..2 the chord x2 - x1, 3..5 and 6..8 the
+ * ends' rotations) and its sign (-1 on node 1's translations). */
+extern const int ctn_beam_dof_var[12];
+extern const double ctn_beam_dof_sign[12];
 
 /* A member with bending releases (p->rel & CTN_BEAM_REL_BEND), beam3_release.c: the
  * local rotations the energy takes, from the kinematics' th, into t: a rotation released
