@@ -280,6 +280,96 @@ PY
 fi
 finish "a damped cantilever (modal, Rayleigh on the rotations too): the mode's damping ratio from the decay"
 
+# reactions with moments: a cantilever of 5 beams (lumped mass, mass-proportional damping)
+# from rest under a held tip force and moment, by Newmark's average acceleration. Each
+# node's velocity and acceleration follow from its displacements exactly, as the method
+# relates them, v(n+1) = 2 (d(n+1) - d(n)) / h - v(n), a(n+1) = 4 (d(n+1) - d(n) - h v(n)) / h^2
+# - a(n) (from rest: v(0) = 0, a(0) = M^-1 (F, M) at the tip); the support's force at each
+# t_n is then sum m_i (a_i + alpha v_i) - F (the elements' forces sum to zero) to the
+# solver's tolerance, and its moment sum x_i x m_i (a_i + alpha v_i) + J_i (alpha_i + alpha
+# w_i) - x_tip x F - M (the rotations' rates as the rotation vector's: small rotations).
+{
+    printf 'material steel E=2.1e11 nu=0.3\nsection tube material=steel A=1e-3 Iy=1e-7 Iz=1e-7 J=2e-7 mass=7.85\n'
+    printf 'node 1 0 0 0 fix=xyzrxryrz\n'
+    for k in 2 3 4 5 6; do printf 'node %d %s 0 0\n' $k "$(echo "0.4 * ($k - 1)" | bc -l)"; done
+    for k in 1 2 3 4 5; do printf 'beam %d %d %d section=tube orient=0,0,1\n' $k $k $((k + 1)); done
+    printf 'load 6 0 5 -10\nmoment 6 2 0 0\ndamping alpha=0.3 beta=0\n'
+    printf 'dynamics dt=1e-3 t_end=0.3 method=newmark mass=lumped\nrecord node=1 reaction\n'
+    for k in 2 3 4 5 6; do printf 'record node=%d dof=ux,uy,uz,rx,ry,rz\n' $k; done
+} >"$T/eq.cable"
+"$BIN" solve "$T/eq.cable" -q -o "$T/eq" 2>"$T/err"; rc=$?
+[ $rc -eq 0 ] || WHY+=("cantilever's reactions: exit $rc: $(cat "$T/err")")
+if [ $rc -eq 0 ] && [ $have_python = 1 ]; then
+    msg=$(python3 - "$T/eq" <<'PY'
+import csv, math, sys
+rows = list(csv.reader(open(sys.argv[1] + "/history.csv")))
+col = {n: i for i, n in enumerate(rows[0])}
+rows = [[float(v) for v in r] for r in rows[1:]]
+h, al, F, M = rows[1][0] - rows[0][0], 0.3, (0, 5, -10), (2, 0, 0)
+m = {k: 7.85 * (0.2 if k == 6 else 0.4) for k in range(2, 7)}              # half of each element
+J = {k: [2 * 7850e-7 * m[k] / 7.85, 7850e-7 * m[k] / 7.85, 7850e-7 * m[k] / 7.85] for k in range(2, 7)}
+cr = lambda a, b: (a[1]*b[2]-a[2]*b[1], a[2]*b[0]-a[0]*b[2], a[0]*b[1]-a[1]*b[0])
+Q = ("ux", "uy", "uz", "rx", "ry", "rz")
+ef = em = sf = sm = 0.0
+def quat(p):
+    t = math.sqrt(sum(v * v for v in p)); s = math.sin(t / 2) / t if t > 1e-12 else 0.5
+    return (math.cos(t / 2), s * p[0], s * p[1], s * p[2])
+def rmat(q):
+    w, x, y, z = q
+    return [[1-2*(y*y+z*z), 2*(x*y-w*z), 2*(x*z+w*y)], [2*(x*y+w*z), 1-2*(x*x+z*z), 2*(y*z-w*x)], [2*(x*z-w*y), 2*(y*z+w*x), 1-2*(x*x+y*y)]]
+def log_rel(a, b):                                      # log(R_a^T R_b): conj(a) b
+    w = sum(x * y for x, y in zip(a, b))
+    v = [a[0] * b[k + 1] - b[0] * a[k + 1] - (a[(k + 1) % 3 + 1] * b[(k + 2) % 3 + 1] - a[(k + 2) % 3 + 1] * b[(k + 1) % 3 + 1]) for k in range(3)]
+    s = math.sqrt(sum(x * x for x in v)); f = 2 * math.atan2(s, w) / s if s > 1e-14 else 2 / w
+    return [f * x for x in v]
+mv = lambda A, x: [sum(A[i][j] * x[j] for j in range(3)) for i in range(3)]
+P = {}
+for k in range(2, 7):                                   # the rates, by the method's own relations
+    load = list(F) + list(M) if k == 6 else [0.0] * 6
+    for i, q in enumerate(Q[:3]):                       # translations: Newmark on d
+        d = [r[col["%d.%s" % (k, q)]] for r in rows]
+        v, a = [0.0], [load[i] / m[k]]
+        for n in range(len(d) - 1):
+            v.append(2 * (d[n + 1] - d[n]) / h - v[n])
+            a.append(4 * (d[n + 1] - d[n] - h * v[n]) / h ** 2 - a[n])
+        P[k, q] = [m[k] * (a[n] + al * v[n]) for n in range(len(d))]
+    # rotations: Newmark on the material increment log(R_n^T R_n+1) (body-frame W, A; J
+    # diagonal, the member along x), the moment R (J A + W x J W) + alpha R J W
+    qs = [quat([r[col["%d.%s" % (k, q)]] for q in Q[3:]]) for r in rows]
+    mom = []
+    W, A = [0.0] * 3, [load[3 + c] / J[k][c] for c in range(3)]
+    for n, r in enumerate(rows):
+        if n:
+            th = log_rel(qs[n - 1], qs[n])
+            A1 = [(th[c] - h * W[c] - h * h / 4 * A[c]) / (h * h / 4) for c in range(3)]
+            W = [W[c] + h / 2 * (A[c] + A1[c]) for c in range(3)]
+            A = A1
+        JW = [J[k][c] * W[c] for c in range(3)]
+        body = [J[k][c] * A[c] + W[(c + 1) % 3] * JW[(c + 2) % 3] - W[(c + 2) % 3] * JW[(c + 1) % 3] + al * JW[c] for c in range(3)]
+        mom.append(mv(rmat(qs[n]), body))
+    for c, q in enumerate(Q[3:]):
+        P[k, q] = [x[c] for x in mom]
+for n, r in enumerate(rows):
+    got = [r[col["1." + q]] for q in ("fx", "fy", "fz", "mx", "my", "mz")]
+    xt = (2.0 + r[col["6.ux"]], r[col["6.uy"]], r[col["6.uz"]])
+    f, mo = [-F[i] for i in range(3)], [-M[i] - cr(xt, F)[i] for i in range(3)]
+    for k in range(2, 7):
+        p = [P[k, q][n] for q in Q]
+        x = (0.4 * (k - 1) + r[col["%d.ux" % k]], r[col["%d.uy" % k]], r[col["%d.uz" % k]])
+        f = [f[i] + p[i] for i in range(3)]
+        mo = [mo[i] + cr(x, p[:3])[i] + p[3 + i] for i in range(3)]
+    ef, em = max(ef, max(abs(got[i] - f[i]) for i in range(3))), max(em, max(abs(got[3 + i] - mo[i]) for i in range(3)))
+    sf, sm = max(sf, max(abs(v) for v in got[:3])), max(sm, max(abs(v) for v in got[3:]))
+print("support's force vs the nodes' inertia and the load: %.3g of %.3g; moment %.3g of %.3g" % (ef, sf, em, sm), file=sys.stderr)
+why = []
+if not (ef < 1e-8 * sf and em < 1e-8 * sm and sm > 10): why.append("force %.3g of %.3g, moment %.3g of %.3g" % (ef, sf, em, sm))
+print("; ".join(why))
+PY
+)
+    [ -z "$msg" ] || WHY+=("$msg")
+fi
+finish "a cantilever's support force and moment in time: equilibrium with the inertia and the loads"
+
 printf 'material s E=1e9 nu=0.3\nsection b material=s A=1 Iy=1 Iz=1 J=1 mass=1\nnode 1 0 0 0 fix=xyzrxryrz\nnode 2 1 0 0\nbeam 1 1 2 section=b\nload 2 0 1 0\ndynamics dt=0.1 t_end=1 method=central\n' >"$T/bad.cable"
 "$BIN" solve "$T/bad.cable" -q >/dev/null 2>"$T/err"; rc=$?
 [ $rc -eq 2 ] || WHY+=("method=central with beams above the stable step: exit $rc, expected 2")

@@ -70,20 +70,27 @@ static int check_mass(ctn_problem *p, const ctn_dynamics_options *o, double *dia
     return CTN_OK;
 }
 
-/* A reaction is recorded only where the node is fixed. */
+/* A reaction is recorded only where the node is fixed, a rotation only on a node that has
+ * rotations. */
 static int check_reaction_records(const ctn_problem *p)
 {
+    static const char *const dir[6] = { "ux", "uy", "uz", "rx", "ry", "rz" };
     const ctn_model *m = p->m;
     for (size_t i = 0; i < m->records.n; i++) {
         const ctn_record *r = &m->records.v[i];
-        unsigned free_dofs = r->reaction ? ctn_dyn_record_dofs(m, r) & ~m->nodes.v[r->node].fix & CTN_FIX_ALL : 0;
-        if (r->reaction && !ctn_dyn_record_dofs(m, r))
+        if (r->element >= 0) continue;
+        unsigned want = ctn_dyn_record_dofs(m, r), free_dofs = r->reaction ? want & ~m->nodes.v[r->node].fix : 0;
+        int id = m->nodes.v[r->node].id, k = 0;
+        if (ctn_model_node_dofs(m, (size_t)r->node) != 6 && (want & CTN_FIX_ROT))
+            return ctn_error_at(p->ctx, CTN_ERR_MODEL, m->file, r->line, "record: node %d has no rotations (no beam or "
+                                "rspring reaches it): dof= takes ux, uy, uz there", id);
+        if (r->reaction && !want)
             return ctn_error_at(p->ctx, CTN_ERR_MODEL, m->file, r->line, "record: node %d has no support (fix=): it "
-                                "has no reaction to record", m->nodes.v[r->node].id);
+                                "has no reaction to record", id);
+        while (free_dofs && !(free_dofs >> k & 1)) k++;
         if (free_dofs)
-            return ctn_error_at(p->ctx, CTN_ERR_MODEL, m->file, r->line, "record: node %d is not fixed in u%c: it has no "
-                                "reaction there (give dof= of its fixed directions, or fix= them)", m->nodes.v[r->node].id,
-                                "xyz"[free_dofs & CTN_FIX_X ? 0 : free_dofs & CTN_FIX_Y ? 1 : 2]);
+            return ctn_error_at(p->ctx, CTN_ERR_MODEL, m->file, r->line, "record: node %d is not fixed in %s: it has no "
+                                "reaction there (give dof= of its fixed directions, or fix= them)", id, dir[k]);
     }
     return CTN_OK;
 }

@@ -251,3 +251,19 @@ void ctn_dyn_rot_start(ctn_dyn *dy, double *a)
         inertia(r, k, dy->d0 + r->st[k], W, r->A0 + 3 * k, r->I0 + 3 * k);
     }
 }
+
+void ctn_dyn_rot_reactions(const ctn_dyn *dy, double *react)
+{
+    const struct ctn_dyn_rot *r = dy->rot;
+    for (size_t k = 0; r && k < r->n; k++) {
+        double I[3], q[4], R[9], JW[3], m[3];
+        const double *W = r->W0 + 3 * k;
+        inertia(r, k, dy->d0 + r->st[k], W, r->A0 + 3 * k, I);   /* R (J A + W x J W) */
+        dr_quat(dy->d0 + r->st[k], q);
+        dr_rmat(q, R);
+        dr_mv(r->J + 9 * k, W, JW);
+        dr_mv(R, JW, m);                                          /* R J W */
+        for (int c = 0; c < 3; c++)
+            if (r->eq[3 * k + (size_t)c] < 0) react[r->st[k] + (size_t)c] += I[c] + dy->o->damping_alpha * m[c];
+    }
+}

@@ -157,6 +157,9 @@ double ctn_dyn_rot_accept(ctn_dyn *dy);
 double ctn_dyn_rot_work(const ctn_dyn *dy, const double *f0, const double *f1);
 void ctn_dyn_rot_mass_add(ctn_dyn *dy, double scale);
 void ctn_dyn_rot_start(ctn_dyn *dy, double *a);
+/* The rotary inertia's and its alpha damping's moments at t_n, R0 (J A0 + W0 x J W0) +
+ * alpha R0 J W0, added into react (state) at the fixed rotations of the nodes that turn. */
+void ctn_dyn_rot_reactions(const ctn_dyn *dy, double *react);
 
 /* dyn_rot_damp.c: damping on the spatial velocities (a rotation's w = R W, R at the state
  * d of that velocity): vs (ndof) = v with its rotations' W turned to R(d) W (vs may be v);
