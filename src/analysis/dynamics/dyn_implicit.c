@@ -105,6 +105,7 @@ static int factor_effective(ctn_dyn *dy, double h, int *ok)
     int rc = ctn_problem_factor(p, 0.0, ok, &col);
     dy->sum.factorizations++;
     if (!rc && *ok) rc = ctn_dyn_modal_factor(dy, c2, ok);
+    if (!rc && *ok) ctn_dyn_exact_blocks(dy, h);
     return rc;
 }
 
@@ -151,8 +152,7 @@ int ctn_dyn_implicit_step(ctn_dyn *dy, double h, int *ok)
         }
         if ((rc = factor_effective(dy, h, &posdef)) || !posdef) return rc;
         for (size_t q = 0; q < p->ndof; q++) dy->R[q] /= 1 - dy->af;
-        if ((rc = ctn_problem_linsolve(p, dy->R, dy->w))) return rc;
-        ctn_dyn_modal_correct(dy, dy->w);
+        if ((rc = ctn_dyn_exact_solve(dy, dy->R, dy->w))) return rc;
         ctn_problem_update(p, dy->d1, 1.0, dy->w);
         dy->sum.iterations++;
         double dn = ctn_layout_norm(&p->eq, dy->w), dd = ctn_layout_norm(&p->st, dy->d1) + p->lref;

@@ -72,6 +72,7 @@ void ctn_dyn_rot_free(ctn_dyn *dy)
 {
     struct ctn_dyn_rot *r = dy->rot;
     if (!r) return;
+    ctn_dyn_exact_free(r);
     void *v[] = { r->node, r->st, r->eq, r->slot, r->at, r->work, r->J, r->W0, r->A0, r->W1, r->A1, r->I0, r->I1 };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
     ctn_free(r);

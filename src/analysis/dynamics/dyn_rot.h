@@ -19,7 +19,11 @@ struct ctn_dyn_rot {
     double *work;          /* an element's packed mass and coordinates */
     double *J;             /* 9 per node: the rotary inertia, material frame */
     double *W0, *A0, *W1, *A1, *I0, *I1;   /* 3 per node */
+    struct ctn_dyn_exact *exact;           /* the consistent tangent (dyn_rot_exact.c), or NULL */
 };
+
+/* dyn_rot_exact.c: its blocks freed. */
+void ctn_dyn_exact_free(struct ctn_dyn_rot *r);
 
 /* q = the unit quaternion of the rotation vector psi. */
 static inline void dr_quat(const double psi[3], double q[4])

@@ -180,6 +180,14 @@ void ctn_dyn_rot_stable_diag(ctn_dyn *dy);
 void ctn_dyn_rot_central_turn(ctn_dyn *dy, double h, double *w);
 int ctn_dyn_rot_central_rates(ctn_dyn *dy, double h, const double *f);
 
+/* dyn_rot_exact.c: the consistent tangent of the rotations' inertia and damping (implicit
+ * methods, nodes with three composed rotations; after the damping is set up); its
+ * blocks at the iterate d1 (after the kinematics); x = (A + B)^-1 b, A the factored
+ * effective tangent (A^-1 alone without rotations). */
+int ctn_dyn_exact_setup(ctn_dyn *dy);
+void ctn_dyn_exact_blocks(ctn_dyn *dy, double h);
+int ctn_dyn_exact_solve(ctn_dyn *dy, const double *b, double *x);
+
 /* Whether the analysis has damping (Rayleigh's or modal). */
 static inline int ctn_dyn_damped(const ctn_dyn *dy) { return dy->Cx != NULL || dy->mr > 0; }
 
