@@ -462,12 +462,15 @@ int ctn_model_validate(const ctn_model *m);
 
 /* Time histories that a dynamics analysis records (catena/analysis.h), in the order
  * asked: the displacements of node id in the directions dofs (bits CTN_FIX_X, CTN_FIX_Y,
- * CTN_FIX_Z; 0: all three), or the axial force of element id. CTN_ERR_MODEL for an
+ * CTN_FIX_Z; 0: all three; CTN_FIX_RX .. CTN_FIX_RZ its rotation vector's components, a
+ * node with rotations only), or the axial force of element id. CTN_ERR_MODEL for an
  * undefined id or one recorded twice. */
 int ctn_model_record_node(ctn_model *m, int id, unsigned dofs);
 int ctn_model_record_element(ctn_model *m, int id);
-/* The support reactions of node id (it must have a fix=) in the directions dofs (0: all
- * three): f_int + M a + C v - f_ext there, inertia and damping included. */
+/* The support reactions of node id (it must have a fix=) in the directions dofs (0: its
+ * fixed ones; CTN_FIX_RX .. CTN_FIX_RZ the reaction moments of a node with rotations):
+ * f_int + M a + C v - f_ext there, inertia (a rotation's R (J A + W x J W)) and damping
+ * included. */
 int ctn_model_record_reaction(ctn_model *m, int id, unsigned dofs);
 size_t ctn_model_record_count(const ctn_model *m);
 

@@ -177,28 +177,30 @@ int ctn_parse_damping(ctn_line *l)
     return CTN_OK;
 }
 
-/* dof=ux,uy,uz (any of them, each once) into bits. */
+/* dof=ux,uy,uz,rx,ry,rz (any of them, each once) into bits. */
 static int dofs(ctn_line *l, unsigned *bits)
 {
+    static const char *const name[6] = { "ux", "uy", "uz", "rx", "ry", "rz" };
     const char *s = ctn_parse_key(l, 1, "dof");
     *bits = 0;
     while (s && *s) {
-        unsigned b = !strncmp(s, "ux", 2) ? CTN_FIX_X : !strncmp(s, "uy", 2) ? CTN_FIX_Y : !strncmp(s, "uz", 2) ? CTN_FIX_Z : 0;
+        unsigned b = 0;
+        for (int k = 0; k < 6 && !b; k++) b = strncmp(s, name[k], 2) ? 0 : 1u << k;
         if (!b || (*bits & b) || (s[2] && s[2] != ','))
-            return ctn_parse_error(l, "record: dof= takes ux, uy, uz separated by commas, each once (found '%.40s')",
-                                   ctn_parse_key(l, 1, "dof"));
+            return ctn_parse_error(l, "record: dof= takes ux, uy, uz, rx, ry, rz separated by commas, each once (found "
+                                   "'%.40s')", ctn_parse_key(l, 1, "dof"));
         *bits |= b;
         s += s[2] ? 3 : 2;
     }
     return CTN_OK;
 }
 
-/* record node=ID [dof=ux,uy,uz] [reaction] | record element=ID force */
+/* record node=ID [dof=ux,uy,uz,rx,ry,rz] [reaction] | record element=ID force */
 int ctn_parse_record(ctn_line *l)
 {
     int id = 0, reaction = 0;
     unsigned bits = 0;
-    int rc = ctn_parse_positional(l, 0, "record node=ID [dof=ux,uy,uz] [reaction] | record element=ID force");
+    int rc = ctn_parse_positional(l, 0, "record node=ID [dof=ux,uy,uz,rx,ry,rz] [reaction] | record element=ID force");
     const char *node = rc ? NULL : ctn_parse_key(l, 1, "node"), *elem = rc ? NULL : ctn_parse_key(l, 1, "element");
     if (!rc && !!node == !!elem) return ctn_parse_error(l, "record: give node=ID or element=ID");
     if (!rc) rc = ctn_parse_int(l, node ? "the node id" : "the element id", node ? node : elem, &id);

@@ -28,7 +28,7 @@ int ctn_model_record_node(ctn_model *m, int id, unsigned dofs)
 {
     int i;
     if (!m) return CTN_ERR_INVALID;
-    if (dofs & ~(unsigned)CTN_FIX_ALL) return ctn_model_error(m, CTN_ERR_MODEL, "record: node %d: unknown directions", id);
+    if (dofs & ~(unsigned)CTN_FIX_ALL6) return ctn_model_error(m, CTN_ERR_MODEL, "record: node %d: unknown directions", id);
     int rc = ctn_model_node_lookup(m, id, &i);
     return rc ? rc : add_record(m, i, dofs ? dofs : CTN_FIX_ALL, -1, 0);
 }
@@ -45,7 +45,7 @@ int ctn_model_record_reaction(ctn_model *m, int id, unsigned dofs)
 {
     int i;
     if (!m) return CTN_ERR_INVALID;
-    if (dofs & ~(unsigned)CTN_FIX_ALL) return ctn_model_error(m, CTN_ERR_MODEL, "record: node %d: unknown directions", id);
+    if (dofs & ~(unsigned)CTN_FIX_ALL6) return ctn_model_error(m, CTN_ERR_MODEL, "record: node %d: unknown directions", id);
     int rc = ctn_model_node_lookup(m, id, &i);
     return rc ? rc : add_record(m, i, dofs, -1, 1);   /* 0: its fixed directions */
 }

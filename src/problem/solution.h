@@ -23,6 +23,8 @@ typedef struct ctn_modes {
     ctn_modal_summary sum;
     ctn_mode *mode;            /* sum.count, by increasing omega^2 */
     double *shapes;            /* 3 nn per mode; mode[k].shape points into it */
+    double *rshapes;           /* 3 nn per mode: the rotations (spins) of the shapes, NULL
+                                  when no node has rotations (a dynamics' modal damping) */
 } ctn_modes;
 
 /* The factors of a buckling analysis (analysis/buckling/buckling_result.c). */

@@ -74,19 +74,29 @@ int ctn_dyn_central_step(ctn_dyn *dy, double h, int *ok)
     double *vh = dy->w;
     *ok = 0;
     for (size_t q = 0; q < n; q++) vh[q] = dy->v0[q] + 0.5 * h * dy->a0[q];
-    for (size_t i = 0; i < p->ns; i++) {
+    for (size_t i = 0; !dy->rot && i < p->ns; i++) {
         int q = eq[i];
         if (q >= 0) dy->d1[i] = dy->d0[i] + h * vh[q];      /* fixed DOFs: at t_n+1 already */
+    }
+    if (dy->rot) {                                          /* the rotations turned by spins */
+        for (size_t i = 0; i < p->ns; i++)
+            if (eq[i] >= 0) dy->d1[i] = dy->d0[i];
+        for (size_t q = 0; q < n; q++) dy->R[q] = h * vh[q];
+        ctn_dyn_rot_central_turn(dy, h, dy->R);
+        ctn_problem_update(p, dy->d1, 1.0, dy->R);
     }
     int rc = ctn_dyn_residual(dy, dy->d1, 0, dy->r1, &valid);
     if (rc || !valid) return rc;
     ctn_dyn_wind(dy, dy->d1, vh, dy->t1, dy->r1);          /* on v(n+1/2) */
-    ctn_dyn_damp(dy, vh, dy->w2);
+    ctn_dyn_damp_at(dy, dy->d1, vh, dy->R, dy->w2);
     for (size_t q = 0; q < n; q++) {
-        dy->a1[q] = (dy->r1[q] - dy->w2[q] - (dy->fsup ? dy->fsup[q] : 0.0)) / dy->diag[q];
+        dy->R[q] = dy->r1[q] - dy->w2[q] - (dy->fsup ? dy->fsup[q] : 0.0);
+        dy->a1[q] = dy->R[q] / dy->diag[q];
         dy->v1[q] = vh[q] + 0.5 * h * dy->a1[q];
-        if (!isfinite(dy->v1[q])) return CTN_OK;
     }
+    if (dy->rot && !ctn_dyn_rot_central_rates(dy, h, dy->R)) return CTN_OK;
+    for (size_t q = 0; q < n; q++)
+        if (!isfinite(dy->v1[q])) return CTN_OK;
     dy->sum.iterations++;
     *ok = 1;
     return ctn_interrupted(p->ctx);

@@ -1,6 +1,6 @@
 /* The dynamics analysis's checks of the model (before any solve, at the `dynamics`
- * line): rotations only with an implicit method and no damping, the line after the last step, mass (every
- * free DOF's for the explicit method, naming a node and a section without it). */
+ * line): the line after the last step, mass (every free DOF's for the explicit method,
+ * naming a node and a section without it). */
 #include "analysis/dynamics/dynamics.h"
 
 #include <math.h>
@@ -21,9 +21,14 @@ static void massless_node(const ctn_problem *p, const double *diag, char *what, 
     const ctn_model *m = p->m;
     snprintf(what, size, "no free node");
     for (size_t i = 0; i < m->nodes.n; i++)
-        for (int k = 0; k < 3; k++) {
+        for (int k = 0; k < ctn_dofmap_count(&p->a->map, i); k++) {
             int q = p->a->map.eq[ctn_dofmap_node(&p->a->map, i) + (size_t)k];
             if (q < 0 || diag[q] > 0) continue;
+            if (k >= 3) {
+                snprintf(what, size, "node %d has no rotary inertia in r%c (no beam with a section mass reaches it)",
+                         m->nodes.v[i].id, "xyz"[k - 3]);
+                return;
+            }
             const char *sec = NULL;
             for (size_t e = 0; e < m->elements.n && !sec; e++) {
                 const ctn_element *el = &m->elements.v[e];
@@ -65,20 +70,27 @@ static int check_mass(ctn_problem *p, const ctn_dynamics_options *o, double *dia
     return CTN_OK;
 }
 
-/* A reaction is recorded only where the node is fixed. */
+/* A reaction is recorded only where the node is fixed, a rotation only on a node that has
+ * rotations. */
 static int check_reaction_records(const ctn_problem *p)
 {
+    static const char *const dir[6] = { "ux", "uy", "uz", "rx", "ry", "rz" };
     const ctn_model *m = p->m;
     for (size_t i = 0; i < m->records.n; i++) {
         const ctn_record *r = &m->records.v[i];
-        unsigned free_dofs = r->reaction ? ctn_dyn_record_dofs(m, r) & ~m->nodes.v[r->node].fix & CTN_FIX_ALL : 0;
-        if (r->reaction && !ctn_dyn_record_dofs(m, r))
+        if (r->element >= 0) continue;
+        unsigned want = ctn_dyn_record_dofs(m, r), free_dofs = r->reaction ? want & ~m->nodes.v[r->node].fix : 0;
+        int id = m->nodes.v[r->node].id, k = 0;
+        if (ctn_model_node_dofs(m, (size_t)r->node) != 6 && (want & CTN_FIX_ROT))
+            return ctn_error_at(p->ctx, CTN_ERR_MODEL, m->file, r->line, "record: node %d has no rotations (no beam or "
+                                "rspring reaches it): dof= takes ux, uy, uz there", id);
+        if (r->reaction && !want)
             return ctn_error_at(p->ctx, CTN_ERR_MODEL, m->file, r->line, "record: node %d has no support (fix=): it "
-                                "has no reaction to record", m->nodes.v[r->node].id);
+                                "has no reaction to record", id);
+        while (free_dofs && !(free_dofs >> k & 1)) k++;
         if (free_dofs)
-            return ctn_error_at(p->ctx, CTN_ERR_MODEL, m->file, r->line, "record: node %d is not fixed in u%c: it has no "
-                                "reaction there (give dof= of its fixed directions, or fix= them)", m->nodes.v[r->node].id,
-                                "xyz"[free_dofs & CTN_FIX_X ? 0 : free_dofs & CTN_FIX_Y ? 1 : 2]);
+            return ctn_error_at(p->ctx, CTN_ERR_MODEL, m->file, r->line, "record: node %d is not fixed in %s: it has no "
+                                "reaction there (give dof= of its fixed directions, or fix= them)", id, dir[k]);
     }
     return CTN_OK;
 }
@@ -88,12 +100,6 @@ int ctn_dynamics_check(ctn_problem *p, const ctn_dynamics_options *o)
     const ctn_model *m = p->m;
     int rc = check_reaction_records(p);
     if (rc) return rc;
-    if (p->a->map.rot > 0 && o->method == CTN_DYN_CENTRAL)
-        return ctn_dyn_error(p, o, "dynamics: method=central does not take rotations (beam, rspring): give an implicit "
-                                   "method (genalpha, hht, newmark)");
-    if (p->a->map.rot > 0 && (o->damping_alpha > 0 || o->damping_beta > 0 || o->modal_count > 0))
-        return ctn_dyn_error(p, o, "dynamics: damping of a model with rotations (beam, rspring) is not supported yet "
-                                   "(take rho_inf < 1 for numerical damping)");
     if ((rc = ctn_dyn_wind_check(p, o))) return rc;
     if (o->line > 0 && (size_t)o->steps_before != m->steps.n)
         return ctn_dyn_error(p, o, "dynamics: give it after the last `step` line (it starts from that step's equilibrium)");

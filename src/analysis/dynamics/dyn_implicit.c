@@ -69,10 +69,15 @@ static void step_residual(ctn_dyn *dy, const double *r1, double *ref)
     double ma = ctn_layout_norm(&p->eq, y);
     for (size_t q = 0; q < n; q++) y[q] = (1 - af) * r1[q] + af * dy->r0[q] - y[q];
     if (dy->rot) ma = sqrt(ma * ma + ctn_dyn_rot_residual(dy, y));   /* rotary inertia */
-    if (ctn_dyn_damped(dy)) {
+    if (ctn_dyn_damped(dy) && !dy->rot) {
         for (size_t q = 0; q < n; q++) w[q] = (1 - af) * dy->v1[q] + af * dy->v0[q];
         ctn_dyn_damp(dy, w, dy->w2);
         for (size_t q = 0; q < n; q++) y[q] -= dy->w2[q];
+    } else if (ctn_dyn_damped(dy)) {                  /* on each end's spatial velocities */
+        ctn_dyn_damp_at(dy, dy->d1, dy->v1, w, dy->w2);
+        for (size_t q = 0; q < n; q++) y[q] -= (1 - af) * dy->w2[q];
+        ctn_dyn_damp_at(dy, dy->d0, dy->v0, w, dy->w2);
+        for (size_t q = 0; q < n; q++) y[q] -= af * dy->w2[q];
     }
     for (size_t q = 0; dy->fsup && q < n; q++) y[q] -= dy->fsup[q];   /* moving supports */
     double fe = 0, fi = 0;
@@ -94,12 +99,13 @@ static int factor_effective(ctn_dyn *dy, double h, int *ok)
     size_t mnz = (size_t)dy->mcol[p->ndof];
     for (size_t k = 0; k < mnz; k++) p->Kx[dy->mslot[k]] += c1 * dy->mval[k];   /* M's nonzeros only */
     for (size_t k = 0; dy->Cx && k < p->a->nnz; k++) p->Kx[k] += c2 * dy->Cx[k];
-    ctn_dyn_rot_tangent(dy, c1);
+    ctn_dyn_rot_tangent(dy, c1 + c2 * dy->o->damping_alpha);   /* rotary inertia, alpha R J W */
     ctn_dyn_wind_tangent(dy, c2);
     long col = -1;
     int rc = ctn_problem_factor(p, 0.0, ok, &col);
     dy->sum.factorizations++;
     if (!rc && *ok) rc = ctn_dyn_modal_factor(dy, c2, ok);
+    if (!rc && *ok) ctn_dyn_exact_blocks(dy, h);
     return rc;
 }
 
@@ -146,8 +152,7 @@ int ctn_dyn_implicit_step(ctn_dyn *dy, double h, int *ok)
         }
         if ((rc = factor_effective(dy, h, &posdef)) || !posdef) return rc;
         for (size_t q = 0; q < p->ndof; q++) dy->R[q] /= 1 - dy->af;
-        if ((rc = ctn_problem_linsolve(p, dy->R, dy->w))) return rc;
-        ctn_dyn_modal_correct(dy, dy->w);
+        if ((rc = ctn_dyn_exact_solve(dy, dy->R, dy->w))) return rc;
         ctn_problem_update(p, dy->d1, 1.0, dy->w);
         dy->sum.iterations++;
         double dn = ctn_layout_norm(&p->eq, dy->w), dd = ctn_layout_norm(&p->st, dy->d1) + p->lref;

@@ -23,11 +23,27 @@ static int start_modes(ctn_dyn *dy, ctn_solution **tmp)
     mo.mass = dy->lumped ? CTN_MASS_LUMPED : CTN_MASS_CONSISTENT;
     mo.line = dy->o->line;
     int rc = ctn_solution_create(p->ctx, p->m->nodes.n, p->m->elements.n, tmp);
+    if (!rc) (*tmp)->rot = p->a->map.rot > 0;          /* the start's rotations too */
     if (!rc) rc = ctn_solution_add_step(*tmp, "start", &k);
     if (!rc) rc = ctn_problem_fill_step(p, *tmp, k, dy->d0);
     if (rc) return rc;
     (*tmp)->sum.reason = CTN_CONVERGED;
     return ctn_problem_modes(p, *tmp, &mo);
+}
+
+/* U = M phi, the rotary inertia's R0 J R0^T rows included (the analysis's own mass: the
+ * modal analysis's may share a beam's rotary inertia between its nodes), and phi, U
+ * scaled to phi^T M phi = 1. */
+static void normalize(const ctn_dyn *dy, double *phi, double *U)
+{
+    const ctn_problem *p = dy->p;
+    ctn_dyn_mass(dy, phi, U);
+    ctn_dyn_rot_mass_mult(dy, dy->d0, phi, U);
+    double m = ctn_layout_dot(&p->eq, phi, U), s = m > 0 ? 1 / sqrt(m) : 1.0;
+    for (size_t q = 0; q < p->ndof; q++) {
+        phi[q] *= s;
+        U[q] *= s;
+    }
 }
 
 int ctn_dyn_modal_setup(ctn_dyn *dy)
@@ -57,9 +73,10 @@ int ctn_dyn_modal_setup(ctn_dyn *dy)
         ctn_mode md;
         if ((rc = ctn_solution_mode(tmp, i, &md))) break;
         ctn_dofmap_from3(&p->a->map, md.shape, st);
+        if (tmp->modes->rshapes) ctn_dofmap_rot_from3(&p->a->map, tmp->modes->rshapes + 3 * p->m->nodes.n * i, st);
         for (size_t s = 0; s < p->ns; s++)
             if (p->a->map.eq[s] >= 0) dy->mPhi[i * n + (size_t)p->a->map.eq[s]] = st[s];
-        ctn_dyn_mass(dy, dy->mPhi + i * n, dy->mU + i * n);
+        normalize(dy, dy->mPhi + i * n, dy->mU + i * n);
         double zeta = o->modal_zeta[o->modal_nzeta == 1 ? 0 : i];
         dy->mE[i] = 2 * zeta * md.angular_frequency;
         dy->mG[i] = md.angular_frequency > 0 ? 2 * zeta / md.angular_frequency : 0.0;

@@ -5,7 +5,9 @@
  * Rayleigh's beta, their tangent at the start are kept, so a reaction costs an element
  * loop and no global matrix. A moving support's velocity and acceleration are its
  * function's derivatives (a ramp's or table's kinks and a step's jump carry no impulse
- * here). docs/theory.md "Dynamics". */
+ * here). A model with rotations: the velocities are the spatial ones (a rotation's R W),
+ * the rotary inertia is dyn_rot.c's (lumped at each node, R (J A + W x J W) and alpha
+ * R J W at a node's fixed rotations while others turn). docs/theory.md "Dynamics". */
 #include "analysis/dynamics/dynamics.h"
 
 #include <math.h>
@@ -83,6 +85,9 @@ static void sup_visit(void *data, const ctn_asm *a, const ctn_asm_elem *el)
         for (int i = 0; i < el->b->nnodes; i++) memcpy(X + 3 * i, a->m->nodes.v[el->nodes[i]].X, 3 * sizeof(double));
         memset(Me, 0, (size_t)ns * sizeof(double));
         if (el->b->ops->mass) el->b->ops->mass(el->props, X, dy->lumped, Me);
+        for (int u = 0; u < el->b->nedof && el->b->ops->ndof_node == 6; u++)   /* rotary inertia: */
+            for (int v = u; v < el->b->nedof; v++)                            /* dyn_rot.c's own */
+                if (u % 6 >= 3 || v % 6 >= 3) Me[ctn_packed_index(el->b->nedof, u, v)] = 0.0;
         if (dy->sup_K) memcpy(dy->sup_K + sp->nv, el->Ke, (size_t)ns * sizeof(double));
         dy->sup_e[sp->n] = el->e;
         dy->sup_off[sp->n] = sp->nv;
@@ -177,7 +182,8 @@ static void modal_reactions(ctn_dyn *dy, double t, double *R)
         ctn_dyn_support_stiffness(dy, dy->vs, dy->mg);
         g = dy->mg;
     }
-    ctn_dyn_modal_velocity(dy, dy->v0, g, dy->w2);
+    ctn_dyn_rot_spatial(dy, dy->d0, dy->v0, dy->R);       /* the spatial velocities */
+    ctn_dyn_modal_velocity(dy, dy->R, g, dy->w2);
     for (size_t i = 0; i < p->ns; i++) dy->as[i] = p->a->map.eq[i] >= 0 ? dy->w2[p->a->map.eq[i]] : 0.0;
     for (size_t k = 0; k < dy->nsup; k++) packed_fixed(dy, dy->sup_e[k], dy->sup_M + dy->sup_off[k], 1.0, dy->as, R);
 }
@@ -193,7 +199,9 @@ int ctn_dyn_reactions(ctn_dyn *dy, double t, double *force)
     if (force) memset(force, 0, p->a->ne * sizeof(double));
     if (ctn_asm_loop(p->a, dy->d0, CTN_EVAL_STRESS, 0, int_visit, &ip, NULL)) memset(R, 0, p->ns * sizeof(double));
     if (dy->mr) modal_reactions(dy, t, R);
-    ctn_dyn_rates(dy, t, dy->v0, dy->a0, dy->vs, dy->as);
+    ctn_dyn_rot_spatial(dy, dy->d0, dy->v0, dy->R);       /* a rotation's R W (dy->R: scratch) */
+    ctn_dyn_rates(dy, t, dy->R, dy->a0, dy->vs, dy->as);
+    ctn_dyn_rot_reactions(dy, R);
     for (size_t k = 0; k < dy->nsup; k++) {
         size_t e = dy->sup_e[k], o = dy->sup_off[k];
         packed_fixed(dy, e, dy->sup_M + o, 1.0, dy->as, R);                  /* M a */

@@ -19,7 +19,8 @@ void ctn_dyn_result_destroy(ctn_dyn_result **r)
 
 unsigned ctn_dyn_record_dofs(const ctn_model *m, const ctn_record *r)
 {
-    return r->reaction && !r->dofs ? m->nodes.v[r->node].fix & CTN_FIX_ALL : r->dofs;
+    unsigned all = ctn_model_node_dofs(m, (size_t)r->node) == 6 ? CTN_FIX_ALL6 : CTN_FIX_ALL;
+    return r->reaction && !r->dofs ? m->nodes.v[r->node].fix & all : r->dofs;
 }
 
 static size_t column_count(const ctn_model *m)
@@ -27,8 +28,8 @@ static size_t column_count(const ctn_model *m)
     size_t n = 0;
     for (size_t i = 0; i < m->records.n; i++) {
         const ctn_record *r = &m->records.v[i];
-        unsigned b = ctn_dyn_record_dofs(m, r);
-        n += r->element >= 0 ? 1 : (size_t)((b & 1) + (b >> 1 & 1) + (b >> 2 & 1));
+        unsigned b = r->element >= 0 ? 1 : ctn_dyn_record_dofs(m, r);
+        for (int k = 0; k < 6; k++) n += b >> k & 1;
     }
     return n;
 }
@@ -42,14 +43,14 @@ int ctn_dyn_record_begin(ctn_dyn *dy)
     dy->s->dyn = res;
     res->ncol = column_count(m);
     if (res->ncol && !(res->names = ctn_calloc(dy->p->ctx, res->ncol, sizeof *res->names))) return CTN_ERR_NOMEM;
-    static const char *const u[2][3] = { { "ux", "uy", "uz" }, { "fx", "fy", "fz" } };
+    static const char *const u[2][6] = { { "ux", "uy", "uz", "rx", "ry", "rz" }, { "fx", "fy", "fz", "mx", "my", "mz" } };
     size_t c = 0;
     res->nn = m->nodes.n;
     res->ne = m->elements.n;
     for (size_t i = 0; i < m->records.n; i++) {
         const ctn_record *r = &m->records.v[i];
         if (r->element >= 0) snprintf(res->names[c++], CTN_DYN_NAME_MAX, "%d.force", m->elements.v[r->element].id);
-        for (int k = 0; k < 3 && r->element < 0; k++)
+        for (int k = 0; k < 6 && r->element < 0; k++)
             if (ctn_dyn_record_dofs(m, r) >> k & 1)
                 snprintf(res->names[c++], CTN_DYN_NAME_MAX, "%d.%s", m->nodes.v[r->node].id, u[r->reaction != 0][k]);
     }
@@ -99,7 +100,7 @@ int ctn_dyn_record_row(ctn_dyn *dy, double t)
         const ctn_record *r = &m->records.v[i];
         const double *from = r->reaction ? dy->react : dy->d0;
         if (r->element >= 0) row[c++] = element_force(dy, (size_t)r->element, dy->d0);
-        for (int k = 0; k < 3 && r->element < 0; k++)
+        for (int k = 0; k < 6 && r->element < 0; k++)
             if (ctn_dyn_record_dofs(m, r) >> k & 1) row[c++] = from[ctn_dofmap_node(&dy->p->a->map, (size_t)r->node) + (size_t)k];
     }
     en[0] = dy->ek;

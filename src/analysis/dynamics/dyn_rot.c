@@ -15,67 +15,9 @@
  * them). Exact for any rigid rotation about a fixed axis; second order in h. A node
  * with some rotations fixed (a plane model) takes the same formulas (exact when one
  * rotation is free, about a fixed axis). docs/theory.md "Dynamics". */
-#include "analysis/dynamics/dynamics.h"
+#include "analysis/dynamics/dyn_rot.h"
 
-#include <math.h>
 #include <string.h>
-
-struct ctn_dyn_rot {
-    size_t n;              /* nodes with a free rotation */
-    size_t *node;          /* their indices */
-    size_t *st;            /* the state index of each one's rx */
-    int *eq;               /* 3 per node: the equations of its rotations (-1 fixed) */
-    int *slot;             /* 9 per node: the tangent's value of (a, b), eq[a] <= eq[b] (-1) */
-    long *at;              /* per model node: its index here, -1 */
-    double *work;          /* an element's packed mass and coordinates */
-    double *J;             /* 9 per node: the rotary inertia, material frame */
-    double *W0, *A0, *W1, *A1, *I0, *I1;   /* 3 per node */
-};
-
-/* q = the unit quaternion of the rotation vector psi. */
-static void quat(const double psi[3], double q[4])
-{
-    double t = sqrt(psi[0] * psi[0] + psi[1] * psi[1] + psi[2] * psi[2]);
-    double s = t > 1e-8 ? sin(0.5 * t) / t : 0.5 - t * t / 48;
-    q[0] = cos(0.5 * t);
-    for (int k = 0; k < 3; k++) q[k + 1] = s * psi[k];
-}
-
-/* The rotation vector of conj(a) b: log(R_a^T R_b), its angle in [0, pi]. */
-static void log_rel(const double a[4], const double b[4], double th[3])
-{
-    double w = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3], v[3];
-    for (int k = 0; k < 3; k++) {                       /* conj(a) b */
-        int i = (k + 1) % 3 + 1, j = (k + 2) % 3 + 1;
-        v[k] = a[0] * b[k + 1] - b[0] * a[k + 1] - (a[i] * b[j] - a[j] * b[i]);
-    }
-    if (w < 0) {
-        w = -w;
-        for (int k = 0; k < 3; k++) v[k] = -v[k];
-    }
-    double s = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    double f = s > 1e-12 ? 2 * atan2(s, w) / s : 2 / w;
-    for (int k = 0; k < 3; k++) th[k] = f * v[k];
-}
-
-/* R (row-major) of q. */
-static void rmat(const double q[4], double R[9])
-{
-    double w = q[0], x = q[1], y = q[2], z = q[3];
-    R[0] = 1 - 2 * (y * y + z * z), R[1] = 2 * (x * y - w * z), R[2] = 2 * (x * z + w * y);
-    R[3] = 2 * (x * y + w * z), R[4] = 1 - 2 * (x * x + z * z), R[5] = 2 * (y * z - w * x);
-    R[6] = 2 * (x * z - w * y), R[7] = 2 * (y * z + w * x), R[8] = 1 - 2 * (x * x + y * y);
-}
-
-static void mv(const double M[9], const double x[3], double y[3])
-{
-    for (int i = 0; i < 3; i++) y[i] = M[3 * i] * x[0] + M[3 * i + 1] * x[1] + M[3 * i + 2] * x[2];
-}
-
-static void mtv(const double M[9], const double x[3], double y[3])
-{
-    for (int i = 0; i < 3; i++) y[i] = M[i] * x[0] + M[3 + i] * x[1] + M[6 + i] * x[2];
-}
 
 /* The rotary inertia of the lumped mass op: each element's node blocks of rotations. */
 static void inertia_visit(void *data, const ctn_asm *a, const ctn_asm_elem *el)
@@ -130,6 +72,7 @@ void ctn_dyn_rot_free(ctn_dyn *dy)
 {
     struct ctn_dyn_rot *r = dy->rot;
     if (!r) return;
+    ctn_dyn_exact_free(r);
     void *v[] = { r->node, r->st, r->eq, r->slot, r->at, r->work, r->J, r->W0, r->A0, r->W1, r->A1, r->I0, r->I1 };
     for (size_t i = 0; i < sizeof v / sizeof *v; i++) ctn_free(v[i]);
     ctn_free(r);
@@ -180,12 +123,12 @@ static void inertia(const struct ctn_dyn_rot *r, size_t k, const double *psi, co
 {
     const double *J = r->J + 9 * k;
     double q[4], R[9], JW[3], JA[3], m[3];
-    quat(psi, q);
-    rmat(q, R);
-    mv(J, W, JW);
-    mv(J, A, JA);
+    dr_quat(psi, q);
+    dr_rmat(q, R);
+    dr_mv(J, W, JW);
+    dr_mv(J, A, JA);
     for (int c = 0; c < 3; c++) m[c] = JA[c] + W[(c + 1) % 3] * JW[(c + 2) % 3] - W[(c + 2) % 3] * JW[(c + 1) % 3];
-    mv(R, m, I);
+    dr_mv(R, m, I);
 }
 
 void ctn_dyn_rot_kinematics(ctn_dyn *dy, double h)
@@ -194,9 +137,9 @@ void ctn_dyn_rot_kinematics(ctn_dyn *dy, double h)
     double b = dy->beta, g = dy->gamma;
     for (size_t k = 0; r && k < r->n; k++) {
         double q0[4], q1[4], th[3];
-        quat(dy->d0 + r->st[k], q0);
-        quat(dy->d1 + r->st[k], q1);
-        log_rel(q0, q1, th);
+        dr_quat(dy->d0 + r->st[k], q0);
+        dr_quat(dy->d1 + r->st[k], q1);
+        dr_log_rel(q0, q1, th);
         double *W0 = r->W0 + 3 * k, *A0 = r->A0 + 3 * k, *W1 = r->W1 + 3 * k, *A1 = r->A1 + 3 * k;
         for (int c = 0; c < 3; c++) {
             A1[c] = (th[c] - h * W0[c] - h * h * (0.5 - b) * A0[c]) / (b * h * h);
@@ -232,8 +175,8 @@ void ctn_dyn_rot_tangent(ctn_dyn *dy, double c1)
     for (size_t k = 0; r && k < r->n; k++) {
         double q[4], R[9], RJ[9];
         const double *J = r->J + 9 * k;
-        quat(dy->d1 + r->st[k], q);
-        rmat(q, R);
+        dr_quat(dy->d1 + r->st[k], q);
+        dr_rmat(q, R);
         for (int i = 0; i < 3; i++)
             for (int j = 0; j < 3; j++) RJ[3 * i + j] = R[3 * i] * J[j] + R[3 * i + 1] * J[3 + j] + R[3 * i + 2] * J[6 + j];
         for (int u = 0; u < 9; u++) {
@@ -251,7 +194,7 @@ double ctn_dyn_rot_accept(ctn_dyn *dy)
     if (!r) return 0.0;
     for (size_t k = 0; k < r->n; k++) {
         double JW[3];
-        mv(r->J + 9 * k, r->W1 + 3 * k, JW);
+        dr_mv(r->J + 9 * k, r->W1 + 3 * k, JW);
         for (int c = 0; c < 3; c++) ek += 0.5 * r->W1[3 * k + (size_t)c] * JW[c];
     }
     memcpy(r->W0, r->W1, 3 * r->n * sizeof(double));
@@ -266,11 +209,11 @@ double ctn_dyn_rot_work(const ctn_dyn *dy, const double *f0, const double *f1)
     double w = 0;
     for (size_t k = 0; r && k < r->n; k++) {
         double q0[4], q1[4], th[3], ts[3], R[9];
-        quat(dy->d0 + r->st[k], q0);
-        quat(dy->d1 + r->st[k], q1);
-        log_rel(q0, q1, th);
-        rmat(q0, R);
-        mv(R, th, ts);                                   /* the spatial increment R0 Theta */
+        dr_quat(dy->d0 + r->st[k], q0);
+        dr_quat(dy->d1 + r->st[k], q1);
+        dr_log_rel(q0, q1, th);
+        dr_rmat(q0, R);
+        dr_mv(R, th, ts);                                   /* the spatial increment R0 Theta */
         for (int c = 0; c < 3; c++)
             if (r->eq[3 * k + (size_t)c] >= 0) {
                 size_t i = r->st[k] + (size_t)c;
@@ -298,14 +241,30 @@ void ctn_dyn_rot_start(ctn_dyn *dy, double *a)
             int e = r->eq[3 * k + (size_t)c];
             if (e >= 0) al[c] = a[e];
         }
-        quat(dy->d0 + r->st[k], q);
-        rmat(q, R);
-        mtv(R, al, r->A0 + 3 * k);                       /* A0 = R0^T alpha (W0 = 0) */
+        dr_quat(dy->d0 + r->st[k], q);
+        dr_rmat(q, R);
+        dr_mtv(R, al, r->A0 + 3 * k);                       /* A0 = R0^T alpha (W0 = 0) */
         memset(r->W0 + 3 * k, 0, 3 * sizeof(double));
         for (int c = 0; c < 3; c++) {
             int e = r->eq[3 * k + (size_t)c];
             if (e >= 0) a[e] = r->A0[3 * k + (size_t)c];
         }
         inertia(r, k, dy->d0 + r->st[k], W, r->A0 + 3 * k, r->I0 + 3 * k);
+    }
+}
+
+void ctn_dyn_rot_reactions(const ctn_dyn *dy, double *react)
+{
+    const struct ctn_dyn_rot *r = dy->rot;
+    for (size_t k = 0; r && k < r->n; k++) {
+        double I[3], q[4], R[9], JW[3], m[3];
+        const double *W = r->W0 + 3 * k;
+        inertia(r, k, dy->d0 + r->st[k], W, r->A0 + 3 * k, I);   /* R (J A + W x J W) */
+        dr_quat(dy->d0 + r->st[k], q);
+        dr_rmat(q, R);
+        dr_mv(r->J + 9 * k, W, JW);
+        dr_mv(R, JW, m);                                          /* R J W */
+        for (int c = 0; c < 3; c++)
+            if (r->eq[3 * k + (size_t)c] < 0) react[r->st[k] + (size_t)c] += I[c] + dy->o->damping_alpha * m[c];
     }
 }

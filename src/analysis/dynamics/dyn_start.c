@@ -150,8 +150,9 @@ int ctn_dyn_start(ctn_dyn *dy)
     if (!rc) rc = mass_pattern(dy);
     if (rc) return rc;
     ctn_asm_mass_diag(p->a, dy->diag, tot, &bad);
+    ctn_dyn_rot_stable_diag(dy);
     for (size_t k = 0; dy->Cx && k < p->a->nnz; k++) dy->Cx[k] = o->damping_alpha * dy->Mx[k] + o->damping_beta * p->Kx[k];
-    if ((rc = ctn_dyn_modal_setup(dy))) return rc;
+    if ((rc = ctn_dyn_modal_setup(dy)) || (rc = ctn_dyn_exact_setup(dy))) return rc;
     dy->sum.mass = lumped ? CTN_MASS_LUMPED : CTN_MASS_CONSISTENT;
     dy->U = dy->U1;
     dy->e0 = dy->U;

@@ -71,11 +71,11 @@ void ctn_dyn_accept(ctn_dyn *dy, double h, const double *r1)
     }
     dy->W += ctn_layout_sum(&p->st, work);
     memcpy(dy->fe0, p->fext, p->ns * sizeof(double));
-    if (ctn_dyn_damped(dy)) {
-        ctn_dyn_damp(dy, dy->v0, dy->w2);
-        double c0 = ctn_layout_dot(&p->eq, dy->v0, dy->w2);
-        ctn_dyn_damp(dy, dy->v1, dy->w2);
-        dy->D += 0.5 * h * (c0 + ctn_layout_dot(&p->eq, dy->v1, dy->w2));
+    if (ctn_dyn_damped(dy)) {                            /* the power w . C w (spatial w) */
+        ctn_dyn_damp_at(dy, dy->d0, dy->v0, dy->w, dy->w2);
+        double c0 = ctn_layout_dot(&p->eq, dy->w, dy->w2);
+        ctn_dyn_damp_at(dy, dy->d1, dy->v1, dy->w, dy->w2);
+        dy->D += 0.5 * h * (c0 + ctn_layout_dot(&p->eq, dy->w, dy->w2));
     }
     ctn_dyn_mass(dy, dy->v1, dy->w2);
     dy->ek = 0.5 * ctn_layout_dot(&p->eq, dy->v1, dy->w2) + ctn_dyn_rot_accept(dy);
@@ -245,6 +245,7 @@ static int dyn_analysis(ctn_problem *p, const void *opt, ctn_solution **s)
     if (*s) return ctn_dynamics_run(p, *s, &o);
     ctn_solution *n = NULL;
     int rc = ctn_solution_create(p->ctx, p->m->nodes.n, p->m->elements.n, &n);
+    if (!rc) n->rot = p->a->map.rot > 0;               /* the rotations and moments kept */
     if (!rc) rc = ctn_dynamics_run(p, n, &o);
     if (rc) ctn_solution_destroy(&n);
     *s = n;

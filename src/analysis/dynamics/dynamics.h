@@ -157,6 +157,36 @@ double ctn_dyn_rot_accept(ctn_dyn *dy);
 double ctn_dyn_rot_work(const ctn_dyn *dy, const double *f0, const double *f1);
 void ctn_dyn_rot_mass_add(ctn_dyn *dy, double scale);
 void ctn_dyn_rot_start(ctn_dyn *dy, double *a);
+/* The rotary inertia's and its alpha damping's moments at t_n, R0 (J A0 + W0 x J W0) +
+ * alpha R0 J W0, added into react (state) at the fixed rotations of the nodes that turn. */
+void ctn_dyn_rot_reactions(const ctn_dyn *dy, double *react);
+
+/* dyn_rot_damp.c: damping on the spatial velocities (a rotation's w = R W, R at the state
+ * d of that velocity): vs (ndof) = v with its rotations' W turned to R(d) W (vs may be v);
+ * y += alpha R(d) J W at the rotations' equations (W from v); y += R(d) J R(d)^T x there;
+ * y = the damping force of v at d, C v_s + alpha R J W (vs: v_s, scratch), as
+ * ctn_dyn_damp without rotations. */
+void ctn_dyn_rot_spatial(const ctn_dyn *dy, const double *d, const double *v, double *vs);
+void ctn_dyn_rot_damp_mass(const ctn_dyn *dy, const double *d, const double *v, double alpha, double *y);
+void ctn_dyn_rot_mass_mult(const ctn_dyn *dy, const double *d, const double *x, double *y);
+void ctn_dyn_damp_at(const ctn_dyn *dy, const double *d, const double *v, double *vs, double *y);
+
+/* dyn_rot_central.c: the central differences' rotations: dy->diag at the rotations'
+ * equations = each node's least rotary inertia (the stable step's); the spins of the
+ * step R0 h W(n+1/2) into w (ndof, at the rotations' equations; W(n+1/2) kept); from the
+ * spatial forces f (ndof: residual less damping) at d1, W1 and A1 (also into v1, a1);
+ * 0 when W1's fixed point did not converge. */
+void ctn_dyn_rot_stable_diag(ctn_dyn *dy);
+void ctn_dyn_rot_central_turn(ctn_dyn *dy, double h, double *w);
+int ctn_dyn_rot_central_rates(ctn_dyn *dy, double h, const double *f);
+
+/* dyn_rot_exact.c: the consistent tangent of the rotations' inertia and damping (implicit
+ * methods, nodes with three composed rotations; after the damping is set up); its
+ * blocks at the iterate d1 (after the kinematics); x = (A + B)^-1 b, A the factored
+ * effective tangent (A^-1 alone without rotations). */
+int ctn_dyn_exact_setup(ctn_dyn *dy);
+void ctn_dyn_exact_blocks(ctn_dyn *dy, double h);
+int ctn_dyn_exact_solve(ctn_dyn *dy, const double *b, double *x);
 
 /* Whether the analysis has damping (Rayleigh's or modal). */
 static inline int ctn_dyn_damped(const ctn_dyn *dy) { return dy->Cx != NULL || dy->mr > 0; }

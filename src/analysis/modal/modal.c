@@ -387,6 +387,8 @@ int ctn_problem_modes(ctn_problem *p, ctn_solution *s, const ctn_modal_options *
         if (!rc) rc = eigenpairs(&md, md.lambda, &V);
     }
     if (!rc && !(res = ctn_modes_create(p->ctx, (size_t)opt->count, p->m->nodes.n))) rc = CTN_ERR_NOMEM;
+    if (!rc && p->a->map.rot && !(res->rshapes = ctn_calloc(p->ctx, 3 * p->m->nodes.n * (size_t)opt->count, sizeof(double))))
+        rc = CTN_ERR_NOMEM;
     if (!rc) {
         md.sum.sigma = md.sigma;
         md.sum.count = opt->count;

@@ -68,8 +68,9 @@ typedef struct fill_job {
     int zero, unstable, failed;
 } fill_job;
 
-/* One mode from phi (ndof, changed in sign only); its shape (3 per node) into shape. */
-static void describe(fill_job *j, double *phi, double lam, ctn_mode *out, double *shape)
+/* One mode from phi (ndof, changed in sign only); its shape (3 per node) into shape, its
+ * rotations into rshape (unless NULL). */
+static void describe(fill_job *j, double *phi, double lam, ctn_mode *out, double *shape, double *rshape)
 {
     ctn_modal *md = j->md;
     ctn_problem *p = md->p;
@@ -80,6 +81,7 @@ static void describe(fill_job *j, double *phi, double lam, ctn_mode *out, double
     memset(state, 0, p->ns * sizeof(double));
     ctn_problem_axpy(p, state, 1.0, phi);
     ctn_dofmap_to3(&p->a->map, state, shape);
+    if (rshape) ctn_dofmap_rot_to3(&p->a->map, state, rshape);
     ctn_modal_mass(md, phi, Mphi);
     ctn_problem_symv(p, p->Kx, phi, Kphi);
     for (size_t q = 0; q < n; q++) {
@@ -108,7 +110,8 @@ static void fill_run(void *arg)
     const ctn_modal *md = j->md;
     size_t n = md->p->ndof, nn = md->p->m->nodes.n;
     for (int k = j->k0; k < j->k1; k++) {
-        describe(j, j->V + n * (size_t)k, md->lambda[k], &j->res->mode[k], j->res->shapes + 3 * nn * (size_t)k);
+        describe(j, j->V + n * (size_t)k, md->lambda[k], &j->res->mode[k], j->res->shapes + 3 * nn * (size_t)k,
+                 j->res->rshapes ? j->res->rshapes + 3 * nn * (size_t)k : NULL);
         j->zero += j->res->mode[k].kind == CTN_MODE_ZERO;
         j->unstable += j->res->mode[k].kind == CTN_MODE_UNSTABLE;
     }

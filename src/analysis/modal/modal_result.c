@@ -21,6 +21,7 @@ void ctn_modes_destroy(ctn_modes **m)
     if (!m || !*m) return;
     ctn_free((*m)->mode);
     ctn_free((*m)->shapes);
+    ctn_free((*m)->rshapes);
     ctn_free(*m);
     *m = NULL;
 }
