@@ -21,27 +21,27 @@
 #include "start/fdensity.h"
 
 #include "design/formfind/ff.h"
-#include "dist/comm.h"
 
 #include <math.h>
 #include <string.h>
 
-/* Every member a two-node flexible element, some free node joining three or more, and
- * nothing the linear equilibrium leaves out. */
-static int is_net(const ctn_problem *p)
+/* *net = 1 if every member is a two-node flexible element, some free node joins three or
+ * more and nothing the linear equilibrium leaves out is there. Every process of an MPI
+ * job holds the whole model and state: each finds the same start. */
+static int is_net(const ctn_problem *p, int *net)
 {
     const ctn_asm *a = p->a;
-    if (a->map.rot || p->fl || p->sp || p->dT || p->dist || ctn_comm_size(ctn_ctx_comm(p->ctx)) > 1 || !a->ne)
-        return 0;
+    *net = 0;
+    if (a->map.rot || p->fl || p->sp || p->dT || !a->ne) return CTN_OK;
     for (size_t b = 0; b < a->nblocks; b++)
-        if (a->blocks[b].nnodes != 2 || !(a->blocks[b].ops->flags & CTN_ELEM_FLEXIBLE)) return 0;
-    int *deg = ctn_calloc(p->ctx, a->nn, sizeof(int)), net = 0;
-    if (!deg) return 0;
+        if (a->blocks[b].nnodes != 2 || !(a->blocks[b].ops->flags & CTN_ELEM_FLEXIBLE)) return CTN_OK;
+    int *deg = ctn_calloc(p->ctx, a->nn, sizeof(int));
+    if (!deg) return CTN_ERR_NOMEM;
     for (size_t e = 0; e < a->ne; e++)
         for (int k = 0; k < 2; k++) deg[ctn_elem_nodes(p->m, e)[k]]++;
-    for (size_t i = 0; i < a->nn && !net; i++) net = deg[i] >= 3 && (p->m->nodes.v[i].fix & 7u) != 7u;
+    for (size_t i = 0; i < a->nn && !*net; i++) *net = deg[i] >= 3 && (p->m->nodes.v[i].fix & 7u) != 7u;
     ctn_free(deg);
-    return net;
+    return CTN_OK;
 }
 
 /* q = N / l of every member at the start; 0 for a member without tension, which then
@@ -177,18 +177,18 @@ static double towards(ctn_problem *p, fd_work *w, double *d)
 
 int ctn_fdensity_start(ctn_problem *p, double *d, int *taken)
 {
+    int net = 0, rc = is_net(p, &net);
     *taken = 0;
-    if (!is_net(p)) return CTN_OK;
+    if (rc || !net) return rc;
     fd_work w = { NULL, NULL, NULL, NULL, NULL, NULL, NULL };
     densities dn = { NULL, 0 };
     size_t bad;
-    int rc = work_alloc(p, &w), ok = 0;
+    int ok = 0;
+    rc = work_alloc(p, &w);
     dn.q = w.q;
     if (!rc && first_loads(p, &w) && !ctn_asm_loop(p->a, d, p->mode, 0, density_visit, &dn, &bad) && !dn.slack)
         rc = shape(p, &w, d, &ok);
-    if (!rc && ok) {
-        *taken = towards(p, &w, d) > 0;
-    }
+    if (!rc && ok) *taken = towards(p, &w, d) > 0;
     work_free(&w);
     return rc;
 }
