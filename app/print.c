@@ -110,6 +110,8 @@ static void print_notes(FILE *out, const ctn_model *m, const ctn_solve_summary *
 {
     if (sum->preshaped)
         fprintf(out, "start: %d slack chain(s) or junction(s) pre-shaped (on the arc of their unstressed length, hanging along their loads, or on the catenaries of a junction's cables)\n", sum->preshaped);
+    if (sum->fdensity)
+        fprintf(out, "start: the net's free nodes moved towards the shape of its start forces held as force densities\n");
     if (sum->relaxed)
         fprintf(out, "start: %d increment(s) began with compression cut off (relaxation)\n", sum->relaxed);
     if (sum->cuts) fprintf(out, "load increments cut back %d time(s)\n", sum->cuts);

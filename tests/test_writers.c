@@ -299,6 +299,7 @@ static void ref_summary(cJSON *root, const ctn_model *m, const ctn_solution *s, 
     ref_num(root, "factorizations", sum.factorizations, finite);
     ref_num(root, "solves", sum.solves, finite);
     ref_num(root, "reused_factorizations", sum.reused, finite);
+    if (sum.fdensity) cJSON_AddBoolToObject(root, "force_density_start", 1);
     cJSON_AddStringToObject(root, "ordering", ctn_ordering_name(sum.ordering));
     ref_num(root, "factor_nonzeros", (double)sum.nnz_factor, finite);
     ref_num(root, "factor_flops", sum.flops_factor, finite);

@@ -314,6 +314,8 @@ typedef struct ctn_solve_summary {
     int solve_threads;    /* threads of the triangular solves: 2 for a supernodal factor
                              of 50 000 DOFs or more on a machine of two CPUs or more
                              (not under threads=1), else 1 */
+    int fdensity;         /* 1 if the free nodes of a net started on the equilibrium of
+                             its start forces held as force densities (CTN_METHOD_AUTO) */
 } ctn_solve_summary;
 
 /* Element state at the solution. */

@@ -80,6 +80,7 @@ static void put_summary(json_writer *jw, const ctn_solution *s)
     ctn_jw_number(j, "factorizations", sum.factorizations);
     ctn_jw_number(j, "solves", sum.solves);
     ctn_jw_number(j, "reused_factorizations", sum.reused);
+    if (sum.fdensity) ctn_jw_bool(j, "force_density_start", 1);
     ctn_jw_string(j, "ordering", ctn_ordering_name(sum.ordering));
     ctn_jw_number(j, "factor_nonzeros", (double)sum.nnz_factor);
     ctn_jw_number(j, "factor_flops", sum.flops_factor);

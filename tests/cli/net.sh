@@ -13,7 +13,9 @@
 #     loads on the sets by ids), bit for bit in the JSON;
 #   - `catena formfind` of a net with q=: written back as node, element and set lines;
 #     the found file stays put with the forces q l, and equals (JSON bit for bit, with a
-#     load on the set roof.inner in a later step) the same net written by hand and found.
+#     load on the set roof.inner in a later step) the same net written by hand and found;
+#   - a flat prestressed net under snow starts towards its force-density shape: fewer
+#     iterations, and the answer of load-stepped pure Newton.
 # ctest-cost: 3
 # Prints "N passed, N failed"; exit 1 on any failure.
 set -u
@@ -158,5 +160,30 @@ print("found net: |u| %.2g m under the prestress, forces / (q l) - 1 %.2g" % (u,
 assert d["converged"] and len(xyz) == 25 and u <= 1e-10 and f <= 1e-10
 PY
 finish formfind_net_written
+
+# 4. a flat prestressed net under snow starts towards its force-density shape (issue 29
+#    item 2; src/start/fdensity.c): 13 iterations before, at most 8 now (6 measured), and
+#    the answer of load-stepped pure Newton (no start heuristics) to 1e-9 m.
+cat >"$T/fd.cable" <<'M'
+units kN m
+material strand E=1.6e8
+section s material=strand A=1.5e-4
+net roof flat nx=8 ny=8 lx=80 ly=80 section=s N0=10
+load set=roof.inner fz=-2
+M
+{ cat "$T/fd.cable"; echo "solve method=newton steps=10"; } >"$T/fd_steps.cable"
+"$BIN" solve "$T/fd.cable" --json >"$T/fd.json" 2>"$T/err" || WHY+=("flat net: exit $?: $(head -c 300 "$T/err")")
+"$BIN" solve "$T/fd_steps.cable" --json >"$T/fd_steps.json" 2>"$T/err" || WHY+=("flat net, newton steps=10: exit $?: $(head -c 300 "$T/err")")
+"$BIN" solve "$T/fd.cable" 2>/dev/null | grep -q "^start: the net's free nodes moved towards" || WHY+=("flat net: no start line in the summary")
+"$PY" - "$T/fd.json" "$T/fd_steps.json" <<'PY' || WHY+=("flat net: the force-density start")
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:3])
+du = max(abs(x[k] - y[k]) for x, y in zip(a["nodes"], b["nodes"]) for k in ("ux", "uy", "uz"))
+sag = max(abs(x["uz"]) for x in b["nodes"])
+print("flat net: %d iterations (13 before), |u - u_newton| %.2g m of a sag %.3f m" % (a["iterations"], du, sag))
+assert a["converged"] and b["converged"] and a.get("force_density_start") is True and "force_density_start" not in b
+assert a["iterations"] <= 8 and du <= 1e-9 and sag > 1, (a["iterations"], du, sag)
+PY
+finish flat_net_starts_by_force_density
 
 cli_summary

@@ -6,6 +6,7 @@
 #include "analysis/buckling/buckling.h"
 #include "problem/dynamics_options.h"
 #include "problem/la_options.h"
+#include "start/fdensity.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -204,6 +205,7 @@ static int static_solve(ctn_problem *p, ctn_solution **out)
         start_state(p, d);
         if (rest) goto summary;
         if (p->strategy->preshape) rc = ctn_preshape(p, d, &s->sum.preshaped);
+        if (!rc && p->strategy->preshape && !s->sum.preshaped) rc = ctn_fdensity_start(p, d, &s->sum.fdensity);
         if (!rc) rc = check_start(p, d);
         if (!rc) rc = p->strategy->run(p, s, d);
         if (!rc && s->sum.reason != CTN_CONVERGED && p->mech_node >= 0) {   /* junction.c's finding */

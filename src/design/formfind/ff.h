@@ -30,6 +30,10 @@ typedef struct ctn_ff {
     double *len;            /* per element: its length in the current shape */
     double *p, *pnew;       /* 3 per node: loads of the first step */
     double *b;              /* right-hand side and solution, nn */
+    ctn_la_ordering order;  /* of the systems' factorizations (0: auto) */
+    double *x;              /* NULL: the shape is the model's X (the fixed coordinates read
+                               there, the free ones written); else 3 per node, read and
+                               written here instead, the model left alone (a start) */
     double *X0, *l00;       /* the model's coordinates and l0 as given (restored on failure) */
     int factored;           /* 1 while the factorizations hold the current q */
     int saved;              /* 1 once X0 and l00 hold the model as given */

@@ -102,7 +102,7 @@ static int system_create(ctn_ff *f, int k, ctn_ff_system *s)
     if (rc || !s->n) return rc;
     if ((rc = build_pattern(f, s)) || (rc = build_slots(f, s))) return rc;
     ctn_pattern p = { s->n, s->colptr, s->rowind };
-    return ctn_linsolve_create(f->ctx, "cholmod", &p, CTN_LA_ORDER_AUTO, &s->ls);
+    return ctn_linsolve_create(f->ctx, "cholmod", &p, f->order, &s->ls);
 }
 
 /* 1 if coordinates j and k have the same free nodes. */
@@ -159,6 +159,12 @@ static int factor(ctn_ff *f, ctn_ff_system *s)
     return rc;
 }
 
+/* Coordinate k of node i in the shape (f->x or the model's). */
+static double coordinate(const ctn_ff *f, int i, int k)
+{
+    return f->x ? f->x[3 * (size_t)i + (size_t)k] : f->m->nodes.v[i].X[k];
+}
+
 /* Coordinate k: b = p_f + sum over members to a node fixed in k of q x_fixed; solve. */
 static int solve_coordinate(ctn_ff *f, const ctn_ff_system *s, int k)
 {
@@ -168,12 +174,12 @@ static int solve_coordinate(ctn_ff *f, const ctn_ff_system *s, int k)
     for (size_t e = 0; e < f->ne; e++) {
         const int *nd = ctn_elem_nodes(f->m, e);
         int a = s->eq[nd[0]], b = s->eq[nd[1]];
-        if (a >= 0 && b < 0) f->b[a] += f->q[e] * nodes[nd[1]].X[k];    /* -D_fx x_x */
-        if (b >= 0 && a < 0) f->b[b] += f->q[e] * nodes[nd[0]].X[k];
+        if (a >= 0 && b < 0) f->b[a] += f->q[e] * coordinate(f, nd[1], k);    /* -D_fx x_x */
+        if (b >= 0 && a < 0) f->b[b] += f->q[e] * coordinate(f, nd[0], k);
     }
     int rc = ctn_linsolve_solve(s->ls, f->b, f->b);
     for (size_t i = 0; !rc && i < f->nn; i++)
-        if (s->eq[i] >= 0) nodes[i].X[k] = f->b[s->eq[i]];
+        if (s->eq[i] >= 0) *(f->x ? &f->x[3 * i + (size_t)k] : &nodes[i].X[k]) = f->b[s->eq[i]];
     return rc;
 }
 
